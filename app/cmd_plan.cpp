@@ -1,0 +1,188 @@
+// foveate plan: the eccentricity layers of Guenter et al. for a display and an
+// acuity slope, and the field-of-view sweep behind their Figures 12 and 13.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+#include "cli_util.hpp"
+#include "commands.hpp"
+#include "foveate/core/error.hpp"
+#include "foveate/core/file.hpp"
+#include "foveate/core/planner.hpp"
+#include "svg_plot.hpp"
+
+namespace foveate::app {
+
+namespace {
+
+struct PlanArgs {
+  std::string display = "desktop-1080p";
+  std::string quality;
+  std::optional<double> slope;
+  int layers = 3;
+  std::string gaze;
+  std::string size;
+  std::optional<double> fixed_s2;
+  double step = 0.05;
+  bool half_rate_weights = false;
+  bool json = false;
+  std::string sweep;
+};
+
+std::string sweep_csv(const std::vector<SweepRow>& rows) {
+  std::ostringstream s;
+  s << "fov_deg,display_width_px,native_pixels";
+  for (const char* q : {"A", "B"}) {
+    for (const SweepVariant& v : sweep_variants()) s << ",speedup_" << q << "_n" << v.name;
+  }
+  for (const char* q : {"A", "B"}) {
+    for (const SweepVariant& v : sweep_variants()) s << ",pixels_" << q << "_n" << v.name;
+  }
+  s << '\n';
+  s.precision(8);
+  for (const SweepRow& r : rows) {
+    s << r.fov_deg << ',' << r.display_width_px << ',' << r.native_pixels;
+    for (double x : r.speedup_a) s << ',' << x;
+    for (double x : r.speedup_b) s << ',' << x;
+    for (double x : r.pixels_a) s << ',' << x;
+    for (double x : r.pixels_b) s << ',' << x;
+    s << '\n';
+  }
+  return s.str();
+}
+
+std::string sweep_svg(const std::vector<SweepRow>& rows) {
+  const char* colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+  std::vector<Series> series;
+  for (int q = 0; q < 2; ++q) {
+    for (size_t v = 0; v < sweep_variants().size(); ++v) {
+      Series s;
+      s.name = std::string(q == 0 ? "A" : "B") + ", n=" + sweep_variants()[v].name;
+      s.color = colors[v];
+      s.dashed = q == 1;
+      for (const SweepRow& r : rows) {
+        s.x.push_back(r.fov_deg);
+        s.y.push_back(q == 0 ? r.speedup_a[v] : r.speedup_b[v]);
+      }
+      series.push_back(std::move(s));
+    }
+  }
+  ChartOptions o;
+  o.title = "Predicted speedup P*/P at display sharpness = foveal acuity (Guenter et al. eq. 9)";
+  o.x_label = "field of view (degrees)";
+  o.y_label = "speedup (pixels), log scale";
+  o.log_y = true;
+  return svg_line_chart(series, o);
+}
+
+void run_plan(const PlanArgs& a) {
+  if (!a.sweep.empty()) {
+    const std::string ext = std::filesystem::path(a.sweep).extension().string();
+    if (ext != ".csv" && ext != ".svg") {
+      throw Error("--sweep: the file must end in .csv or .svg, got '" + a.sweep + "'");
+    }
+    const auto rows = fov_sweep(10.0, 120.0, 5.0, a.step);
+    write_file_atomic(a.sweep, ext == ".csv" ? sweep_csv(rows) : sweep_svg(rows));
+    std::cout << "wrote " << a.sweep << " (" << rows.size() << " fields of view, 10-120 deg)\n";
+    return;
+  }
+
+  Display display = Display::load(a.display);
+  if (!a.size.empty()) {
+    const Size sz = parse_size(a.size, "--size");
+    display = display.resized(sz.width, sz.height);
+  }
+  const AcuityModel acuity = acuity_from_options(a.quality, a.slope);
+  PlannerOptions opt;
+  opt.layers = a.layers;
+  opt.grid_step_deg = a.step;
+  opt.fixed_s2 = a.fixed_s2;
+  if (a.half_rate_weights) {
+    opt.weights.assign(a.layers, 0.5);
+    opt.weights[0] = 1.0;
+  }
+  const LayerPlan plan = plan_layers(display, acuity, opt);
+  const Vec2d gaze = a.gaze.empty() ? Vec2d{0.5 * display.width_px, 0.5 * display.height_px}
+                                    : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
+
+  // Where each layer lands on the screen for this gaze (inner layers are squares
+  // centred on the gaze; the outer layer is the whole screen).
+  auto rect = [&](size_t i) {
+    const Layer& L = plan.layers[i];
+    if (i + 1 == plan.layers.size()) return std::array<double, 4>{0, 0, double(display.width_px), double(display.height_px)};
+    const double half = 0.5 * L.width_px * L.sampling_factor;
+    return std::array<double, 4>{gaze.x - half, gaze.y - half, gaze.x + half, gaze.y + half};
+  };
+
+  if (a.json) {
+    nlohmann::json j = plan;
+    j["gaze_px"] = {gaze.x, gaze.y};
+    for (size_t i = 0; i < plan.layers.size(); ++i) {
+      const auto r = rect(i);
+      j["layers"][i]["screen_rect_px"] = {r[0], r[1], r[2], r[3]};
+    }
+    std::cout << j.dump(2) << '\n';
+    return;
+  }
+
+  const Display& d = plan.display;
+  std::cout << "display " << d.name << ": " << d.width_px << 'x' << d.height_px;
+  if (d.head_mounted()) {
+    std::cout << ", head-mounted, " << fmt(d.fov_h_deg, 1) << " deg horizontal field of view\n";
+  } else {
+    std::cout << ", " << fmt(d.width_mm, 0) << " mm wide viewed from " << fmt(d.distance_mm, 0) << " mm\n";
+  }
+  std::cout << "  e* (half field of view) = " << fmt(d.half_fov_deg(), 2)
+            << " deg, w* (sharpness) = " << fmt(d.sharpness_deg(), 4)
+            << " deg, w0/w* = " << fmt(100.0 * acuity.w0_deg / d.sharpness_deg(), 0) << " %\n";
+  std::cout << "acuity: w(e) = " << fmt(acuity.slope, 4) << " e + " << fmt(acuity.w0_deg, 4)
+            << " deg";
+  if (acuity.slope == kSlopeQualityA) std::cout << " (quality A)";
+  if (acuity.slope == kSlopeQualityB) std::cout << " (quality B)";
+  std::cout << "\ngaze at (" << fmt(gaze.x, 1) << ", " << fmt(gaze.y, 1) << ") px\n\n";
+  std::printf("%-6s %11s %11s %9s %13s %11s  %s\n", "layer", "radius deg", "radius px", "s_i",
+              "target px", "pixels", "on screen (x0,y0)-(x1,y1)");
+  for (size_t i = 0; i < plan.layers.size(); ++i) {
+    const Layer& L = plan.layers[i];
+    const auto r = rect(i);
+    const std::string sz = std::to_string(L.width_px) + "x" + std::to_string(L.height_px);
+    std::printf("%-6zu %11.2f %11.1f %9.3f %13s %11.0f  (%.0f,%.0f)-(%.0f,%.0f)%s\n", i + 1,
+                L.radius_deg, L.radius_px, L.sampling_factor, sz.c_str(), L.pixels, r[0], r[1],
+                r[2], r[3], i + 1 == plan.layers.size() ? " whole screen" : "");
+  }
+  std::printf("\nnative pixels P* = %.0f, layer pixels P = %.0f\n", plan.native_pixels,
+              plan.total_pixels);
+  std::printf("pixel ratio P*/P = %.2fx; with outer layers at half rate = %.2fx\n",
+              plan.pixel_ratio(), plan.pixel_ratio_half_rate());
+}
+
+}  // namespace
+
+void register_plan(CLI::App& app) {
+  auto a = std::make_shared<PlanArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "plan", "Plan eccentricity layers (Guenter et al. 2012) for a display and acuity slope");
+  sub->add_option("--display", a->display,
+                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3) or JSON file")
+      ->capture_default_str();
+  sub->add_option("--quality", a->quality, "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
+  sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
+  sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
+  sub->add_option("--gaze", a->gaze, "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
+  sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
+  sub->add_option("--fixed-s2", a->fixed_s2, "Fix the second layer's sampling factor (the paper's 3* uses 2)");
+  sub->add_option("--step", a->step, "Grid step of the radius search in degrees")->capture_default_str();
+  sub->add_flag("--half-rate-weights", a->half_rate_weights,
+                "Optimise with weights 1, 1/2, 1/2, ... (outer layers at half rate)");
+  sub->add_flag("--json", a->json, "Print the plan as JSON");
+  sub->add_option("--sweep", a->sweep,
+                  "Write the field-of-view sweep (eq. 9; Figures 12-13) to FILE.csv or FILE.svg");
+  sub->callback([a] { run_plan(*a); });
+}
+
+}  // namespace foveate::app

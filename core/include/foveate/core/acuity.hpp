@@ -1,0 +1,30 @@
+#pragma once
+// The linear acuity model of Guenter et al., "Foveated 3D Graphics" (2012),
+// eq. 1: the minimum angle of resolution grows linearly with eccentricity,
+//   w(e) = m * e + w0   (degrees per cycle; e in degrees).
+#include <string>
+
+namespace foveate {
+
+/// MAR slopes from the user study of Guenter et al. (section 5).
+inline constexpr double kSlopeQualityA = 0.0275;  ///< 1.65 arc minutes per degree
+inline constexpr double kSlopeQualityB = 0.0220;  ///< 1.32 arc minutes per degree
+/// Average foveal acuity of adults: 48 cycles per degree.
+inline constexpr double kFovealMarDeg = 1.0 / 48.0;
+
+struct AcuityModel {
+  double slope = kSlopeQualityA;     ///< m
+  double w0_deg = kFovealMarDeg;     ///< w0, MAR at the fovea
+
+  /// MAR in degrees per cycle at eccentricity e (degrees).
+  [[nodiscard]] double mar_deg(double eccentricity_deg) const;
+  /// Inverse of mar_deg: the eccentricity at which the MAR reaches w (0 when w <= w0).
+  [[nodiscard]] double eccentricity_for_mar(double mar_deg) const;
+
+  /// Quality preset by name: "A" or "B" (case-insensitive). Throws foveate::Error otherwise.
+  static AcuityModel quality(const std::string& name);
+  /// A model with a custom slope; throws foveate::Error unless 0 < m <= 1.
+  static AcuityModel with_slope(double m);
+};
+
+}  // namespace foveate

@@ -1,0 +1,77 @@
+#pragma once
+// The other papers' models as plain functions.
+#include <array>
+
+#include "foveate/core/acuity.hpp"
+#include "foveate/core/display.hpp"
+
+namespace foveate {
+
+// --- Swafford, Cosker, Mitchell: "Latency Aware Foveated Rendering in UE4" (2015), eq. 1.
+//   F' = 2 * rho_pixel * d_u * tan(L_tot * S_max + alpha / 2) + 2 * b_w + c
+struct LatencyAwareFovea {
+  double latency_ms = 0.0;             ///< L_tot, worst-case total latency
+  double saccade_deg_per_s = 200.0;    ///< S_max
+  double fovea_deg = 5.0;              ///< alpha, angle the fovea subtends
+  double blend_border_px = 0.0;        ///< b_w
+  double error_px = 0.0;               ///< c
+
+  /// Foveal diameter F' in pixels on `display` (rho * d_u = focal_px).
+  [[nodiscard]] double diameter_px(const Display& display) const;
+  /// The same diameter as a visual angle (degrees) at the display centre.
+  [[nodiscard]] double diameter_deg(const Display& display) const;
+  void validate() const;
+};
+
+// --- Meng, Du, Zwicker, Varshney: "Kernel Foveated Rendering" (2018).
+// Screen (W x H) <-> kernel log-polar buffer (w x h) = (W / sigma) x (H / sigma),
+// with L = log(sqrt(W^2 + H^2)) and the kernel K(x) = x^alpha.
+struct KernelLogPolar {
+  double screen_w = 1920.0;
+  double screen_h = 1080.0;
+  double sigma = 1.8;   ///< buffer parameter, W / w
+  double alpha = 4.0;   ///< kernel exponent
+
+  [[nodiscard]] double buffer_w() const { return screen_w / sigma; }
+  [[nodiscard]] double buffer_h() const { return screen_h / sigma; }
+  [[nodiscard]] double log_extent() const;  ///< L
+  /// Screen position (pixels) -> buffer position (u, v), relative to the gaze.
+  [[nodiscard]] Vec2d to_buffer(Vec2d screen, Vec2d gaze) const;
+  /// Buffer position (u, v) -> screen position (pixels).
+  [[nodiscard]] Vec2d to_screen(Vec2d buffer, Vec2d gaze) const;
+  void validate() const;
+};
+
+// --- Silvera: "OpenGL Foveated Rendering" (2022), mask-based checkerboard.
+// Pixels are grouped in n x n quads, quads in 2 x 2 tiles. Region k (0..3)
+// drops k of the 4 quads of each tile. Regions are chosen by the distance
+// between the tile and the gaze tile (both snapped to the 2n grid).
+struct CheckerboardPattern {
+  int block = 16;                          ///< n
+  std::array<double, 3> thresholds_px{};   ///< region k+1 begins beyond thresholds_px[k]
+
+  /// Silvera's fixed thresholds: 10 %, 25 %, 40 % of the framebuffer diagonal.
+  static CheckerboardPattern from_fractions(int block, int width, int height,
+                                            std::array<double, 3> fractions = {0.10, 0.25,
+                                                                               0.40});
+  /// Thresholds from the acuity model: region k starts where the MAR allows the
+  /// effective sampling factor sqrt(4 / (4 - k)) of a tile keeping 4 - k quads.
+  static CheckerboardPattern from_acuity(int block, const Display& display,
+                                         const AcuityModel& acuity);
+
+  /// Block-aligned distance (pixels) between the tile of `pixel` and the gaze tile.
+  [[nodiscard]] double tile_distance(Vec2d pixel, Vec2d gaze) const;
+  /// Region 0..3 of a pixel.
+  [[nodiscard]] int region(Vec2d pixel, Vec2d gaze) const;
+  /// Quad index within the tile, 0..3: (0,0)=0, (x0,y1)=1, (x1,y0)=2, (x1,y1)=3,
+  /// with x, y the quad column and row; region k drops quads 1..k.
+  [[nodiscard]] int quad(Vec2d pixel) const;
+  /// Whether the pixel is shaded (not dropped).
+  [[nodiscard]] bool kept(Vec2d pixel, Vec2d gaze) const;
+  void validate() const;
+};
+
+/// Effective sampling factor of a checkerboard region that keeps (4 - k) of 4 quads.
+double checkerboard_sampling_factor(int region);
+
+}  // namespace foveate

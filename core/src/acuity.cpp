@@ -1,0 +1,35 @@
+#include "foveate/core/acuity.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "foveate/core/error.hpp"
+
+namespace foveate {
+
+double AcuityModel::mar_deg(double eccentricity_deg) const {
+  return slope * eccentricity_deg + w0_deg;
+}
+
+double AcuityModel::eccentricity_for_mar(double mar) const {
+  return std::max(0.0, (mar - w0_deg) / slope);
+}
+
+AcuityModel AcuityModel::quality(const std::string& name) {
+  std::string n = name;
+  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::toupper(c); });
+  if (n == "A") return AcuityModel{kSlopeQualityA, kFovealMarDeg};
+  if (n == "B") return AcuityModel{kSlopeQualityB, kFovealMarDeg};
+  throw Error("quality: expected A or B, got '" + name + "'");
+}
+
+AcuityModel AcuityModel::with_slope(double m) {
+  if (!std::isfinite(m) || m <= 0.0 || m > 1.0) {
+    throw Error("slope: expected a number in (0, 1] (degrees of MAR per degree), got " +
+                std::to_string(m));
+  }
+  return AcuityModel{m, kFovealMarDeg};
+}
+
+}  // namespace foveate

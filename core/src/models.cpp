@@ -1,0 +1,141 @@
+#include "foveate/core/models.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "foveate/core/error.hpp"
+
+namespace foveate {
+
+namespace {
+constexpr double kRad = std::numbers::pi / 180.0;
+constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw Error(what);
+}
+}  // namespace
+
+// ---------------------------------------------------------------- Swafford et al.
+
+void LatencyAwareFovea::validate() const {
+  require(std::isfinite(latency_ms) && latency_ms >= 0.0 && latency_ms <= 1000.0,
+          "latency_ms: expected 0..1000 ms, got " + std::to_string(latency_ms));
+  require(std::isfinite(saccade_deg_per_s) && saccade_deg_per_s >= 0.0 && saccade_deg_per_s <= 1000.0,
+          "saccade_deg_per_s: expected 0..1000, got " + std::to_string(saccade_deg_per_s));
+  require(std::isfinite(fovea_deg) && fovea_deg > 0.0 && fovea_deg < 90.0,
+          "fovea_deg: expected (0, 90), got " + std::to_string(fovea_deg));
+  require(std::isfinite(blend_border_px) && blend_border_px >= 0.0,
+          "blend_border_px: must be >= 0, got " + std::to_string(blend_border_px));
+  require(std::isfinite(error_px), "error_px: must be finite");
+}
+
+double LatencyAwareFovea::diameter_px(const Display& display) const {
+  validate();
+  // L_tot * S_max in degrees: ms * (deg/s) / 1000. The half-angle cannot reach 90 degrees.
+  const double half = std::min(latency_ms * saccade_deg_per_s / 1000.0 + 0.5 * fovea_deg, 89.0);
+  return 2.0 * display.focal_px() * std::tan(half * kRad) + 2.0 * blend_border_px + error_px;
+}
+
+double LatencyAwareFovea::diameter_deg(const Display& display) const {
+  return 2.0 * std::atan(0.5 * diameter_px(display) / display.focal_px()) * kDeg;
+}
+
+// ---------------------------------------------------------------- Meng et al.
+
+void KernelLogPolar::validate() const {
+  require(std::isfinite(screen_w) && screen_w >= 1.0 && std::isfinite(screen_h) && screen_h >= 1.0,
+          "logpolar: screen size must be >= 1 pixel");
+  require(std::isfinite(sigma) && sigma >= 1.0 && sigma <= 16.0,
+          "sigma: expected 1..16, got " + std::to_string(sigma));
+  require(std::isfinite(alpha) && alpha >= 0.1 && alpha <= 16.0,
+          "alpha: expected 0.1..16, got " + std::to_string(alpha));
+}
+
+double KernelLogPolar::log_extent() const { return std::log(std::hypot(screen_w, screen_h)); }
+
+Vec2d KernelLogPolar::to_buffer(Vec2d p, Vec2d gaze) const {
+  const double x = p.x - gaze.x, y = p.y - gaze.y;
+  // Inside one pixel of the gaze the logarithm is clamped (log r >= 0).
+  const double r = std::max(std::hypot(x, y), 1.0);
+  const double t = std::clamp(std::log(r) / log_extent(), 0.0, 1.0);
+  double angle = std::atan2(y, x);
+  if (angle < 0.0) angle += kTwoPi;
+  return {std::pow(t, 1.0 / alpha) * buffer_w(), angle / kTwoPi * buffer_h()};
+}
+
+Vec2d KernelLogPolar::to_screen(Vec2d b, Vec2d gaze) const {
+  const double r = std::exp(log_extent() * std::pow(std::max(b.x / buffer_w(), 0.0), alpha));
+  const double angle = b.y * kTwoPi / buffer_h();
+  return {gaze.x + r * std::cos(angle), gaze.y + r * std::sin(angle)};
+}
+
+// ---------------------------------------------------------------- Silvera
+
+double checkerboard_sampling_factor(int region) {
+  if (region < 0 || region > 3) throw Error("checkerboard region must be 0..3");
+  return std::sqrt(4.0 / (4.0 - region));
+}
+
+void CheckerboardPattern::validate() const {
+  require(block >= 1 && block <= 256, "block: expected 1..256, got " + std::to_string(block));
+  for (int k = 0; k < 3; ++k) {
+    require(std::isfinite(thresholds_px[k]) && thresholds_px[k] >= 0.0,
+            "thresholds: must be finite and >= 0");
+    if (k > 0) require(thresholds_px[k] >= thresholds_px[k - 1], "thresholds: must not decrease");
+  }
+}
+
+CheckerboardPattern CheckerboardPattern::from_fractions(int block, int width, int height,
+                                                        std::array<double, 3> f) {
+  CheckerboardPattern p;
+  p.block = block;
+  const double diag = std::hypot(width, height);
+  for (int k = 0; k < 3; ++k) p.thresholds_px[k] = f[k] * diag;
+  p.validate();
+  return p;
+}
+
+CheckerboardPattern CheckerboardPattern::from_acuity(int block, const Display& display,
+                                                     const AcuityModel& acuity) {
+  CheckerboardPattern p;
+  p.block = block;
+  for (int k = 0; k < 3; ++k) {
+    const double s = checkerboard_sampling_factor(k + 1);
+    const double e = acuity.eccentricity_for_mar(s * display.sharpness_deg());
+    p.thresholds_px[k] = display.radius_px_at(e);
+  }
+  p.validate();
+  return p;
+}
+
+double CheckerboardPattern::tile_distance(Vec2d pixel, Vec2d gaze) const {
+  const double s = 2.0 * block;
+  const double tx = std::floor(pixel.x / s) * s, ty = std::floor(pixel.y / s) * s;
+  const double gx = std::floor(gaze.x / s) * s, gy = std::floor(gaze.y / s) * s;
+  return std::hypot(tx - gx, ty - gy);
+}
+
+int CheckerboardPattern::region(Vec2d pixel, Vec2d gaze) const {
+  const double d = tile_distance(pixel, gaze);
+  int r = 0;
+  while (r < 3 && d > thresholds_px[r]) ++r;
+  return r;
+}
+
+int CheckerboardPattern::quad(Vec2d pixel) const {
+  const double s = 2.0 * block;
+  const double xm = pixel.x - std::floor(pixel.x / s) * s;
+  const double ym = pixel.y - std::floor(pixel.y / s) * s;
+  const int qx = xm >= block ? 1 : 0, qy = ym >= block ? 1 : 0;
+  return qx * 2 + qy;
+}
+
+bool CheckerboardPattern::kept(Vec2d pixel, Vec2d gaze) const {
+  return quad(pixel) > region(pixel, gaze) || quad(pixel) == 0;
+}
+
+}  // namespace foveate

@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "foveate/core/acuity.hpp"
+#include "foveate/core/display.hpp"
+#include "foveate/core/error.hpp"
+
+using namespace foveate;
+
+TEST(Acuity, LinearMarModel) {
+  const AcuityModel a = AcuityModel::quality("A");
+  EXPECT_DOUBLE_EQ(a.slope, 0.0275);
+  EXPECT_DOUBLE_EQ(a.mar_deg(0.0), 1.0 / 48.0);
+  EXPECT_DOUBLE_EQ(a.mar_deg(10.0), 0.275 + 1.0 / 48.0);
+  EXPECT_NEAR(a.eccentricity_for_mar(a.mar_deg(7.3)), 7.3, 1e-12);
+  EXPECT_DOUBLE_EQ(AcuityModel::quality("b").slope, 0.0220);
+  // 1.65 and 1.32 arc minutes per degree (section 5).
+  EXPECT_NEAR(kSlopeQualityA * 60.0, 1.65, 1e-12);
+  EXPECT_NEAR(kSlopeQualityB * 60.0, 1.32, 1e-12);
+}
+
+TEST(Acuity, RejectsBadQualityAndSlope) {
+  EXPECT_THROW(AcuityModel::quality("C"), Error);
+  EXPECT_THROW(AcuityModel::with_slope(0.0), Error);
+  EXPECT_THROW(AcuityModel::with_slope(-0.01), Error);
+  EXPECT_THROW(AcuityModel::with_slope(NAN), Error);
+  EXPECT_NO_THROW(AcuityModel::with_slope(0.01));
+}
+
+TEST(Display, PaperDesktopGeometry) {
+  const Display d = Display::load("desktop-1080p");
+  // Section 5: e* = 23.4 deg (eq. 6), w* = 0.0516 deg (eq. 7), w0 / w* about 40 %.
+  EXPECT_NEAR(d.half_fov_deg(), 23.4, 0.05);
+  EXPECT_NEAR(d.sharpness_deg(), 0.0516, 0.00005);
+  EXPECT_NEAR(kFovealMarDeg / d.sharpness_deg(), 0.40, 0.01);
+  EXPECT_DOUBLE_EQ(d.aspect(), 9.0 / 16.0);
+  // Hand-computed: focal length = 590 * 1920 / 510 px.
+  EXPECT_NEAR(d.focal_px(), 2221.176, 1e-3);
+}
+
+TEST(Display, ExactEccentricity) {
+  const Display d = Display::load("desktop-1080p");
+  const Vec2d c{960, 540};
+  EXPECT_NEAR(d.eccentricity_deg(c, c), 0.0, 1e-9);
+  // The screen edge seen from the centre is e*.
+  EXPECT_NEAR(d.eccentricity_deg({1920, 540}, c), d.half_fov_deg(), 1e-9);
+  // Gaze at the left edge, pixel at the right edge: the full field of view.
+  EXPECT_NEAR(d.eccentricity_deg({1920, 540}, {0, 540}), 2 * d.half_fov_deg(), 1e-9);
+  // Off-centre: not the small-angle value. Gaze at the right edge, pixel 200 px
+  // further in: atan(960/f) - atan(760/f).
+  const double f = d.focal_px();
+  const double expect = (std::atan(960 / f) - std::atan(760 / f)) * 180 / M_PI;
+  EXPECT_NEAR(d.eccentricity_deg({1720, 540}, {1920, 540}), expect, 1e-9);
+  EXPECT_GT(std::fabs(expect - 200 / d.pixels_per_degree(c, c)), 0.1);
+}
+
+TEST(Display, PixelsPerDegree) {
+  const Display d = Display::load("desktop-1080p");
+  const Vec2d c{960, 540};
+  // At the centre: f * pi / 180 pixels per degree.
+  EXPECT_NEAR(d.pixels_per_degree(c, c), d.focal_px() * M_PI / 180.0, 0.01);
+  // Towards the edge the screen is seen obliquely: more pixels per degree.
+  EXPECT_GT(d.pixels_per_degree({1900, 540}, c), d.pixels_per_degree({1000, 540}, c));
+}
+
+TEST(Display, HeadMountedFromFov) {
+  const Display d = Display::load("hmd-quest3");
+  EXPECT_TRUE(d.head_mounted());
+  EXPECT_NEAR(d.eccentricity_deg({0, 1104}, {1032, 1104}), 52.0, 1e-9);
+  // Portrait panel: the longer axis is vertical.
+  EXPECT_EQ(d.long_axis_px(), 2208);
+  EXPECT_GT(d.half_fov_deg(), 52.0);
+}
+
+TEST(Display, ResizedKeepsFieldOfView) {
+  const Display d = Display::load("desktop-1080p");
+  const Display s = d.resized(480, 270);
+  EXPECT_NEAR(s.half_fov_deg(), d.half_fov_deg(), 1e-9);
+  EXPECT_NEAR(s.sharpness_deg(), 4 * d.sharpness_deg(), 0.001);
+}
+
+TEST(Display, JsonRoundTripAndErrors) {
+  const Display d = Display::load("desktop-27-4k");
+  const nlohmann::json j = d;
+  const Display back = Display::from_json(j);
+  EXPECT_EQ(back.width_px, 3840);
+  EXPECT_DOUBLE_EQ(back.width_mm, d.width_mm);
+
+  auto message = [](const nlohmann::json& bad) {
+    try {
+      Display::from_json(bad);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const nlohmann::json base = {{"width_px", 1920}, {"height_px", 1080}, {"width_mm", 510}, {"distance_mm", 590}};
+  auto with = [&](const char* k, nlohmann::json v) {
+    nlohmann::json b = base;
+    b[k] = v;
+    return b;
+  };
+  EXPECT_NE(message(with("distance_mm", 0)).find("display.distance_mm"), std::string::npos);
+  EXPECT_NE(message(with("distance_mm", -5)).find("distance_mm"), std::string::npos);
+  EXPECT_NE(message(with("width_mm", 0.0)).find("display.width_mm"), std::string::npos);
+  EXPECT_NE(message(with("width_px", 0)).find("display.width_px"), std::string::npos);
+  EXPECT_NE(message(with("height_px", 0)).find("display.height_px"), std::string::npos);
+  EXPECT_NE(message(with("width_px", "1920")).find("expected an integer"), std::string::npos);
+  EXPECT_NE(message(with("width_px", 19.5)).find("display.width_px"), std::string::npos);
+  EXPECT_NE(message(with("width_mm", "wide")).find("expected a number"), std::string::npos);
+  EXPECT_NE(message(with("colour", "red")).find("unknown key 'colour'"), std::string::npos);
+  nlohmann::json nan = base;
+  nan["width_mm"] = std::nan("");  // serialises as null: a wrong type
+  EXPECT_NE(message(nan).find("display.width_mm"), std::string::npos);
+  nlohmann::json missing = base;
+  missing.erase("distance_mm");
+  EXPECT_NE(message(missing).find("distance_mm: required"), std::string::npos);
+  EXPECT_NE(message(nlohmann::json::array()).find("expected a JSON object"), std::string::npos);
+  EXPECT_THROW(Display::load("no-such-display"), Error);
+}

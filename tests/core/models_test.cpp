@@ -1,0 +1,138 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "foveate/core/error.hpp"
+#include "foveate/core/models.hpp"
+
+using namespace foveate;
+
+TEST(Swafford, ZeroLatencyIsThePlainFovea) {
+  const Display d = Display::load("desktop-1080p");
+  LatencyAwareFovea f;
+  f.blend_border_px = 20;
+  // 2 * f * tan(2.5 deg) + 2 * 20, with f = 590 mm * (1920 / 510) px/mm.
+  const double expect = 2 * 590.0 * (1920.0 / 510.0) * std::tan(2.5 * M_PI / 180) + 40;
+  EXPECT_NEAR(f.diameter_px(d), expect, 1e-9);
+  EXPECT_NEAR(f.diameter_deg(d), 2 * std::atan((expect / 2) / d.focal_px()) * 180 / M_PI, 1e-9);
+}
+
+TEST(Swafford, PaperSetup4K28Inch) {
+  // Section "Latency Aware...": a 28" 4K monitor viewed from 20". With near-zero
+  // latency the fovea is about a third of the 1000 px they found sufficient.
+  Display d;
+  d.width_px = 3840;
+  d.height_px = 2160;
+  d.width_mm = 28 * 25.4 * 16 / std::hypot(16, 9);
+  d.distance_mm = 20 * 25.4;
+  LatencyAwareFovea f;
+  f.blend_border_px = 30;
+  const double zero = f.diameter_px(d);
+  EXPECT_NEAR(zero, 1000.0 / 3.0, 15.0);
+  // rho * d_u * tan(L S + a/2): 30 ms at 200 deg/s adds 6 degrees on each side.
+  f.latency_ms = 30;
+  const double expect = 2 * d.pixels_per_mm() * d.distance_mm * std::tan(8.5 * M_PI / 180) + 60;
+  EXPECT_NEAR(f.diameter_px(d), expect, 1e-6);
+  EXPECT_NEAR(f.diameter_px(d), 1000.0, 60.0);
+}
+
+TEST(Swafford, RejectsBadInput) {
+  LatencyAwareFovea f;
+  f.latency_ms = -1;
+  EXPECT_THROW(f.validate(), Error);
+  f.latency_ms = NAN;
+  EXPECT_THROW(f.validate(), Error);
+}
+
+TEST(KernelLogPolar, RoundTrip) {
+  for (double alpha : {1.0, 2.0, 4.0}) {
+    for (double sigma : {1.2, 1.8, 2.4}) {
+      KernelLogPolar k{1920, 1080, sigma, alpha};
+      const Vec2d gaze{700, 400};
+      for (double x = 0; x < 1920; x += 97.3) {
+        for (double y = 0; y < 1080; y += 61.7) {
+          if (std::hypot(x - gaze.x, y - gaze.y) < 1.0) continue;
+          const Vec2d b = k.to_buffer({x, y}, gaze);
+          EXPECT_GE(b.x, 0.0);
+          EXPECT_LE(b.x, k.buffer_w() + 1e-9);
+          const Vec2d s = k.to_screen(b, gaze);
+          EXPECT_NEAR(s.x, x, 1e-3);
+          EXPECT_NEAR(s.y, y, 1e-3);
+        }
+      }
+    }
+  }
+}
+
+TEST(KernelLogPolar, MatchesTheMapping) {
+  KernelLogPolar k{1920, 1080, 2.0, 2.0};
+  const double L = std::log(std::hypot(1920, 1080));
+  EXPECT_DOUBLE_EQ(k.log_extent(), L);
+  EXPECT_DOUBLE_EQ(k.buffer_w(), 960);
+  // A point 100 px below-right of the gaze: u = sqrt(log(r) / L) * w; v from the angle.
+  const Vec2d b = k.to_buffer({100, 100}, {0, 0});
+  EXPECT_NEAR(b.x, std::sqrt(std::log(std::hypot(100, 100)) / L) * 960, 1e-9);
+  EXPECT_NEAR(b.y, 0.125 * 540, 1e-9);
+  // Negative y: the angle is moved into [0, 2 pi).
+  EXPECT_NEAR(k.to_buffer({100, -100}, {0, 0}).y, 0.875 * 540, 1e-9);
+  // The far corner maps to the end of the buffer only when the gaze is in the opposite corner.
+  EXPECT_NEAR(k.to_buffer({1920, 1080}, {0, 0}).x, 960, 1e-9);
+  // With alpha > 1 the fovea gets more of the buffer than with alpha = 1.
+  KernelLogPolar k1{1920, 1080, 2.0, 1.0};
+  EXPECT_GT(k.to_buffer({50, 0}, {0, 0}).x, k1.to_buffer({50, 0}, {0, 0}).x);
+  k.sigma = 0.5;
+  EXPECT_THROW(k.validate(), Error);
+}
+
+TEST(Checkerboard, PatternAndRegions) {
+  CheckerboardPattern p;
+  p.block = 2;
+  p.thresholds_px = {10, 20, 30};
+  const Vec2d g{0.5, 0.5};
+  // Quads in a 4x4 tile: (0,0) kept always.
+  EXPECT_EQ(p.quad({0.5, 0.5}), 0);
+  EXPECT_EQ(p.quad({0.5, 2.5}), 1);
+  EXPECT_EQ(p.quad({2.5, 0.5}), 2);
+  EXPECT_EQ(p.quad({3.5, 3.5}), 3);
+  EXPECT_EQ(p.quad({4.5, 4.5}), 0);
+  // Block-aligned distance: every pixel of a tile has the tile's distance.
+  EXPECT_DOUBLE_EQ(p.tile_distance({12.5, 0.5}, g), 12.0);
+  EXPECT_DOUBLE_EQ(p.tile_distance({15.9, 3.9}, g), 12.0);
+  EXPECT_EQ(p.region({8.5, 0.5}, g), 0);
+  EXPECT_EQ(p.region({12.5, 0.5}, g), 1);
+  EXPECT_EQ(p.region({24.5, 0.5}, g), 2);
+  EXPECT_EQ(p.region({100.5, 0.5}, g), 3);
+  // Region k keeps 4 - k of 4 quads: count over a large area.
+  for (int k = 0; k < 4; ++k) {
+    CheckerboardPattern q;
+    q.block = 4;
+    const double t = k == 0 ? 1e9 : -1;
+    q.thresholds_px = {k >= 1 ? -1 : t, k >= 2 ? -1 : 1e9, k >= 3 ? -1 : 1e9};
+    int kept = 0, total = 0;
+    for (int y = 0; y < 64; ++y) {
+      for (int x = 0; x < 64; ++x) {
+        kept += q.kept({x + 0.5, y + 0.5}, {1000, 1000});
+        ++total;
+      }
+    }
+    EXPECT_EQ(kept * 4, total * (4 - k)) << "region " << k;
+  }
+}
+
+TEST(Checkerboard, ThresholdsFromFractionsAndAcuity) {
+  const auto f = CheckerboardPattern::from_fractions(16, 1280, 720);
+  const double diag = std::hypot(1280, 720);
+  EXPECT_DOUBLE_EQ(f.thresholds_px[0], 0.10 * diag);
+  EXPECT_DOUBLE_EQ(f.thresholds_px[2], 0.40 * diag);
+
+  const Display d = Display::load("desktop-1080p");
+  const AcuityModel a = AcuityModel::quality("A");
+  const auto p = CheckerboardPattern::from_acuity(16, d, a);
+  // Region 3 keeps 1 of 4 quads (sampling factor 2): it starts where w(e) = 2 w*.
+  const double e3 = (2 * d.sharpness_deg() - a.w0_deg) / a.slope;
+  EXPECT_NEAR(p.thresholds_px[2], d.focal_px() * std::tan(e3 * M_PI / 180), 1e-9);
+  EXPECT_LT(p.thresholds_px[0], p.thresholds_px[1]);
+  EXPECT_LT(p.thresholds_px[1], p.thresholds_px[2]);
+  EXPECT_NEAR(checkerboard_sampling_factor(1), std::sqrt(4.0 / 3.0), 1e-12);
+  EXPECT_THROW(CheckerboardPattern::from_fractions(0, 10, 10), Error);
+}
