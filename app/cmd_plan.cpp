@@ -163,6 +163,9 @@ void run_plan(const PlanArgs& a) {
 
 }  // namespace
 
+void register_plan(CLI::App& app);
+const CommandRegistrar kPlan(10, register_plan);
+
 void register_plan(CLI::App& app) {
   auto a = std::make_shared<PlanArgs>();
   CLI::App* sub = app.add_subcommand(

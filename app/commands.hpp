@@ -1,9 +1,18 @@
 #pragma once
-// Each subcommand of the foveate command registers itself on the CLI11 app.
+// Subcommands register themselves: each cmd_*.cpp defines a static
+// CommandRegistrar, and main() adds every registered command to the CLI11 app.
+// Registration order is the order of the `order` values (help output order).
 #include <CLI/CLI.hpp>
+#include <functional>
 
 namespace foveate::app {
 
-void register_plan(CLI::App& app);
+using RegisterFn = std::function<void(CLI::App&)>;
+
+struct CommandRegistrar {
+  CommandRegistrar(int order, RegisterFn fn);
+};
+
+void register_all_commands(CLI::App& app);
 
 }  // namespace foveate::app

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
       "foveate: foveated rendering driven by one acuity model, measured against native rendering"};
   app.set_version_flag("--version", std::string("foveate ") + FOVEATE_VERSION);
   app.require_subcommand(1);
-  foveate::app::register_plan(app);
+  foveate::app::register_all_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
