@@ -1,0 +1,29 @@
+#pragma once
+// Reading frames back and timing them. On llvmpipe GPU timer queries report
+// meaningless numbers, so frames are timed with a steady clock around glFinish.
+#include <chrono>
+
+#include "foveate/core/image.hpp"
+#include "foveate/gpu/gl.hpp"
+
+namespace foveate::gpu {
+
+/// Reads the RGBA8 colour of `texture` (or the bound read framebuffer when 0)
+/// into an Image with the top-left origin.
+Image read_texture(const Texture& texture);
+Image read_framebuffer(GLuint framebuffer, int width, int height);
+/// Uploads an Image as an RGBA8 (sRGB-encoded values, no conversion) texture.
+Texture upload_image(const Image& image, bool mipmaps = true);
+
+/// Wall-clock time of GPU work: start() and stop() both call glFinish.
+class FrameTimer {
+ public:
+  void start();
+  /// Milliseconds since start().
+  double stop();
+
+ private:
+  std::chrono::steady_clock::time_point t0_;
+};
+
+}  // namespace foveate::gpu

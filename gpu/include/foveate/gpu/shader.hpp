@@ -1,0 +1,69 @@
+#pragma once
+// GLSL programs from sources embedded at build time. Sources may
+// `#include "name"` other embedded files; the compiler inserts #line
+// directives so that compile errors are reported against the original file
+// and line ("scenes/shaders/terrain.frag:42: error: ..."). User files (e.g. a
+// Shadertoy shader) are added by path and reported the same way.
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "foveate/gpu/embedded.hpp"
+#include "foveate/gpu/gl.hpp"
+
+namespace foveate::gpu {
+
+class Program : public Handle<detail::delete_program> {
+ public:
+  Program() = default;
+  explicit Program(GLuint id) : Handle(id) {}
+  /// Uniform location by name (cached; -1 when the uniform is unused).
+  GLint uniform(const char* name) const;
+  void use() const { glUseProgram(id()); }
+  void set(const char* name, float v) const;
+  void set(const char* name, int v) const;
+  void set(const char* name, float x, float y) const;
+  void set(const char* name, float x, float y, float z) const;
+  void set(const char* name, float x, float y, float z, float w) const;
+  void set_mat4(const char* name, const float* m) const;
+  void set_mat3(const char* name, const float* m) const;
+
+ private:
+  mutable std::map<std::string, GLint, std::less<>> locations_;
+};
+
+/// One stage's source, named for error messages.
+struct StageSource {
+  GLenum stage = GL_FRAGMENT_SHADER;
+  /// Pieces concatenated in order; each is an embedded file name, or literal
+  /// text when `literal` is set (named `label` in errors).
+  struct Piece {
+    std::string name;
+    std::string text;  ///< used when non-empty (generated or user text); `name` labels it
+  };
+  std::vector<Piece> pieces;
+};
+
+class ShaderCompiler {
+ public:
+  /// The tables of embedded files that names and #includes resolve against;
+  /// gpu's own common snippets are always included.
+  explicit ShaderCompiler(std::vector<std::span<const embedded::EmbeddedFile>> tables = {});
+  /// Text of an embedded file; throws foveate::Error if unknown.
+  [[nodiscard]] std::string_view file(std::string_view name) const;
+  /// Compiles and links; throws foveate::Error whose message lists each error
+  /// as "file:line: message".
+  Program build(const std::vector<StageSource>& stages, const std::string& what) const;
+  /// Shortcut: vertex + fragment from embedded file names.
+  Program build(const std::string& vertex, const std::string& fragment) const;
+
+ private:
+  std::vector<std::span<const embedded::EmbeddedFile>> tables_;
+};
+
+/// Maps a driver info log (Mesa "0:12(3): error: ..." or NVIDIA "0(12) : error ...")
+/// to "file:line: ..." using the names of the source strings, by index.
+std::string map_info_log(const std::string& log, const std::vector<std::string>& names);
+
+}  // namespace foveate::gpu

@@ -1,0 +1,148 @@
+#include "foveate/gpu/gl.hpp"
+
+#include <cstdio>
+
+#include "foveate/core/error.hpp"
+
+namespace foveate::gpu {
+
+namespace detail {
+void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+void delete_renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
+void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+void delete_program(GLuint id) { glDeleteProgram(id); }
+void delete_shader(GLuint id) { glDeleteShader(id); }
+void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+}  // namespace detail
+
+Buffer Buffer::create(GLsizeiptr size, const void* data, GLbitfield flags) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  Buffer b(id);
+  glNamedBufferStorage(id, size, data, flags);
+  b.size_ = size;
+  return b;
+}
+
+void Buffer::update(GLintptr offset, GLsizeiptr size, const void* data) const {
+  glNamedBufferSubData(id(), offset, size, data);
+}
+
+Texture Texture::create_2d(GLenum internal_format, int width, int height, int levels) {
+  GLint max = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  if (width < 1 || height < 1 || width > max || height > max) {
+    throw Error("texture size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is outside what this GL supports (1.." + std::to_string(max) + ")");
+  }
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  Texture t(id);
+  glTextureStorage2D(id, levels, internal_format, width, height);
+  t.width_ = width;
+  t.height_ = height;
+  t.format_ = internal_format;
+  t.set_filter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+  t.set_wrap(GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+Texture Texture::create_2d_multisample(GLenum internal_format, int width, int height, int samples) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
+  Texture t(id);
+  glTextureStorage2DMultisample(id, samples, internal_format, width, height, GL_TRUE);
+  t.width_ = width;
+  t.height_ = height;
+  t.format_ = internal_format;
+  return t;
+}
+
+void Texture::set_filter(GLenum min, GLenum mag) const {
+  glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min));
+  glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag));
+}
+
+void Texture::set_wrap(GLenum wrap) const {
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+}
+
+void Texture::upload(int width, int height, GLenum format, GLenum type, const void* pixels) const {
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(id(), 0, 0, 0, width, height, format, type, pixels);
+}
+
+Renderbuffer Renderbuffer::create(GLenum internal_format, int width, int height, int samples) {
+  GLuint id = 0;
+  glCreateRenderbuffers(1, &id);
+  Renderbuffer r(id);
+  if (samples > 0) {
+    glNamedRenderbufferStorageMultisample(id, samples, internal_format, width, height);
+  } else {
+    glNamedRenderbufferStorage(id, internal_format, width, height);
+  }
+  return r;
+}
+
+Framebuffer Framebuffer::create() {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  return Framebuffer(id);
+}
+
+void Framebuffer::attach(GLenum attachment, const Texture& texture, int level) const {
+  glNamedFramebufferTexture(id(), attachment, texture.id(), level);
+}
+
+void Framebuffer::attach(GLenum attachment, const Renderbuffer& rb) const {
+  glNamedFramebufferRenderbuffer(id(), attachment, GL_RENDERBUFFER, rb.id());
+}
+
+void Framebuffer::set_draw_buffers(int count) const {
+  GLenum bufs[8];
+  for (int i = 0; i < count && i < 8; ++i) bufs[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+  glNamedFramebufferDrawBuffers(id(), count, bufs);
+}
+
+void Framebuffer::check(const char* what) const {
+  const GLenum s = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+  if (s != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error(std::string(what) + ": framebuffer incomplete (" + gl_enum_name(s) + ")");
+  }
+}
+
+VertexArray VertexArray::create() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  return VertexArray(id);
+}
+
+Query Query::create(GLenum target) {
+  GLuint id = 0;
+  glCreateQueries(target, 1, &id);
+  return Query(id);
+}
+
+std::string gl_enum_name(GLenum e) {
+  switch (e) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    default: {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "0x%04X", e);
+      return buf;
+    }
+  }
+}
+
+}  // namespace foveate::gpu

@@ -1,0 +1,31 @@
+#pragma once
+// A GoogleTest fixture with a headless debug GL 4.5 core context. Any GL error
+// reported through KHR_debug during a test fails that test.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "foveate/gpu/context.hpp"
+
+namespace foveate::test {
+
+class GlTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!context_) {
+      gpu::ContextOptions o;
+      o.debug = true;
+      context_ = gpu::create_headless_context(o);
+    }
+    context_->make_current();
+  }
+  void TearDown() override {
+    for (const auto& e : context_->take_debug_errors()) ADD_FAILURE() << "GL debug error: " << e.text;
+  }
+  static gpu::Context& context() { return *context_; }
+
+ private:
+  static inline std::unique_ptr<gpu::Context> context_;
+};
+
+}  // namespace foveate::test
