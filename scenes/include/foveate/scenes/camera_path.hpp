@@ -1,0 +1,48 @@
+#pragma once
+// Camera fly-through paths: keyframes on a fixed clock, interpolated with a
+// Catmull-Rom spline (positions and targets), looping when `loop` is set.
+// JSON form:
+//   {"loop": true, "keyframes": [{"t": 0, "position": [x,y,z], "target": [x,y,z],
+//                                 "fov_deg": 50}, ...]}
+#include <glm/glm.hpp>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+namespace foveate {
+
+struct CameraKey {
+  double t = 0.0;
+  glm::dvec3 position{0.0, 0.0, 5.0};
+  glm::dvec3 target{0.0, 0.0, 0.0};
+  double fov_deg = 50.0;  ///< vertical field of view of the rendered image
+};
+
+struct CameraPose {
+  glm::dvec3 position;
+  glm::dvec3 target;
+  double fov_deg;
+};
+
+struct CameraPath {
+  std::vector<CameraKey> keys;
+  bool loop = true;
+
+  [[nodiscard]] CameraPose at(double t) const;
+  [[nodiscard]] double duration() const { return keys.empty() ? 0.0 : keys.back().t; }
+  /// Throws foveate::Error naming the field (`where`.keyframes[i].t ...).
+  static CameraPath from_json(const nlohmann::json& j, const std::string& where);
+  static CameraPath load(const std::string& path);
+  /// An orbit around `centre` at `radius`, `height` above it, one turn per `period` s.
+  static CameraPath orbit(glm::dvec3 centre, double radius, double height, double period,
+                          double fov_deg = 50.0);
+};
+
+/// Column-major view and projection matrices for a pose. The projection is the
+/// off-centre sub-frustum of the screen rectangle [x0,x1]x[y0,y1] of a full
+/// frame width x height (pixels, origin bottom-left).
+glm::dmat4 view_matrix(const CameraPose& pose);
+glm::dmat4 projection_for_rect(const CameraPose& pose, int width, int height, double x0, double y0,
+                               double x1, double y1, double z_near, double z_far);
+
+}  // namespace foveate

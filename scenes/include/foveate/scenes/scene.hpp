@@ -1,0 +1,119 @@
+#pragma once
+// The scene interface: everything a foveation technique needs from content,
+// and nothing about foveation. A scene is
+//   1. an optional geometry prepass that rasterises a region of the screen into
+//      the scene's own G-buffer (mesh scenes; screen-space scenes have none), and
+//   2. a GLSL function `vec4 scene_shade(vec2 screen_px)` that shades any
+//      screen position (pixels of the full frame, origin bottom-left as
+//      gl_FragCoord), reading the G-buffer if there is one.
+// A technique decides which screen positions get shaded, at what rate and in
+// which buffer (a layer, a log-polar buffer, a checkerboard); it supplies
+// `vec2 foveate_map(vec2 frag_coord)` that turns its own fragment coordinate
+// into a screen position. That split is what lets any technique run on any
+// scene, and what a user implements to foveate their own renderer.
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "foveate/core/display.hpp"
+#include "foveate/gpu/shader.hpp"
+
+namespace foveate {
+
+/// Per-frame inputs, on a fixed clock so that runs are deterministic.
+struct FrameInput {
+  double time_s = 0.0;
+  double delta_s = 1.0 / 60.0;
+  int frame = 0;
+  int width = 0;   ///< full output resolution
+  int height = 0;
+  Vec2d mouse_px{0.0, 0.0};  ///< pixels, origin bottom-left (Shadertoy's iMouse.xy)
+  bool mouse_down = false;
+};
+
+/// A region of the full screen rendered into a target of its own size.
+struct View {
+  /// Screen rectangle [x0, y0] - [x1, y1] in full-frame pixels (origin
+  /// bottom-left); may extend beyond the screen. Off-centre sub-frustum.
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int target_width = 0;
+  int target_height = 0;
+  /// Size of one target pixel in native pixels (a layer's sampling factor s):
+  /// geometric LOD sees it.
+  double pixel_scale = 1.0;
+  [[nodiscard]] static View full(int w, int h) { return View{0, 0, double(w), double(h), w, h, 1.0}; }
+};
+
+struct SceneInfo {
+  std::string name;
+  std::string description;
+  bool has_meshes = false;     ///< rasterised geometry with a G-buffer prepass
+  bool has_mesh_lods = false;  ///< discrete LODs selectable per draw (lodmask)
+  size_t triangles = 0;        ///< at full detail
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  [[nodiscard]] virtual SceneInfo info() const = 0;
+
+  /// GLSL pieces defining `vec4 scene_shade(vec2 screen_px)` and its uniforms;
+  /// must not define main(). A piece is literal text when its text is set,
+  /// otherwise an embedded file name resolved against shader_files() (and the
+  /// gpu and scenes modules' files). A stable key for caching programs.
+  [[nodiscard]] virtual std::vector<gpu::StageSource::Piece> shade_source() const = 0;
+  [[nodiscard]] virtual std::string shade_key() const = 0;
+  /// Extra embedded files that the scene's GLSL includes (user scenes).
+  [[nodiscard]] virtual std::vector<std::span<const embedded::EmbeddedFile>> shader_files() const {
+    return {};
+  }
+
+  /// Advances the scene to this frame (camera, animation).
+  virtual void update(const FrameInput& frame) = 0;
+
+  /// Geometry prepass for `view`. The default does begin + draw(-1) + end.
+  virtual void prepass(const View& view);
+  /// Fine-grained prepass for techniques that mask geometry (lodmask):
+  /// begin binds the G-buffer framebuffer (with a depth-stencil attachment) at
+  /// the view's size and clears it; draw rasterises the geometry at `lod`
+  /// (0 = full detail, 1, 2 coarser; -1 = automatic by distance and
+  /// view.pixel_scale); end unbinds. No-ops for screen-space scenes.
+  virtual void prepass_begin(const View& view);
+  virtual void prepass_draw(const View& view, int lod);
+  virtual void prepass_end();
+
+  /// Binds uniforms and textures of the shading function on `program` for a
+  /// pass over `view` (the same view as the last prepass).
+  virtual void bind(const gpu::Program& program, const View& view) = 0;
+
+  /// Screen positions (pixels, origin top-left) of the scene's objects at the
+  /// current frame, nearest first; empty when the scene has no objects.
+  [[nodiscard]] virtual std::vector<Vec2d> object_positions() const { return {}; }
+
+  /// Texture units below this are the scene's; techniques use units from here.
+  static constexpr int kFirstTechniqueUnit = 8;
+};
+
+/// The scenes module's embedded GLSL files (shade_source() names resolve here).
+std::span<const embedded::EmbeddedFile> scene_shader_files();
+
+/// Built-in scene names and one-line descriptions.
+struct SceneListing {
+  std::string name;
+  std::string description;
+};
+std::vector<SceneListing> builtin_scenes();
+
+struct SceneOptions {
+  std::vector<std::string> channels;  ///< iChannel0..3 image files (Shadertoy scenes)
+  std::string camera_path;            ///< keyframes JSON; empty = the scene's default
+};
+
+/// A built-in scene by name, or a file: .glsl/.frag (Shadertoy) or a mesh file
+/// assimp reads. Needs a current GL context. Throws foveate::Error with the
+/// file and the reason for bad input.
+std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOptions& options = {});
+
+}  // namespace foveate

@@ -1,0 +1,41 @@
+#include "foveate/scenes/scene.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "factories.hpp"
+#include "foveate/core/error.hpp"
+#include "foveate_embedded/scenes_shaders.hpp"
+
+namespace foveate {
+
+std::span<const embedded::EmbeddedFile> scene_shader_files() { return embedded::scenes_shaders(); }
+
+void Scene::prepass(const View& view) {
+  prepass_begin(view);
+  prepass_draw(view, -1);
+  prepass_end();
+}
+void Scene::prepass_begin(const View&) {}
+void Scene::prepass_draw(const View&, int) {}
+void Scene::prepass_end() {}
+
+std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOptions& options) {
+  if (detail::is_builtin_shader_scene(name_or_path)) {
+    return detail::make_builtin_shader_scene(name_or_path, options);
+  }
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(name_or_path, ec)) {
+    std::string names;
+    for (const auto& s : builtin_scenes()) names += (names.empty() ? "" : ", ") + s.name;
+    throw Error("scene '" + name_or_path + "': not a built-in scene (" + names +
+                ") nor an existing file");
+  }
+  std::string ext = fs::path(name_or_path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".glsl" || ext == ".frag" || ext == ".fs") return detail::make_shadertoy_file(name_or_path, options);
+  throw Error(name_or_path + ": unsupported scene file type '" + ext + "' (expected .glsl/.frag Shadertoy shaders)");
+}
+
+}  // namespace foveate
