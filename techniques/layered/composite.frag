@@ -1,0 +1,24 @@
+// Composites eccentricity layers: the outer layer everywhere, then each inner
+// layer blended in with a smoothstep mask over the outer 'transition' fraction
+// of its radius (Guenter et al., Figure 3). Layers are sampled bilinearly.
+uniform sampler2D u_layers[6];
+uniform vec4 u_rects[6];    // x0, y0, w, h in screen pixels
+uniform vec2 u_centres[6];  // unjittered gaze of each layer's render
+uniform float u_radii[6];
+uniform int u_count;
+uniform float u_transition;
+out vec4 o_color;
+
+vec3 layer(int i, vec2 p) { return texture(u_layers[i], (p - u_rects[i].xy) / u_rects[i].zw).rgb; }
+
+void main() {
+  vec2 p = gl_FragCoord.xy;
+  vec3 col = layer(u_count - 1, p);
+  for (int i = u_count - 2; i >= 0; --i) {
+    float r = u_radii[i];
+    float d = distance(p, u_centres[i]);
+    float w = u_transition > 0.0 ? 1.0 - smoothstep((1.0 - u_transition) * r, r, d) : step(d, r);
+    if (w > 0.0) col = mix(col, layer(i, p), w);
+  }
+  o_color = vec4(col, 1.0);
+}
