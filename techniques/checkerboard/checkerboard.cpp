@@ -81,7 +81,7 @@ class Checkerboard final : public Technique {
     // 2. Shading where the stencil says so: dropped quads never reach the shader.
     glStencilFunc(GL_EQUAL, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const double shaded = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); });
+    const double shaded = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
     glDisable(GL_STENCIL_TEST);
     // 3. Reconstruction into the target.
     const gpu::Program& rec = kit_.fullscreen("checkerboard/reconstruct.frag");

@@ -52,13 +52,14 @@ const gpu::Program& Kit::fullscreen(const std::string& fragment) {
   return programs_.emplace(fragment, compiler_.build("fullscreen.vert", fragment)).first->second;
 }
 
-const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping) {
-  const std::string key = scene.shade_key() + "|" + mapping;
+const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early) {
+  const std::string main = early ? "common/shade_main_early.frag" : "common/shade_main.frag";
+  const std::string key = scene.shade_key() + "|" + mapping + "|" + main;
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   std::vector<gpu::StageSource::Piece> pieces = scene.shade_source();
   pieces.insert(pieces.begin(), {mapping, {}});
-  pieces.push_back({"common/shade_main.frag", {}});
+  pieces.push_back({main, {}});
   auto tables = scene.shader_files();
   gpu::Program p;
   if (tables.empty()) {
@@ -83,8 +84,8 @@ void Kit::draw_fullscreen(const gpu::Program& program) const {
 }
 
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
-                  const std::function<void(const gpu::Program&)>& set_uniforms) {
-  const gpu::Program& p = shading(scene, mapping);
+                  const std::function<void(const gpu::Program&)>& set_uniforms, bool early) {
+  const gpu::Program& p = shading(scene, mapping, early);
   scene.bind(p, view);
   if (set_uniforms) set_uniforms(p);
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());

@@ -38,14 +38,16 @@ class Kit {
   const gpu::Program& fullscreen(const std::string& fragment);
   /// The program shading `scene` at positions from `mapping` (an embedded GLSL
   /// file defining vec2 foveate_map(vec2 frag_coord)), cached per scene.
-  const gpu::Program& shading(const Scene& scene, const std::string& mapping);
+  /// With `early`, depth and stencil tests run before shading (stencil masks
+  /// really save the work) and there is no off-screen discard.
+  const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false);
   /// Draws the full-screen triangle with `program` into the bound framebuffer.
   void draw_fullscreen(const gpu::Program& program) const;
   /// Runs a shading pass over the bound framebuffer's viewport and returns the
   /// number of fragments that reached the shader (occlusion query; stencil
   /// rejected and discarded fragments do not count).
   double shade(Scene& scene, const View& view, const std::string& mapping,
-               const std::function<void(const gpu::Program&)>& set_uniforms);
+               const std::function<void(const gpu::Program&)>& set_uniforms, bool early = false);
 
  private:
   gpu::ShaderCompiler compiler_;

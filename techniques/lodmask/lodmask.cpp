@@ -73,7 +73,7 @@ class LodMask final : public Technique {
     scene.prepass_end();
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, W, H);
-    const double shaded = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); });
+    const double shaded = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
     FrameStats s;
     const double pi = 3.14159265358979;
     const double a_in = std::min(pi * r_in * r_in, double(W) * H);
