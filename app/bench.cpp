@@ -1,0 +1,234 @@
+#include "bench.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <sstream>
+
+#include "foveate/core/error.hpp"
+#include "foveate/core/file.hpp"
+#include "foveate/gpu/frame.hpp"
+#include "gaze_input.hpp"
+#include "quality.hpp"
+
+namespace foveate::app {
+
+namespace {
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const double pos = q * static_cast<double>(v.size() - 1);
+  const size_t i = static_cast<size_t>(std::floor(pos));
+  const size_t j = std::min(i + 1, v.size() - 1);
+  return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
+}
+
+// 95 % bootstrap interval of median(native) / median(technique), resampling
+// frames in pairs (the same frames were rendered by both), fixed seed.
+std::pair<double, double> speedup_interval(const std::vector<double>& native, const std::vector<double>& tech) {
+  const size_t n = std::min(native.size(), tech.size());
+  if (n < 2) {
+    const double s = percentile(native, 0.5) / percentile(tech, 0.5);
+    return {s, s};
+  }
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<size_t> pick(0, n - 1);
+  std::vector<double> ratios;
+  std::vector<double> a(n), b(n);
+  for (int r = 0; r < 1000; ++r) {
+    for (size_t k = 0; k < n; ++k) {
+      const size_t i = pick(rng);
+      a[k] = native[i];
+      b[k] = tech[i];
+    }
+    ratios.push_back(percentile(a, 0.5) / percentile(b, 0.5));
+  }
+  return {percentile(ratios, 0.025), percentile(ratios, 0.975)};
+}
+
+class Progress {
+ public:
+  Progress(int total, bool enabled) : total_(total), enabled_(enabled), tty_(isatty(2) != 0) {
+    t0_ = std::chrono::steady_clock::now();
+  }
+  void step(const std::string& what) {
+    ++done_;
+    if (!enabled_) return;
+    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    const double eta = done_ > 0 ? el / done_ * (total_ - done_) : 0.0;
+    if (tty_) {
+      const int width = 30, filled = total_ > 0 ? width * done_ / total_ : width;
+      std::fprintf(stderr, "\r[%s%s] %3d%% %d/%d  ETA %5.0fs  %-28s", std::string(size_t(filled), '#').c_str(),
+                   std::string(size_t(width - filled), '.').c_str(), 100 * done_ / std::max(total_, 1), done_,
+                   total_, eta, what.c_str());
+      if (done_ == total_) std::fprintf(stderr, "\n");
+    } else if (done_ == total_ || done_ % std::max(1, total_ / 10) == 0) {
+      std::fprintf(stderr, "bench: %d/%d frames rendered, %.0f s elapsed, about %.0f s left\n", done_, total_, el, eta);
+    }
+    std::fflush(stderr);
+  }
+
+ private:
+  int total_, done_ = 0;
+  bool enabled_, tty_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
+}  // namespace
+
+BenchResult run_bench(const BenchOptions& o) {
+  if (o.frames < 1 || o.frames > 100000) throw Error("--frames: expected 1..100000");
+  if (o.warmup < 0 || o.warmup > 1000) throw Error("--warmup: expected 0..1000");
+  if (o.techniques.empty()) throw Error("--techniques: give at least one technique");
+  for (const std::string& t : o.techniques) (void)technique_info(t);
+
+  BenchResult out;
+  out.options = o;
+  Session session(o.session);
+  out.display = session.display();
+  out.scene = session.scene().info().name;
+  {
+    const auto* r = glGetString(GL_RENDERER);
+    out.renderer = r ? reinterpret_cast<const char*>(r) : "";
+  }
+  auto gaze = GazeInput::create(o.gaze, session);
+
+  // The runs: each technique once, or once per swept value.
+  struct Run {
+    std::string technique;
+    double sweep_value = 0;
+    AcuityModel acuity;
+    std::unique_ptr<Technique> impl;
+    TechniqueResult result;
+    std::unique_ptr<QualityAccumulator> quality;
+  };
+  std::vector<Run> runs;
+  auto add_run = [&](const std::string& t, double value, bool swept) {
+    Run r;
+    r.technique = t;
+    r.sweep_value = value;
+    SessionOptions so = o.session;
+    ParamArgs params = o.params;
+    r.acuity = so.acuity;
+    if (swept && o.sweep_key == "slope") {
+      r.acuity = AcuityModel::with_slope(value);
+    } else if (swept) {
+      const auto dot = o.sweep_key.find('.');
+      const std::string tech = dot == std::string::npos ? "" : o.sweep_key.substr(0, dot);
+      const std::string key = dot == std::string::npos ? o.sweep_key : o.sweep_key.substr(dot + 1);
+      params.per_technique[tech][key] = value;
+    }
+    TechniqueConfig c;
+    c.display = session.display();
+    c.acuity = r.acuity;
+    c.params = params_for(params, t);
+    r.impl = make_technique(t, c);
+    r.result.technique = t;
+    r.result.sweep_value = value;
+    r.result.parameters = r.impl->parameters();
+    if (o.quality) r.quality = std::make_unique<QualityAccumulator>(session.display(), r.acuity);
+    runs.push_back(std::move(r));
+  };
+  // Native is the reference for speed and quality: always run, once.
+  add_run("native", 0.0, false);
+  for (const std::string& t : o.techniques) {
+    if (t == "native") continue;
+    const bool swept_here = !o.sweep_key.empty() &&
+                            (o.sweep_key == "slope" || o.sweep_key.rfind(t + ".", 0) == 0 ||
+                             (o.sweep_key.find('.') == std::string::npos && o.sweep_key != "slope"));
+    if (swept_here) {
+      for (double v : o.sweep_values) add_run(t, v, true);
+    } else {
+      add_run(t, 0.0, false);
+    }
+  }
+  const bool native_listed = std::find(o.techniques.begin(), o.techniques.end(), "native") != o.techniques.end();
+
+  const int total = static_cast<int>(runs.size()) * (o.frames + o.warmup);
+  Progress progress(total, o.progress);
+  gpu::FrameTimer timer;
+  // Warm-up: compile shaders, allocate targets, fill temporal history.
+  for (int k = 0; k < o.warmup; ++k) {
+    const double t = session.frame_input(k).time_s;
+    const GazeState g = gaze->at(t);
+    for (Run& r : runs) {
+      session.render(*r.impl, k, g);
+      progress.step("warm-up " + r.technique);
+    }
+  }
+  for (Run& r : runs) r.impl->reset();
+  // Measured frames, interleaved: every technique renders frame k before any
+  // renders k + 1, and the order rotates so that no technique is always first.
+  for (int k = 0; k < o.frames; ++k) {
+    const int frame = o.warmup + k;
+    const double t = session.frame_input(frame).time_s;
+    const GazeState g = gaze->at(t);
+    Image native_image;
+    std::vector<std::pair<size_t, Image>> images;
+    for (size_t i = 0; i < runs.size(); ++i) {
+      Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
+      timer.start();
+      const FrameStats s = session.render(*r.impl, frame, g);
+      const double ms = timer.stop();
+      r.result.frame_ms.push_back(ms);
+      r.result.shaded_pixels += s.shaded_pixels;
+      r.result.native_pixels += s.native_pixels;
+      if (r.result.parts.empty()) r.result.parts = s.parts;
+      else
+        for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p) r.result.parts[p].pixels += s.parts[p].pixels;
+      if (o.quality || k + 1 == o.frames) {
+        Image img = session.read_output();
+        if (&r == &runs[0]) native_image = img;
+        images.emplace_back(static_cast<size_t>(&r - &runs[0]), std::move(img));
+      }
+      progress.step(r.technique + (o.sweep_key.empty() ? "" : " @" + fmt(r.sweep_value, 4)));
+    }
+    for (auto& [idx, img] : images) {
+      Run& r = runs[idx];
+      if (o.quality && idx != 0) r.quality->add(native_image, img, g.gaze_px);
+      if (k + 1 == o.frames) {
+        if (o.quality && idx != 0) {
+          r.result.heatmap = QualityAccumulator::heatmap(native_image, img);
+          r.result.acuity_heatmap = r.quality->acuity_heatmap(native_image, img, g.gaze_px);
+        }
+        r.result.sample = std::move(img);
+        out.sample_gaze_px = g.gaze_px;
+      }
+    }
+    if (k + 1 == o.frames) out.native_sample = runs[0].result.sample;
+  }
+
+  const std::vector<double> native_ms = runs[0].result.frame_ms;  // a copy: results are moved out below
+  const double native_median = percentile(native_ms, 0.5);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    Run& r = runs[i];
+    TechniqueResult& res = r.result;
+    if (i == 0 && !native_listed) continue;
+    res.median_ms = percentile(res.frame_ms, 0.5);
+    res.p90_ms = percentile(res.frame_ms, 0.9);
+    double sum = 0;
+    for (double x : res.frame_ms) sum += x;
+    res.mean_ms = sum / static_cast<double>(res.frame_ms.size());
+    res.speedup = native_median / res.median_ms;
+    std::tie(res.speedup_lo, res.speedup_hi) = speedup_interval(native_ms, res.frame_ms);
+    res.shaded_pixels /= o.frames;
+    res.native_pixels /= o.frames;
+    for (PixelPart& p : res.parts) p.pixels /= o.frames;
+    res.pixel_ratio = res.shaded_pixels / res.native_pixels;
+    res.bound_share = res.speedup * res.pixel_ratio;
+    if (r.quality) {
+      res.quality = r.quality->summary();
+      res.flicker_ratio = r.quality->flicker_ratio();
+    }
+    out.results.push_back(std::move(res));
+  }
+  return out;
+}
+
+}  // namespace foveate::app

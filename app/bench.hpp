@@ -1,0 +1,62 @@
+#pragma once
+// The benchmark: the same frames (camera, time, gaze) rendered with each
+// technique in one process, interleaved frame by frame, timed with a steady
+// clock around glFinish, and compared with native for quality.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "foveate/core/image.hpp"
+#include "session.hpp"
+
+namespace foveate::app {
+
+struct BenchOptions {
+  SessionOptions session;
+  std::vector<std::string> techniques{"native", "layered", "logpolar", "checkerboard", "inset"};
+  ParamArgs params;
+  std::string gaze;       ///< gaze spec (see --gaze)
+  int frames = 10;
+  int warmup = 2;
+  bool quality = true;
+  std::string out;        ///< output directory
+  bool progress = true;
+  std::string sweep_key;  ///< "" or the swept key ("slope" or TECHNIQUE.KEY)
+  std::vector<double> sweep_values;
+  std::string command_line;
+};
+
+struct TechniqueResult {
+  std::string technique;
+  double sweep_value = 0.0;
+  std::vector<std::pair<std::string, double>> parameters;
+  std::vector<double> frame_ms;
+  double median_ms = 0, p90_ms = 0, mean_ms = 0;
+  double speedup = 1, speedup_lo = 1, speedup_hi = 1;
+  double shaded_pixels = 0, native_pixels = 0;
+  std::vector<PixelPart> parts;  ///< mean per frame
+  double pixel_ratio = 1;        ///< shaded / native
+  double bound_share = 1;        ///< speedup / (native / shaded)
+  nlohmann::json quality;        ///< metrics over the measured frames (means)
+  double flicker_ratio = 0;      ///< peripheral flicker relative to native (NaN without motion)
+  Image sample;                  ///< last frame, for the report
+  Image heatmap;
+  Image acuity_heatmap;
+};
+
+struct BenchResult {
+  BenchOptions options;
+  std::string renderer;
+  std::string scene;
+  Display display;
+  std::vector<TechniqueResult> results;
+  Image native_sample;
+  Vec2d sample_gaze_px;
+};
+
+BenchResult run_bench(const BenchOptions& options);
+/// Writes results.json, results.csv, results.md and report.html into options.out.
+void write_bench_outputs(const BenchResult& result);
+std::string bench_markdown(const BenchResult& result);
+
+}  // namespace foveate::app
