@@ -104,10 +104,12 @@ class Layered final : public Technique {
       v.pixel_scale = s;
       if (i + 1 < n) {
         const auto [half, side] = inner_size(i, gaze);
-        v.x0 = g.x - half;
-        v.y0 = g.y - half;
-        v.x1 = g.x + half;
-        v.y1 = g.y + half;
+        // Origins on the native pixel grid: a layer at s = 1 samples exactly
+        // the native pixel centres.
+        v.x0 = std::round(g.x - half);
+        v.y0 = std::round(g.y - half);
+        v.x1 = v.x0 + 2.0 * half;
+        v.y1 = v.y0 + 2.0 * half;
         v.target_width = v.target_height = side;
         st.radius = half;
       } else {
@@ -175,7 +177,9 @@ class Layered final : public Technique {
     Target& out = st.history[static_cast<size_t>(next)];
     out.ensure(v.target_width, v.target_height);
     out.bind_viewport();
-    const bool blend = opt_.history > 0.0 && st.valid;
+    // The inner layer samples at native resolution and is not jittered:
+    // blending its history would only add lag, so only subsampled layers blend.
+    const bool blend = opt_.history > 0.0 && st.valid && v.pixel_scale > 1.0;
     const gpu::Program& p = kit_.fullscreen("layered/temporal.frag");
     st.current.color.bind(Scene::kFirstTechniqueUnit);
     p.set("u_current", Scene::kFirstTechniqueUnit);

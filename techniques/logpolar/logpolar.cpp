@@ -5,6 +5,7 @@
 // whose screen-space width grows with eccentricity (a fixed footprint in the
 // buffer). Mesh scenes are shaded deferred: their G-buffer is rasterised at
 // native resolution and the lighting runs in the log-polar buffer.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -79,8 +80,18 @@ class LogPolar final : public Technique {
     const int W = frame.width, H = frame.height;
     const int bw = std::max(1, static_cast<int>(std::lround(W / opt_.sigma)));
     const int bh = std::max(1, static_cast<int>(std::lround(H / opt_.sigma)));
-    const Vec2d g = to_gl(gaze.gaze_px, H);
-    const float L = static_cast<float>(model_.log_extent());
+    // The log-polar centre must lie on the screen for the buffer to cover it:
+    // a gaze off screen is moved to the nearest screen point.
+    Vec2d g = to_gl(gaze.gaze_px, H);
+    g.x = std::clamp(g.x, 0.0, double(W));
+    g.y = std::clamp(g.y, 0.0, double(H));
+    // L spans the screen from the gaze: log of the diagonal (Meng et al.), or
+    // of the farthest corner when the gaze is off screen.
+    double far = std::hypot(double(W), double(H));
+    for (double cx : {0.0, double(W)}) {
+      for (double cy : {0.0, double(H)}) far = std::max(far, std::hypot(cx - g.x, cy - g.y));
+    }
+    const float L = static_cast<float>(std::log(far));
     // Deferred: a mesh scene's G-buffer at native resolution.
     const View native = View::full(W, H);
     scene.prepass(native);

@@ -1,0 +1,335 @@
+// Each technique against native on the built-in scenes: the fovea matches,
+// the shaded pixels match the plan, identity parameters reproduce native, and
+// gazes at the corners and off screen work.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "foveate/core/error.hpp"
+#include "foveate/core/models.hpp"
+#include "foveate/core/planner.hpp"
+#include "foveate/gpu/frame.hpp"
+#include "foveate/techniques/technique.hpp"
+#include "gl_fixture.hpp"
+
+using namespace foveate;
+
+namespace {
+
+constexpr int kW = 640, kH = 360;
+
+// "Matches native": the same pixel centres are shaded, so differences come
+// only from floating-point rounding of sample positions, which flips the odd
+// pixel on a hard edge of the "detail" scene. Tolerance: mean channel error
+// below 0.1 and at most 0.1 % of pixels off by more than 8 of 255.
+#define EXPECT_MATCHES_NATIVE(d)  \
+  do {                            \
+    const Diff dd = (d);          \
+    EXPECT_LT(dd.mean, 0.1);      \
+    EXPECT_LE(dd.off, 0.001);     \
+  } while (0)
+
+struct Diff {
+  double max = 0, mean = 0;
+  double off = 0;  ///< fraction of pixels with a channel off by more than 8
+};
+
+// Channel differences (0..255) over the pixels within `radius` of `centre` (top-left px).
+Diff compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
+  Diff d;
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      if (std::hypot(x + 0.5 - centre.x, y + 0.5 - centre.y) > radius) continue;
+      double worst = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double e = std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c]));
+        worst = std::max(worst, e);
+        sum += e;
+        ++n;
+      }
+      d.max = std::max(d.max, worst);
+      d.off += worst > 8 ? 1 : 0;
+    }
+  }
+  d.mean = n ? sum / n : 0;
+  d.off = n ? d.off / (n / 3) : 0;
+  return d;
+}
+
+Diff compare_all(const Image& a, const Image& b) { return compare_disc(a, b, {0, 0}, 1e9); }
+
+class Techniques : public test::GlTest {
+ protected:
+  void SetUp() override {
+    color_ = gpu::Texture::create_2d(GL_RGBA8, kW, kH);
+    fbo_ = gpu::Framebuffer::create();
+    fbo_.attach(GL_COLOR_ATTACHMENT0, color_);
+  }
+  TechniqueConfig config(std::map<std::string, double> params = {}) const {
+    TechniqueConfig c;
+    c.display = Display::load("desktop-1080p").resized(kW, kH);
+    c.acuity = AcuityModel::quality("A");
+    c.params = std::move(params);
+    return c;
+  }
+  FrameInput frame(int k = 0) const {
+    FrameInput f;
+    f.frame = k;
+    f.time_s = 1.0 + k / 60.0;
+    f.width = kW;
+    f.height = kH;
+    return f;
+  }
+  Image run(Technique& t, Scene& s, Vec2d gaze, FrameStats* stats = nullptr, int k = 0) {
+    const FrameInput f = frame(k);
+    s.update(f);
+    const FrameStats st = t.render(s, f, GazeState{gaze}, fbo_.id());
+    if (stats) *stats = st;
+    return gpu::read_texture(color_);
+  }
+  Image native(Scene& s, int k = 0) {
+    auto n = make_technique("native", config());
+    return run(*n, s, {kW / 2.0, kH / 2.0}, nullptr, k);
+  }
+
+  gpu::Texture color_;
+  gpu::Framebuffer fbo_;
+};
+
+}  // namespace
+
+TEST_F(Techniques, NativeShadesEveryPixelOnce) {
+  auto scene = load_scene("cheap");
+  auto t = make_technique("native", config());
+  FrameStats s;
+  run(*t, *scene, {100, 100}, &s);
+  EXPECT_EQ(s.shaded_pixels, double(kW) * kH);
+  EXPECT_EQ(s.native_pixels, double(kW) * kH);
+}
+
+TEST_F(Techniques, LayeredFoveaMatchesNativeAndCountsMatchThePlan) {
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique("layered", config());
+  FrameStats s;
+  const Vec2d gaze{kW / 2.0, kH / 2.0};
+  const Image img = run(*t, *scene, gaze, &s);
+  PlannerOptions po;
+  const LayerPlan plan = plan_layers(config().display, AcuityModel::quality("A"), po);
+  ASSERT_EQ(s.parts.size(), plan.layers.size());
+  for (size_t i = 0; i < plan.layers.size(); ++i) {
+    EXPECT_EQ(s.parts[i].pixels, plan.layers[i].pixels) << "layer " << i + 1;
+  }
+  EXPECT_NEAR(s.shaded_pixels / s.native_pixels, 1.0 / plan.pixel_ratio(), 1e-9);
+  // Inside the unblended part of the inner layer the image is native's, exactly.
+  const double r = 0.6 * 0.5 * plan.layers[0].width_px - 1;
+  EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, r));
+  // The periphery is a lower-resolution version: different, but not wildly.
+  const Diff all = compare_all(ref, img);
+  EXPECT_GT(all.mean, 0.5);
+  EXPECT_LT(all.mean, 60.0);
+}
+
+TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
+  auto scene = load_scene("cheap");
+  auto t = make_technique("layered", config());
+  FrameStats s0, s1, s2;
+  run(*t, *scene, {320, 180}, &s0, 0);
+  run(*t, *scene, {320, 180}, &s1, 1);
+  run(*t, *scene, {320, 180}, &s2, 2);
+  ASSERT_EQ(s1.parts.size(), 3u);
+  EXPECT_GT(s0.parts[1].pixels, 0);  // first frame: all layers
+  EXPECT_GT(s0.parts[2].pixels, 0);
+  EXPECT_EQ(s1.parts[1].pixels, 0);  // odd frame: the outer layer only
+  EXPECT_GT(s1.parts[2].pixels, 0);
+  EXPECT_GT(s2.parts[1].pixels, 0);  // even frame: the middle layer only
+  EXPECT_EQ(s2.parts[2].pixels, 0);
+  EXPECT_GT(s1.parts[0].pixels, 0);  // the inner layer every frame
+}
+
+TEST_F(Techniques, OneLayerIsNative) {
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique("layered", config({{"layers", 1}}));
+  FrameStats s;
+  const Image img = run(*t, *scene, {200, 100}, &s);
+  EXPECT_MATCHES_NATIVE(compare_all(ref, img));
+  EXPECT_EQ(s.shaded_pixels, double(kW) * kH);
+}
+
+TEST_F(Techniques, CheckerboardCountsMatchThePatternAndFoveaIsExact) {
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique("checkerboard", config());
+  const Vec2d gaze{300, 170};
+  FrameStats s;
+  const Image img = run(*t, *scene, gaze, &s);
+  // The CPU model of the same pattern.
+  CheckerboardPattern p = CheckerboardPattern::from_acuity(4, config().display, AcuityModel::quality("A"));
+  double kept = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) kept += p.kept({x + 0.5, y + 0.5}, gaze) ? 1 : 0;
+  }
+  EXPECT_EQ(s.shaded_pixels, kept);
+  EXPECT_LT(s.shaded_pixels, 0.5 * kW * kH);
+  // Region 0 (no quad dropped) is native's. Tiles are snapped to 2n, so stay a tile inside.
+  EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, p.thresholds_px[0] - 8.0 * std::sqrt(2.0)));
+}
+
+TEST_F(Techniques, CheckerboardWithoutDroppedQuadsIsNative) {
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique("checkerboard", config({{"r1", 1e5}, {"r2", 1e5}, {"r3", 1e5}}));
+  FrameStats s;
+  const Image img = run(*t, *scene, {10, 10}, &s);
+  EXPECT_EQ(s.shaded_pixels, double(kW) * kH);
+  EXPECT_MATCHES_NATIVE(compare_all(ref, img));
+}
+
+TEST_F(Techniques, CheckerboardReconstructsBlackPixelsAsValid) {
+  // A scene that is black except in a few places: coverage comes from alpha,
+  // so shaded black must stay black rather than be "filled".
+  auto scene = load_scene("cheap");
+  auto t = make_technique("checkerboard", config({{"r1", 0}, {"r2", 0}, {"r3", 0}}));
+  const Image img = run(*t, *scene, {320, 180});
+  const Image ref = native(*scene);
+  // Every kept pixel (quad 0 of each tile) equals native.
+  int checked = 0;
+  for (int y = 0; y < kH; y += 8) {
+    for (int x = 0; x < kW; x += 8) {
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(img.at(x, y)[c], ref.at(x, y)[c]);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+  // Reconstruction of a smooth scene is close to native everywhere.
+  EXPECT_LT(compare_all(ref, img).mean, 4.0);
+}
+
+TEST_F(Techniques, InsetCountsAndFovea) {
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique("inset", config());
+  const Vec2d gaze{320, 180};
+  FrameStats s;
+  const Image img = run(*t, *scene, gaze, &s);
+  ASSERT_EQ(s.parts.size(), 2u);
+  EXPECT_EQ(s.parts[0].pixels, double(kW / 2) * (kH / 2));
+  // The inset: the latency-aware diameter (eq. 1), clipped to the screen.
+  double diameter = 0;
+  for (const auto& [k, v] : t->parameters()) {
+    if (k == "diameter_px") diameter = v;
+  }
+  const double side_x = std::min(double(kW), std::ceil(gaze.x + diameter / 2)) - std::floor(gaze.x - diameter / 2);
+  const double side_y = std::min(double(kH), std::ceil(kH - gaze.y + diameter / 2)) - std::max(0.0, std::floor(kH - gaze.y - diameter / 2));
+  EXPECT_EQ(s.parts[1].pixels, side_x * side_y);
+  const double inner = 0.5 * diameter * (1 - 0.2) - 1;
+  EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, inner));
+}
+
+TEST_F(Techniques, InsetAtFullScaleIsNative) {
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique("inset", config({{"scale", 1.0}, {"blur", 0.0}}));
+  const Image img = run(*t, *scene, {100, 100});
+  EXPECT_MATCHES_NATIVE(compare_all(ref, img));
+}
+
+TEST_F(Techniques, LogPolarFoveaMatchesAndBufferSize) {
+  auto scene = load_scene("cheap");
+  const Image ref = native(*scene);
+  auto t = make_technique("logpolar", config({{"sigma", 1.5}, {"alpha", 2.0}, {"blur", 0.0}}));
+  const Vec2d gaze{320, 180};
+  FrameStats s;
+  const Image img = run(*t, *scene, gaze, &s);
+  const double bw = std::round(kW / 1.5), bh = std::round(kH / 1.5);
+  EXPECT_LE(s.shaded_pixels, bw * bh);
+  EXPECT_GT(s.shaded_pixels, 0.3 * bw * bh);
+  // Near the gaze the buffer samples more densely than the screen.
+  EXPECT_LT(compare_disc(ref, img, gaze, 20).mean, 2.0);
+  // sigma = 1 is closer to native than sigma = 2.
+  auto t1 = make_technique("logpolar", config({{"sigma", 1.0}, {"alpha", 2.0}, {"blur", 0.0}}));
+  auto t2 = make_technique("logpolar", config({{"sigma", 2.0}, {"alpha", 2.0}, {"blur", 0.0}}));
+  EXPECT_LT(compare_all(ref, run(*t1, *scene, gaze)).mean, compare_all(ref, run(*t2, *scene, gaze)).mean);
+}
+
+TEST_F(Techniques, LogPolarHasNoSeamWhereTheAngleWraps) {
+  // The angle wraps on the ray to the right of the gaze (v = 0 = h). Compare
+  // the rows just above and below that ray with native: no worse than the
+  // rows on the opposite side (angle pi), where there is no wrap.
+  auto scene = load_scene("cheap");
+  const Image ref = native(*scene);
+  auto t = make_technique("logpolar", config({{"sigma", 2.0}, {"alpha", 2.0}}));
+  const Image img = run(*t, *scene, {320, 180});
+  auto band = [&](int x0, int x1) {
+    double sum = 0;
+    int n = 0;
+    for (int y = 178; y <= 181; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        for (int c = 0; c < 3; ++c) sum += std::abs(int(img.at(x, y)[c]) - int(ref.at(x, y)[c]));
+        ++n;
+      }
+    }
+    return sum / n;
+  };
+  EXPECT_LT(band(340, 620), band(20, 300) + 3.0);
+}
+
+TEST_F(Techniques, GazeAtCornersAndOffScreen) {
+  auto scene = load_scene("cheap");
+  for (const std::string name : {"layered", "logpolar", "checkerboard", "inset"}) {
+    auto t = make_technique(name, config());
+    int k = 0;
+    for (Vec2d g : {Vec2d{0, 0}, Vec2d{kW - 1.0, kH - 1.0}, Vec2d{kW, 0}, Vec2d{-200, 500}, Vec2d{5000, -5000}}) {
+      FrameStats s;
+      const Image img = run(*t, *scene, g, &s, k++);
+      // (layered may shade nothing on a frame whose updated layers are all off screen)
+      if (name != "layered") EXPECT_GT(s.shaded_pixels, 0) << name << " gaze " << g.x << "," << g.y;
+      EXPECT_LE(s.shaded_pixels, 1.3 * kW * kH) << name;
+      // Still an image of the scene everywhere.
+      EXPECT_LT(compare_all(native(*scene, k - 1), img).mean, 25.0) << name << " gaze " << g.x << "," << g.y;
+    }
+  }
+}
+
+TEST_F(Techniques, LodmaskSaysItNeedsMeshes) {
+  auto scene = load_scene("raymarch");
+  auto t = make_technique("lodmask", config());
+  try {
+    run(*t, *scene, {320, 180});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("has no meshes"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Techniques, BadParametersAreErrors) {
+  EXPECT_THROW(make_technique("layered", config({{"layers", 9}})), Error);
+  EXPECT_THROW(make_technique("layered", config({{"layers", 2.5}})), Error);
+  EXPECT_THROW(make_technique("layered", config({{"sigma", 2}})), Error);
+  EXPECT_THROW(make_technique("logpolar", config({{"sigma", 0.5}})), Error);
+  EXPECT_THROW(make_technique("nope", config()), Error);
+  try {
+    make_technique("checkerboard", config({{"colour", 1}}));
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("block"), std::string::npos) << "lists known keys: " << e.what();
+  }
+}
+
+TEST_F(Techniques, DefaultsComeFromTheAcuityModel) {
+  // A steeper MAR slope (more aggressive) shrinks every foveal region.
+  TechniqueConfig a = config(), b = config();
+  b.acuity = AcuityModel::with_slope(0.05);
+  auto get = [](const std::vector<std::pair<std::string, double>>& v, const std::string& k) {
+    for (const auto& [key, x] : v) {
+      if (key == k) return x;
+    }
+    return std::nan("");
+  };
+  EXPECT_GT(get(default_parameters("checkerboard", a), "r3"), get(default_parameters("checkerboard", b), "r3"));
+  EXPECT_GT(get(default_parameters("inset", a), "fovea_deg"), get(default_parameters("inset", b), "fovea_deg"));
+  EXPECT_LT(get(default_parameters("logpolar", a), "sigma"), get(default_parameters("logpolar", b), "sigma"));
+  EXPECT_GT(get(default_parameters("lodmask", a), "inner_deg"), get(default_parameters("lodmask", b), "inner_deg"));
+}
