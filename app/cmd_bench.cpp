@@ -91,6 +91,7 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
   o.techniques = split(a.techniques, ',');
   for (const std::string& t : o.techniques) (void)technique_info(t);
   o.params = parse_params(a.params);
+  validate_params(o.params, o.techniques);
   o.gaze = a.gaze;
   o.frames = a.frames;
   o.warmup = a.warmup;

@@ -53,6 +53,7 @@ void run_render(const RenderArgs& a) {
     o.mouse_down = true;
   }
   const ParamArgs params = parse_params(a.params);
+  validate_params(params, {a.technique});
   const GazeState gaze{a.gaze.empty() ? Vec2d{0.5 * o.size.width, 0.5 * o.size.height}
                                       : parse_point(a.gaze, o.size.width, o.size.height, "--gaze")};
   std::filesystem::create_directories(a.out);

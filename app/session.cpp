@@ -32,6 +32,22 @@ ParamArgs parse_params(const std::vector<std::string>& items) {
   return out;
 }
 
+void validate_params(const ParamArgs& p, const std::vector<std::string>& techs) {
+  auto all = p.per_technique.find("");
+  if (all == p.per_technique.end()) return;
+  for (const auto& [key, v] : all->second) {
+    bool known = false;
+    std::string names;
+    for (const std::string& t : techs) {
+      names += (names.empty() ? "" : ", ") + t;
+      for (const ParamSpec& s : technique_info(t).params) known = known || s.key == key;
+    }
+    if (!known) {
+      throw Error("--param " + key + ": no such parameter in " + names + " (see 'foveate techniques')");
+    }
+  }
+}
+
 std::map<std::string, double> params_for(const ParamArgs& p, const std::string& technique) {
   std::map<std::string, double> out;
   const TechniqueInfo& info = technique_info(technique);

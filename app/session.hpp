@@ -19,6 +19,8 @@ struct ParamArgs {
   std::map<std::string, std::map<std::string, double>> per_technique;  // "" = all
 };
 ParamArgs parse_params(const std::vector<std::string>& items);
+/// Throws when a KEY without a technique prefix belongs to none of `techniques`.
+void validate_params(const ParamArgs& p, const std::vector<std::string>& techniques);
 /// The overrides for one technique (only keys it knows when given without prefix).
 std::map<std::string, double> params_for(const ParamArgs& p, const std::string& technique);
 

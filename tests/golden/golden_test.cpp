@@ -1,0 +1,147 @@
+// Every built-in scene, each technique and the Shadertoy files, rendered
+// headless on llvmpipe at small sizes and compared with reference images.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/frame.hpp"
+#include "foveate/techniques/technique.hpp"
+#include "gl_fixture.hpp"
+#include "image_compare.hpp"
+
+using namespace foveate;
+using foveate::test::check_golden;
+
+namespace {
+
+const std::string kGolden = FOVEATE_GOLDEN_DIR;
+const std::string kData = FOVEATE_TEST_DATA;
+
+class Golden : public test::GlTest {
+ protected:
+  Image render(Scene& scene, const std::string& technique, int w, int h, Vec2d gaze, FrameInput f = {}) {
+    gpu::Texture color = gpu::Texture::create_2d(GL_RGBA8, w, h);
+    gpu::Framebuffer fbo = gpu::Framebuffer::create();
+    fbo.attach(GL_COLOR_ATTACHMENT0, color);
+    TechniqueConfig c;
+    c.display = Display::load("desktop-1080p").resized(w, h);
+    auto t = make_technique(technique, c);
+    f.width = w;
+    f.height = h;
+    if (f.time_s == 0) f.time_s = 2.0;
+    scene.update(f);
+    t->render(scene, f, GazeState{gaze}, fbo.id());
+    return gpu::read_texture(color);
+  }
+};
+
+}  // namespace
+
+TEST_F(Golden, EveryBuiltinScene) {
+  for (const SceneListing& s : builtin_scenes()) {
+    auto scene = load_scene(s.name);
+    const Image img = render(*scene, "native", 128, 72, {64, 36});
+    const std::string msg = check_golden(img, kGolden + "/scene-" + s.name + ".png", "scene-" + s.name);
+    EXPECT_EQ(msg, "") << msg;
+  }
+}
+
+TEST_F(Golden, EachTechniqueOnTheDetailScene) {
+  auto scene = load_scene("detail");
+  for (const std::string t : {"layered", "logpolar", "checkerboard", "inset"}) {
+    const Image img = render(*scene, t, 320, 180, {200, 80});
+    const std::string msg = check_golden(img, kGolden + "/technique-" + t + ".png", "technique-" + t);
+    EXPECT_EQ(msg, "") << msg;
+  }
+}
+
+TEST_F(Golden, AnAlteredImageFailsTheComparison) {
+  if (const char* u = std::getenv("FOVEATE_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+    GTEST_SKIP() << "references are being rewritten";
+  }
+  auto scene = load_scene("cheap");
+  Image img = render(*scene, "native", 128, 72, {64, 36});
+  EXPECT_EQ(check_golden(img, kGolden + "/scene-cheap.png", "scene-cheap"), "");
+  // An 8x8 block painted magenta: the maximum error and the share of differing
+  // pixels both exceed the tolerance.
+  for (int y = 30; y < 38; ++y) {
+    for (int x = 60; x < 68; ++x) {
+      uint8_t* p = img.at(x, y);
+      p[0] = 255, p[1] = 0, p[2] = 255;
+    }
+  }
+  const std::string msg = check_golden(img, kGolden + "/scene-cheap.png", "altered-cheap");
+  EXPECT_NE(msg.find("max error"), std::string::npos) << msg;
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::current_path() / "golden-failures" / "altered-cheap.diff.png") ||
+              std::getenv("FOVEATE_TEST_OUTPUT"));
+  // A uniformly brightened image fails on the mean.
+  Image bright = render(*scene, "native", 128, 72, {64, 36});
+  for (size_t i = 0; i < bright.rgba.size(); i += 4) bright.rgba[i] = static_cast<uint8_t>(std::min(255, bright.rgba[i] + 6));
+  test::Tolerance t;
+  EXPECT_FALSE(test::compare_images(read_image(kGolden + "/scene-cheap.png"), bright, t.pixel_threshold).within(t));
+}
+
+TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
+  SceneOptions o;  // channels from channels.json beside the shader
+  auto scene = load_scene(kData + "/shadertoy/channels.glsl", o);
+  FrameInput f;
+  f.mouse_px = {96, 20};
+  f.mouse_down = true;
+  const Image img = render(*scene, "native", 128, 64, {64, 32}, f);
+  // The texture appears upright on the left half, as on shadertoy.com: its
+  // red and green top row at the top, blue and white below.
+  const uint8_t* top_left = img.at(8, 8);
+  EXPECT_GT(top_left[0], 200);
+  EXPECT_LT(top_left[1], 50);
+  const uint8_t* top_right_of_half = img.at(56, 8);
+  EXPECT_LT(top_right_of_half[0], 50);
+  EXPECT_GT(top_right_of_half[1], 200);
+  const uint8_t* bottom_left = img.at(8, 56);
+  EXPECT_LT(bottom_left[0], 50);
+  EXPECT_GT(bottom_left[2], 200);
+  // The mouse disc at (96, 20) from the bottom = row 43 from the top.
+  const uint8_t* mouse = img.at(96, 43);
+  EXPECT_GT(mouse[0], 200);
+  EXPECT_GT(mouse[1], 200);
+  EXPECT_LT(mouse[2], 50);
+  const std::string msg = check_golden(img, kGolden + "/shadertoy-channels.png", "shadertoy-channels");
+  EXPECT_EQ(msg, "") << msg;
+  // Without the button down the disc is not drawn (iMouse.z < 0).
+  f.mouse_down = false;
+  const Image up = render(*scene, "native", 128, 64, {64, 32}, f);
+  EXPECT_LT(up.at(96, 43)[0], 50);
+}
+
+TEST_F(Golden, ChannelGivenExplicitly) {
+  SceneOptions o;
+  o.channels = {kData + "/shadertoy/quadrants.png"};
+  auto scene = load_scene(kData + "/shadertoy/missing_texture.glsl", o);  // explicit channels override the JSON
+  const Image img = render(*scene, "native", 32, 32, {16, 16});
+  // The whole screen shows the texture: white in the bottom-right quadrant, red top-left.
+  EXPECT_GT(img.at(28, 28)[0], 200);
+  EXPECT_GT(img.at(28, 28)[2], 200);
+  EXPECT_GT(img.at(3, 3)[0], 200);
+  EXPECT_LT(img.at(3, 3)[2], 50);
+}
+
+TEST_F(Golden, BadShadertoyFiles) {
+  auto message = [](const std::string& path) {
+    try {
+      load_scene(path);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string syntax = message(kData + "/shadertoy/syntax_error.glsl");
+  EXPECT_NE(syntax.find("syntax_error.glsl:4:"), std::string::npos) << syntax;
+  EXPECT_NE(message(kData + "/shadertoy/no_main_image.glsl").find("mainImage"), std::string::npos);
+  const std::string tex = message(kData + "/shadertoy/missing_texture.glsl");
+  EXPECT_NE(tex.find("does-not-exist.png"), std::string::npos) << tex;
+  EXPECT_NE(message(kData + "/shadertoy/nope.glsl").find("nor an existing file"), std::string::npos);
+  const std::string empty = (std::filesystem::temp_directory_path() / "foveate-empty.glsl").string();
+  { std::ofstream(empty) << "\n"; }
+  EXPECT_NE(message(empty).find("empty"), std::string::npos);
+}

@@ -1,0 +1,82 @@
+#include "image_compare.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "foveate/core/error.hpp"
+
+namespace foveate::test {
+
+Comparison compare_images(const Image& a, const Image& b, int pixel_threshold) {
+  Comparison c;
+  c.size_matches = a.width == b.width && a.height == b.height;
+  if (!c.size_matches) return c;
+  double sum = 0;
+  size_t differing = 0;
+  const size_t n = static_cast<size_t>(a.width) * a.height;
+  for (size_t i = 0; i < n; ++i) {
+    int worst = 0;
+    for (int ch = 0; ch < 3; ++ch) {
+      const int e = std::abs(int(a.rgba[i * 4 + ch]) - int(b.rgba[i * 4 + ch]));
+      worst = std::max(worst, e);
+      sum += e;
+    }
+    c.max_error = std::max(c.max_error, worst);
+    differing += worst > pixel_threshold ? 1 : 0;
+  }
+  c.mean_error = sum / (3.0 * static_cast<double>(n));
+  c.fraction = static_cast<double>(differing) / static_cast<double>(n);
+  return c;
+}
+
+Image difference_image(const Image& a, const Image& b) {
+  Image d(a.width, a.height);
+  if (a.width != b.width || a.height != b.height) return d;
+  for (size_t i = 0; i < a.rgba.size(); i += 4) {
+    for (int ch = 0; ch < 3; ++ch) {
+      d.rgba[i + ch] = static_cast<uint8_t>(std::min(255, 4 * std::abs(int(a.rgba[i + ch]) - int(b.rgba[i + ch]))));
+    }
+    d.rgba[i + 3] = 255;
+  }
+  return d;
+}
+
+std::string check_golden(const Image& actual, const std::string& reference_path, const std::string& name,
+                         const Tolerance& t) {
+  namespace fs = std::filesystem;
+  const char* update = std::getenv("FOVEATE_UPDATE_GOLDEN");
+  if (update && std::string(update) == "1") {
+    write_png(reference_path, actual);
+    return "";
+  }
+  Image expected;
+  try {
+    expected = read_image(reference_path);
+  } catch (const Error& e) {
+    return std::string("cannot read the reference: ") + e.what() + " (run with FOVEATE_UPDATE_GOLDEN=1 to create it)";
+  }
+  const Comparison c = compare_images(expected, actual, t.pixel_threshold);
+  if (c.within(t)) return "";
+  const char* dir_env = std::getenv("FOVEATE_TEST_OUTPUT");
+  const fs::path dir = dir_env ? fs::path(dir_env) : fs::current_path() / "golden-failures";
+  fs::create_directories(dir);
+  const std::string actual_path = (dir / (name + ".actual.png")).string();
+  const std::string diff_path = (dir / (name + ".diff.png")).string();
+  write_png(actual_path, actual);
+  if (c.size_matches) write_png(diff_path, difference_image(expected, actual));
+  std::ostringstream m;
+  if (!c.size_matches) {
+    m << name << ": size " << actual.width << "x" << actual.height << " differs from the reference's "
+      << expected.width << "x" << expected.height;
+  } else {
+    m << name << ": max error " << c.max_error << " (limit " << t.max_error << "), mean " << c.mean_error << " (limit "
+      << t.mean_error << "), " << 100 * c.fraction << " % of pixels off by more than " << t.pixel_threshold
+      << " (limit " << 100 * t.max_fraction << " %)";
+  }
+  m << "; actual: " << actual_path << ", difference: " << diff_path;
+  return m.str();
+}
+
+}  // namespace foveate::test
