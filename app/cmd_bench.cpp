@@ -150,8 +150,8 @@ void register_bench(CLI::App& app) {
 
 void register_demo(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
-  a->scene = "guenter";
-  a->techniques = "native,layered,logpolar,checkerboard,lodmask,inset";
+  a->scene = "raymarch";
+  a->techniques = "native,layered,logpolar,checkerboard,inset";
   a->size = "960x540";
   a->frames = 8;
   a->warmup = 2;

@@ -18,3 +18,8 @@ cmake -S examples/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$pref
 cmake --build build/consumer >/dev/null
 ./build/consumer/consumer
 echo "consumer: built against the installed package and ran"
+rm -rf build/own_renderer
+cmake -S examples/own_renderer -B build/own_renderer -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build build/own_renderer >/dev/null
+(cd build/own_renderer && ./own_renderer layered own_renderer.png)
+echo "own_renderer: a user scene foveated through the installed package"
