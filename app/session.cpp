@@ -68,7 +68,13 @@ std::map<std::string, double> params_for(const ParamArgs& p, const std::string& 
 
 Session::Session(const SessionOptions& o) : options_(o) {
   display_ = Display::load(o.display).resized(o.size.width, o.size.height);
-  context_ = gpu::create_headless_context();
+  if (o.window) {
+    auto w = gpu::create_window(o.size.width, o.size.height, "foveate");
+    window_ = w.get();
+    context_ = std::move(w);
+  } else {
+    context_ = gpu::create_headless_context();
+  }
   GLint max = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
   if (o.size.width > max || o.size.height > max) {
@@ -114,6 +120,14 @@ FrameStats Session::render(Technique& technique, int frame, const GazeState& gaz
     overlay_->draw(technique.overlay(gaze), f.width, f.height, fbo_.id());
   }
   return s;
+}
+
+void Session::present() {
+  if (!window_) return;
+  const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
+  glBlitNamedFramebuffer(fbo_.id(), 0, 0, 0, options_.size.width, options_.size.height, 0, 0, w, h,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  window_->swap_buffers();
 }
 
 Image Session::read_output() const { return gpu::read_texture(color_); }

@@ -35,6 +35,8 @@ struct SessionOptions {
   double start_time = 0.0;
   Vec2d mouse_px{0, 0};
   bool mouse_down = false;
+  /// Open a window (GLFW) instead of a headless context; the output is shown in it.
+  bool window = false;
 };
 
 class Session {
@@ -49,10 +51,15 @@ class Session {
   FrameStats render(Technique& technique, int frame, const GazeState& gaze, bool overlay = false);
   [[nodiscard]] Image read_output() const;
   [[nodiscard]] GLuint output_framebuffer() const { return fbo_.id(); }
+  /// The window, when SessionOptions::window was set.
+  [[nodiscard]] gpu::Window* window() const { return window_; }
+  /// Copies the output to the window and swaps.
+  void present();
 
  private:
   SessionOptions options_;
   std::unique_ptr<gpu::Context> context_;
+  gpu::Window* window_ = nullptr;
   std::unique_ptr<Scene> scene_;
   Display display_;
   gpu::Texture color_;

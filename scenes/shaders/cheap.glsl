@@ -13,8 +13,8 @@ void mainImage(out vec4 fragColor, in vec2 fragCoord) {
       vec2 c = vec2(2.0 * cos(float(i) * 2.1), 2.0 * sin(float(i) * 2.1));
       discs += smoothstep(1.0, 0.6, length(p - c));
     }
-    col = mix(vec3(0.55, 0.6, 0.5), vec3(0.9, 0.5, 0.3), clamp(discs, 0.0, 1.0));
-    col *= exp(-0.01 * dot(p, p));
+    vec3 ground = mix(vec3(0.55, 0.6, 0.5), vec3(0.9, 0.5, 0.3), clamp(discs, 0.0, 1.0));
+    col = mix(vec3(0.8, 0.8, 0.78), ground, exp(-0.004 * dot(p, p)));
   }
   fragColor = vec4(col, 1.0);
 }
