@@ -268,7 +268,18 @@ std::string html(const BenchResult& b) {
         << "</figcaption></figure>";
     }
   }
-  h << "</div>\n<h2>Raw results</h2>\n<pre id=\"raw\">" << j.dump(2).substr(0, 20000) << "</pre>\n</body></html>\n";
+  h << "</div>\n<h2>Raw results</h2>\n<pre id=\"raw\">" << j.dump(2).substr(0, 20000) << "</pre>\n";
+  // A self-check a browser runs on load (used by the tests, harmless otherwise):
+  // how many images decoded, how many charts drew, and any script errors.
+  h << "<script>\nvar foveateErrors = 0;\nwindow.addEventListener('error', function () { foveateErrors++; });\n"
+       "window.addEventListener('load', function () {\n"
+       "  var imgs = Array.prototype.slice.call(document.images);\n"
+       "  var broken = imgs.filter(function (i) { return !i.complete || i.naturalWidth === 0; }).length;\n"
+       "  var charts = document.querySelectorAll('.chart svg').length;\n"
+       "  var bars = document.querySelectorAll('.chart svg rect.bar').length;\n"
+       "  document.body.setAttribute('data-selfcheck', JSON.stringify({images: imgs.length, broken: broken, "
+       "charts: charts, bars: bars, errors: foveateErrors}));\n"
+       "});\n</script>\n</body></html>\n";
   return h.str();
 }
 
