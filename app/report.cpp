@@ -202,12 +202,17 @@ std::string html(const BenchResult& b) {
   h << "<div class=chart id=\"chart-speed\">"
     << bar_chart(names, speed, bound, "measured speedup", "pixel bound (native / shaded pixels)",
                  "Speedup over native")
-    << "</div>\n<h2>Quality</h2>\n<div class=chart id=\"chart-quality\">"
-    << bar_chart(names, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity") << "</div>\n"
-    << "<div class=chart id=\"chart-acuity\">"
-    << bar_chart(names, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)", "",
-                 "Error the eye can resolve")
-    << "</div>\n";
+    << "</div>\n<h2>Quality</h2>\n";
+  if (b.options.quality) {
+    h << "<div class=chart id=\"chart-quality\">"
+      << bar_chart(names, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity") << "</div>\n"
+      << "<div class=chart id=\"chart-acuity\">"
+      << bar_chart(names, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)", "",
+                   "Error the eye can resolve")
+      << "</div>\n";
+  } else {
+    h << "<p class=note>Not measured (--no-quality).</p>\n";
+  }
   if (!b.options.sweep_key.empty()) {
     std::map<std::string, Series> speed_series, quality_series;
     const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};

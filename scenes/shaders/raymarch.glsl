@@ -20,7 +20,7 @@ vec2 map(vec3 p) {
   q.xz = mod(p.xz + 2.0, 4.0) - 2.0;
   float hgt = 1.0 + 0.8 * fract(sin(dot(cell, vec2(12.9898, 78.233))) * 43758.5453);
   float col = sd_round_box(q - vec3(0.0, hgt, 0.0), vec3(0.35, hgt, 0.35), 0.12);
-  if (col < res.x && dot(cell, cell) > 0.0) res = vec2(col, 2.0);
+  if (col < res.x && dot(cell, cell) > 2.0) res = vec2(col, 2.0);  // a clearing in the middle
   // A twisted torus at the centre.
   vec3 t = p - vec3(0.0, 1.6, 0.0);
   float a = t.y * 1.5;
