@@ -177,6 +177,7 @@ BenchResult run_bench(const BenchOptions& o) {
       const FrameStats s = session.render(*r.impl, frame, g);
       const double ms = timer.stop();
       r.result.frame_ms.push_back(ms);
+      if (std::isfinite(timer.gpu_ms())) r.result.gpu_ms.push_back(timer.gpu_ms());
       r.result.shaded_pixels += s.shaded_pixels;
       r.result.native_pixels += s.native_pixels;
       if (r.result.parts.empty()) r.result.parts = s.parts;

@@ -31,6 +31,7 @@ struct TechniqueResult {
   double sweep_value = 0.0;
   std::vector<std::pair<std::string, double>> parameters;
   std::vector<double> frame_ms;
+  std::vector<double> gpu_ms;    ///< GL_TIME_ELAPSED per frame on a real GPU (empty on llvmpipe)
   double median_ms = 0, p90_ms = 0, mean_ms = 0;
   double speedup = 1, speedup_lo = 1, speedup_hi = 1;
   double shaded_pixels = 0, native_pixels = 0;

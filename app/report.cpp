@@ -48,6 +48,13 @@ nlohmann::json to_json(const BenchResult& b) {
                         {"quality", r.quality.is_null() ? nlohmann::json::object() : r.quality},
                         {"frame_ms", r.frame_ms}};
     if (!b.options.sweep_key.empty()) j["sweep_value"] = r.sweep_value;
+    // GPU timer queries only where the renderer reports meaningful ones.
+    j["gpu_median_ms"] = nullptr;
+    if (!r.gpu_ms.empty()) {
+      std::vector<double> g = r.gpu_ms;
+      std::sort(g.begin(), g.end());
+      j["gpu_median_ms"] = g[g.size() / 2];
+    }
     results.push_back(j);
   }
   nlohmann::json sweep = nullptr;

@@ -1,6 +1,8 @@
 #include "foveate/gpu/frame.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <cstring>
 #include <vector>
 
@@ -53,14 +55,35 @@ Texture upload_image(const Image& image, bool mipmaps) {
   return t;
 }
 
+bool FrameTimer::gpu_timer_meaningful() {
+  const auto* r = glGetString(GL_RENDERER);
+  const std::string name = r ? reinterpret_cast<const char*>(r) : "";
+  for (const char* soft : {"llvmpipe", "softpipe", "SwiftShader", "Software"}) {
+    if (name.find(soft) != std::string::npos) return false;
+  }
+  return !name.empty();
+}
+
+FrameTimer::FrameTimer() : use_query_(gpu_timer_meaningful()), gpu_ms_(std::nan("")) {
+  if (use_query_) query_ = Query::create(GL_TIME_ELAPSED);
+}
+
 void FrameTimer::start() {
   glFinish();
   t0_ = std::chrono::steady_clock::now();
+  if (use_query_) glBeginQuery(GL_TIME_ELAPSED, query_.id());
 }
 
 double FrameTimer::stop() {
+  if (use_query_) glEndQuery(GL_TIME_ELAPSED);
   glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
+  if (use_query_) {
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &ns);
+    gpu_ms_ = static_cast<double>(ns) / 1e6;
+  }
+  return ms;
 }
 
 }  // namespace foveate::gpu
