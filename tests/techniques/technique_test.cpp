@@ -335,3 +335,42 @@ TEST_F(Techniques, DefaultsComeFromTheAcuityModel) {
   EXPECT_LT(get(default_parameters("logpolar", a), "sigma"), get(default_parameters("logpolar", b), "sigma"));
   EXPECT_GT(get(default_parameters("lodmask", a), "inner_deg"), get(default_parameters("lodmask", b), "inner_deg"));
 }
+
+TEST_F(Techniques, LatencyGrowsEveryFovea) {
+  // With gaze latency L the eye can travel L * S_max degrees before the frame
+  // shows: every technique with a fovea grows it by that angle (Swafford et al.).
+  const Display d = config().display;
+  const double margin_deg = 0.05 * 200.0;  // 50 ms at 200 deg/s
+  auto radius = [](const std::vector<OverlayShape>& shapes) {
+    for (const OverlayShape& s : shapes) {
+      if (s.kind == OverlayShape::Kind::Circle) return s.w;
+    }
+    return 0.0;
+  };
+  for (const std::string name : {"layered", "checkerboard", "lodmask", "inset"}) {
+    auto t = make_technique(name, config());
+    GazeState g{{320, 180}};
+    const double r0 = radius(t->overlay(g));
+    g.latency_ms = 50;
+    const double r1 = radius(t->overlay(g));
+    // The radius grows by at least f tan(margin) (times 0.6 for layered, whose
+    // first circle is where its blend starts, 60 % of the layer radius).
+    EXPECT_GT(r1 - r0, 0.55 * d.radius_px_at(margin_deg)) << name;
+    // A tracker fallback widens it too.
+    GazeState wide{{320, 180}};
+    wide.fovea_scale = 2.0;
+    EXPECT_GT(radius(t->overlay(wide)), 1.5 * r0) << name;
+  }
+  // The inset follows eq. 1 exactly.
+  auto inset = make_technique("inset", config({{"border", 0.0}}));
+  GazeState g{{320, 180}};
+  g.latency_ms = 50;
+  double fovea_deg = 0;
+  for (const auto& [k, v] : inset->parameters()) {
+    if (k == "fovea_deg") fovea_deg = v;
+  }
+  LatencyAwareFovea f;
+  f.latency_ms = 50;
+  f.fovea_deg = fovea_deg;
+  EXPECT_NEAR(radius(inset->overlay(g)), 0.5 * f.diameter_px(d), 1e-6);
+}
