@@ -31,7 +31,8 @@ double percentile(std::vector<double> v, double q) {
 
 // 95 % bootstrap interval of median(native) / median(technique), resampling
 // frames in pairs (the same frames were rendered by both), fixed seed.
-std::pair<double, double> speedup_interval(const std::vector<double>& native, const std::vector<double>& tech) {
+std::pair<double, double> speedup_interval(const std::vector<double>& native,
+                                           const std::vector<double>& tech) {
   const size_t n = std::min(native.size(), tech.size());
   if (n < 2) {
     const double s = percentile(native, 0.5) / percentile(tech, 0.5);
@@ -64,12 +65,14 @@ class Progress {
     const double eta = done_ > 0 ? el / done_ * (total_ - done_) : 0.0;
     if (tty_) {
       const int width = 30, filled = total_ > 0 ? width * done_ / total_ : width;
-      std::fprintf(stderr, "\r[%s%s] %3d%% %d/%d  ETA %5.0fs  %-28s", std::string(size_t(filled), '#').c_str(),
-                   std::string(size_t(width - filled), '.').c_str(), 100 * done_ / std::max(total_, 1), done_,
-                   total_, eta, what.c_str());
+      std::fprintf(stderr, "\r[%s%s] %3d%% %d/%d  ETA %5.0fs  %-28s",
+                   std::string(size_t(filled), '#').c_str(),
+                   std::string(size_t(width - filled), '.').c_str(),
+                   100 * done_ / std::max(total_, 1), done_, total_, eta, what.c_str());
       if (done_ == total_) std::fprintf(stderr, "\n");
     } else if (done_ == total_ || done_ % std::max(1, total_ / 10) == 0) {
-      std::fprintf(stderr, "bench: %d/%d frames rendered, %.0f s elapsed, about %.0f s left\n", done_, total_, el, eta);
+      std::fprintf(stderr, "bench: %d/%d frames rendered, %.0f s elapsed, about %.0f s left\n",
+                   done_, total_, el, eta);
     }
     std::fflush(stderr);
   }
@@ -139,16 +142,18 @@ BenchResult run_bench(const BenchOptions& o) {
   add_run("native", 0.0, false);
   for (const std::string& t : o.techniques) {
     if (t == "native") continue;
-    const bool swept_here = !o.sweep_key.empty() &&
-                            (o.sweep_key == "slope" || o.sweep_key.rfind(t + ".", 0) == 0 ||
-                             (o.sweep_key.find('.') == std::string::npos && o.sweep_key != "slope"));
+    const bool swept_here =
+        !o.sweep_key.empty() &&
+        (o.sweep_key == "slope" || o.sweep_key.rfind(t + ".", 0) == 0 ||
+         (o.sweep_key.find('.') == std::string::npos && o.sweep_key != "slope"));
     if (swept_here) {
       for (double v : o.sweep_values) add_run(t, v, true);
     } else {
       add_run(t, 0.0, false);
     }
   }
-  const bool native_listed = std::find(o.techniques.begin(), o.techniques.end(), "native") != o.techniques.end();
+  const bool native_listed =
+      std::find(o.techniques.begin(), o.techniques.end(), "native") != o.techniques.end();
 
   const int total = static_cast<int>(runs.size()) * (o.frames + o.warmup);
   Progress progress(total, o.progress);
@@ -180,9 +185,11 @@ BenchResult run_bench(const BenchOptions& o) {
       if (std::isfinite(timer.gpu_ms())) r.result.gpu_ms.push_back(timer.gpu_ms());
       r.result.shaded_pixels += s.shaded_pixels;
       r.result.native_pixels += s.native_pixels;
-      if (r.result.parts.empty()) r.result.parts = s.parts;
+      if (r.result.parts.empty())
+        r.result.parts = s.parts;
       else
-        for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p) r.result.parts[p].pixels += s.parts[p].pixels;
+        for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p)
+          r.result.parts[p].pixels += s.parts[p].pixels;
       if (o.quality || k + 1 == o.frames) {
         Image img = session.read_output();
         if (&r == &runs[0]) native_image = img;
@@ -205,7 +212,8 @@ BenchResult run_bench(const BenchOptions& o) {
     if (k + 1 == o.frames) out.native_sample = runs[0].result.sample;
   }
 
-  const std::vector<double> native_ms = runs[0].result.frame_ms;  // a copy: results are moved out below
+  const std::vector<double> native_ms =
+      runs[0].result.frame_ms;  // a copy: results are moved out below
   const double native_median = percentile(native_ms, 0.5);
   for (size_t i = 0; i < runs.size(); ++i) {
     Run& r = runs[i];

@@ -15,11 +15,11 @@ struct BenchOptions {
   SessionOptions session;
   std::vector<std::string> techniques{"native", "layered", "logpolar", "checkerboard", "inset"};
   ParamArgs params;
-  std::string gaze;       ///< gaze spec (see --gaze)
+  std::string gaze;  ///< gaze spec (see --gaze)
   int frames = 10;
   int warmup = 2;
   bool quality = true;
-  std::string out;        ///< output directory
+  std::string out;  ///< output directory
   bool progress = true;
   std::string sweep_key;  ///< "" or the swept key ("slope" or TECHNIQUE.KEY)
   std::vector<double> sweep_values;
@@ -31,7 +31,7 @@ struct TechniqueResult {
   double sweep_value = 0.0;
   std::vector<std::pair<std::string, double>> parameters;
   std::vector<double> frame_ms;
-  std::vector<double> gpu_ms;    ///< GL_TIME_ELAPSED per frame on a real GPU (empty on llvmpipe)
+  std::vector<double> gpu_ms;  ///< GL_TIME_ELAPSED per frame on a real GPU (empty on llvmpipe)
   double median_ms = 0, p90_ms = 0, mean_ms = 0;
   double speedup = 1, speedup_lo = 1, speedup_hi = 1;
   double shaded_pixels = 0, native_pixels = 0;

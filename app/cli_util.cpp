@@ -42,7 +42,8 @@ Vec2d parse_point(const std::string& text, int width, int height, const std::str
   const bool normalized = sx.find('.') != std::string::npos && sy.find('.') != std::string::npos &&
                           x >= 0.0 && x <= 1.0 && y >= 0.0 && y <= 1.0;
   if (normalized) return {x * width, y * height};
-  if (std::fabs(x) > 1e6 || std::fabs(y) > 1e6) throw Error(option + ": point is absurdly far off screen");
+  if (std::fabs(x) > 1e6 || std::fabs(y) > 1e6)
+    throw Error(option + ": point is absurdly far off screen");
   return {x, y};
 }
 

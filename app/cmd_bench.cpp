@@ -48,22 +48,28 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 void parse_sweep(const std::string& text, BenchOptions& o) {
   const auto eq = text.find('=');
-  const auto parts = eq == std::string::npos ? std::vector<std::string>{} : split(text.substr(eq + 1), ':');
+  const auto parts =
+      eq == std::string::npos ? std::vector<std::string>{} : split(text.substr(eq + 1), ':');
   if (eq == std::string::npos || eq == 0 || parts.size() != 3) {
-    throw Error("--sweep: expected KEY=FROM:TO:STEP (e.g. slope=0.015:0.035:0.005 or layered.layers=2:5:1), got '" + text + "'");
+    throw Error(
+        "--sweep: expected KEY=FROM:TO:STEP (e.g. slope=0.015:0.035:0.005 or "
+        "layered.layers=2:5:1), got '" +
+        text + "'");
   }
   double v[3];
   for (int i = 0; i < 3; ++i) {
     char* end = nullptr;
     v[i] = std::strtod(parts[static_cast<size_t>(i)].c_str(), &end);
-    if (end != parts[static_cast<size_t>(i)].c_str() + parts[static_cast<size_t>(i)].size() || !std::isfinite(v[i])) {
+    if (end != parts[static_cast<size_t>(i)].c_str() + parts[static_cast<size_t>(i)].size() ||
+        !std::isfinite(v[i])) {
       throw Error("--sweep: '" + parts[static_cast<size_t>(i)] + "' is not a number");
     }
   }
   if (!(v[2] > 0) || v[1] < v[0]) throw Error("--sweep: need FROM <= TO and STEP > 0");
   if ((v[1] - v[0]) / v[2] > 50) throw Error("--sweep: at most 50 values");
   o.sweep_key = text.substr(0, eq);
-  for (double x = v[0]; x <= v[1] + 1e-9 * std::max(1.0, std::fabs(v[1])); x += v[2]) o.sweep_values.push_back(x);
+  for (double x = v[0]; x <= v[1] + 1e-9 * std::max(1.0, std::fabs(v[1])); x += v[2])
+    o.sweep_values.push_back(x);
   if (o.sweep_key != "slope") {
     const auto dot = o.sweep_key.find('.');
     const std::string tech = dot == std::string::npos ? "" : o.sweep_key.substr(0, dot);
@@ -73,7 +79,9 @@ void parse_sweep(const std::string& text, BenchOptions& o) {
       if (!tech.empty() && t.name != tech) continue;
       for (const ParamSpec& p : t.params) known = known || p.key == key;
     }
-    if (!known) throw Error("--sweep: no technique has a parameter '" + o.sweep_key + "' (see 'foveate techniques')");
+    if (!known)
+      throw Error("--sweep: no technique has a parameter '" + o.sweep_key +
+                  "' (see 'foveate techniques')");
   }
 }
 
@@ -104,39 +112,51 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
 }
 
 void add_common(CLI::App* sub, BenchArgs& a) {
-  sub->add_option("--scene", a.scene, "Built-in scene, Shadertoy .glsl file or mesh file")->capture_default_str();
-  sub->add_option("--techniques", a.techniques, "Comma-separated techniques (native is always measured as the reference)")
+  sub->add_option("--scene", a.scene, "Built-in scene, Shadertoy .glsl file or mesh file")
+      ->capture_default_str();
+  sub->add_option("--techniques", a.techniques,
+                  "Comma-separated techniques (native is always measured as the reference)")
       ->capture_default_str();
   sub->add_option("--size", a.size, "Render size WxH")->capture_default_str();
   sub->add_option("--frames", a.frames, "Measured frames per technique")->capture_default_str();
-  sub->add_option("--warmup", a.warmup, "Warm-up frames per technique (not measured)")->capture_default_str();
+  sub->add_option("--warmup", a.warmup, "Warm-up frames per technique (not measured)")
+      ->capture_default_str();
   sub->add_option("--gaze", a.gaze, "Gaze: X,Y | fixed:X,Y (pixels or normalized); default centre");
   sub->add_option("--camera-path", a.camera_path, "Camera keyframes JSON");
-  sub->add_option("--channel", a.channels, "iChannel images for a Shadertoy shader (repeat, in order)");
+  sub->add_option("--channel", a.channels,
+                  "iChannel images for a Shadertoy shader (repeat, in order)");
   sub->add_option("--quality", a.quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", a.slope, "Custom MAR slope m");
-  sub->add_option("--param", a.params, "Technique parameter KEY=VALUE or TECHNIQUE.KEY=VALUE (repeatable)");
+  sub->add_option("--param", a.params,
+                  "Technique parameter KEY=VALUE or TECHNIQUE.KEY=VALUE (repeatable)");
   sub->add_option("--display", a.display, "Display preset or JSON file")->capture_default_str();
-  sub->add_option("--fps", a.fps, "Fixed clock rate (scene time of frame k = time + k / fps)")->capture_default_str();
+  sub->add_option("--fps", a.fps, "Fixed clock rate (scene time of frame k = time + k / fps)")
+      ->capture_default_str();
   sub->add_option("--time", a.time, "Scene time of the first frame")->capture_default_str();
-  sub->add_option("--out", a.out, "Output directory: results.json, results.csv, results.md, report.html")
+  sub->add_option("--out", a.out,
+                  "Output directory: results.json, results.csv, results.md, report.html")
       ->capture_default_str();
   sub->add_flag("--no-quality", a.no_quality, "Skip the image-quality metrics (faster)");
   sub->add_flag("--quiet", a.quiet, "No progress output");
 }
 
 void print_summary(const BenchResult& r) {
-  std::cout << "\n" << r.scene << " at " << r.options.session.size.width << 'x' << r.options.session.size.height
-            << ", " << r.options.frames << " frames, renderer " << r.renderer << "\n\n"
-            << bench_markdown(r) << "\nreport: " << (std::filesystem::path(r.options.out) / "report.html").string()
-            << "\nresults: " << (std::filesystem::path(r.options.out) / "results.json").string() << " (.csv, .md)\n";
+  std::cout << "\n"
+            << r.scene << " at " << r.options.session.size.width << 'x'
+            << r.options.session.size.height << ", " << r.options.frames << " frames, renderer "
+            << r.renderer << "\n\n"
+            << bench_markdown(r)
+            << "\nreport: " << (std::filesystem::path(r.options.out) / "report.html").string()
+            << "\nresults: " << (std::filesystem::path(r.options.out) / "results.json").string()
+            << " (.csv, .md)\n";
 }
 
 }  // namespace
 
 void register_bench(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
-  CLI::App* sub = app.add_subcommand("bench", "Compare techniques side by side: time, pixels and image quality");
+  CLI::App* sub = app.add_subcommand(
+      "bench", "Compare techniques side by side: time, pixels and image quality");
   add_common(sub, *a);
   sub->add_option("--sweep", a->sweep, "Sweep KEY=FROM:TO:STEP (slope, or a technique parameter)");
   sub->callback([a, &app] {
@@ -156,12 +176,14 @@ void register_demo(CLI::App& app) {
   a->frames = 8;
   a->warmup = 2;
   a->out = "foveate-demo";
-  CLI::App* sub = app.add_subcommand(
-      "demo", "A short benchmark of a built-in scene with every technique at quality A; prints the table and the report's path");
+  CLI::App* sub = app.add_subcommand("demo",
+                                     "A short benchmark of a built-in scene with every technique "
+                                     "at quality A; prints the table and the report's path");
   add_common(sub, *a);
   sub->callback([a] {
-    std::cout << "foveate demo: " << a->scene << " scene, techniques " << a->techniques << ", quality "
-              << (a->quality.empty() ? "A" : a->quality) << ", display " << a->display << " at " << a->size << "\n";
+    std::cout << "foveate demo: " << a->scene << " scene, techniques " << a->techniques
+              << ", quality " << (a->quality.empty() ? "A" : a->quality) << ", display "
+              << a->display << " at " << a->size << "\n";
     const BenchResult r = run_bench(to_options(*a, "foveate demo"));
     write_bench_outputs(r);
     print_summary(r);

@@ -107,14 +107,16 @@ void run_plan(const PlanArgs& a) {
     opt.weights[0] = 1.0;
   }
   const LayerPlan plan = plan_layers(display, acuity, opt);
-  const Vec2d gaze = a.gaze.empty() ? Vec2d{0.5 * display.width_px, 0.5 * display.height_px}
-                                    : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
+  const Vec2d gaze = a.gaze.empty()
+                         ? Vec2d{0.5 * display.width_px, 0.5 * display.height_px}
+                         : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
 
   // Where each layer lands on the screen for this gaze (inner layers are squares
   // centred on the gaze; the outer layer is the whole screen).
   auto rect = [&](size_t i) {
     const Layer& L = plan.layers[i];
-    if (i + 1 == plan.layers.size()) return std::array<double, 4>{0, 0, double(display.width_px), double(display.height_px)};
+    if (i + 1 == plan.layers.size())
+      return std::array<double, 4>{0, 0, double(display.width_px), double(display.height_px)};
     const double half = 0.5 * L.width_px * L.sampling_factor;
     return std::array<double, 4>{gaze.x - half, gaze.y - half, gaze.x + half, gaze.y + half};
   };
@@ -135,7 +137,8 @@ void run_plan(const PlanArgs& a) {
   if (d.head_mounted()) {
     std::cout << ", head-mounted, " << fmt(d.fov_h_deg, 1) << " deg horizontal field of view\n";
   } else {
-    std::cout << ", " << fmt(d.width_mm, 0) << " mm wide viewed from " << fmt(d.distance_mm, 0) << " mm\n";
+    std::cout << ", " << fmt(d.width_mm, 0) << " mm wide viewed from " << fmt(d.distance_mm, 0)
+              << " mm\n";
   }
   std::cout << "  e* (half field of view) = " << fmt(d.half_fov_deg(), 2)
             << " deg, w* (sharpness) = " << fmt(d.sharpness_deg(), 4)
@@ -173,13 +176,17 @@ void register_plan(CLI::App& app) {
   sub->add_option("--display", a->display,
                   "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3) or JSON file")
       ->capture_default_str();
-  sub->add_option("--quality", a->quality, "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
+  sub->add_option("--quality", a->quality,
+                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
   sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
-  sub->add_option("--gaze", a->gaze, "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
+  sub->add_option("--gaze", a->gaze,
+                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
   sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
-  sub->add_option("--fixed-s2", a->fixed_s2, "Fix the second layer's sampling factor (the paper's 3* uses 2)");
-  sub->add_option("--step", a->step, "Grid step of the radius search in degrees")->capture_default_str();
+  sub->add_option("--fixed-s2", a->fixed_s2,
+                  "Fix the second layer's sampling factor (the paper's 3* uses 2)");
+  sub->add_option("--step", a->step, "Grid step of the radius search in degrees")
+      ->capture_default_str();
   sub->add_flag("--half-rate-weights", a->half_rate_weights,
                 "Optimise with weights 1, 1/2, 1/2, ... (outer layers at half rate)");
   sub->add_flag("--json", a->json, "Print the plan as JSON");

@@ -1,9 +1,9 @@
 // foveate render / scenes / techniques: render frames of any scene with any
 // technique to PNG, and list what there is.
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <cmath>
 #include <optional>
 
 #include "cli_util.hpp"
@@ -36,7 +36,8 @@ struct RenderArgs {
 };
 
 void run_render(const RenderArgs& a) {
-  if (a.frames < 1 || a.frames > 100000) throw Error("--frames: expected 1..100000, got " + std::to_string(a.frames));
+  if (a.frames < 1 || a.frames > 100000)
+    throw Error("--frames: expected 1..100000, got " + std::to_string(a.frames));
   if (!(a.fps > 0.0 && a.fps <= 10000.0)) throw Error("--fps: expected a positive rate");
   if (!std::isfinite(a.time)) throw Error("--time: must be finite");
   SessionOptions o;
@@ -69,7 +70,8 @@ void run_render(const RenderArgs& a) {
     write_png((std::filesystem::path(a.out) / name).string(), session.read_output());
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
-            << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out << "/\n";
+            << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out
+            << "/\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
             << fmt(100.0 * shaded / native, 1) << " % of native)\n";
 }
@@ -78,23 +80,33 @@ void run_render(const RenderArgs& a) {
 
 void register_render(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  CLI::App* sub = app.add_subcommand("render", "Render frames of a scene with a technique to PNG files");
-  sub->add_option("--scene", a->scene, "Built-in scene name (see 'foveate scenes'), Shadertoy .glsl file or mesh file")
+  CLI::App* sub =
+      app.add_subcommand("render", "Render frames of a scene with a technique to PNG files");
+  sub->add_option("--scene", a->scene,
+                  "Built-in scene name (see 'foveate scenes'), Shadertoy .glsl file or mesh file")
       ->required();
   sub->add_option("--size", a->size, "Output size WxH in pixels")->capture_default_str();
   sub->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
-  sub->add_option("--time", a->time, "Scene time of the first frame in seconds")->capture_default_str();
-  sub->add_option("--fps", a->fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")->capture_default_str();
-  sub->add_option("--camera-path", a->camera_path, "Camera keyframes JSON (built-in and mesh scenes)");
-  sub->add_option("--channel", a->channels, "Image for iChannel0..3 of a Shadertoy shader (repeat, in order)");
-  sub->add_option("--mouse", a->mouse, "Shadertoy iMouse position X,Y (pixels or normalized), button down");
+  sub->add_option("--time", a->time, "Scene time of the first frame in seconds")
+      ->capture_default_str();
+  sub->add_option("--fps", a->fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")
+      ->capture_default_str();
+  sub->add_option("--camera-path", a->camera_path,
+                  "Camera keyframes JSON (built-in and mesh scenes)");
+  sub->add_option("--channel", a->channels,
+                  "Image for iChannel0..3 of a Shadertoy shader (repeat, in order)");
+  sub->add_option("--mouse", a->mouse,
+                  "Shadertoy iMouse position X,Y (pixels or normalized), button down");
   sub->add_option("--out", a->out, "Output directory (frame-0000.png, ...)")->required();
-  sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")->capture_default_str();
+  sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
+      ->capture_default_str();
   sub->add_option("--quality", a->quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", a->slope, "Custom MAR slope m");
   sub->add_option("--param", a->params, "Technique parameter KEY=VALUE (repeatable)");
-  sub->add_option("--gaze", a->gaze, "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
-  sub->add_option("--display", a->display, "Display preset or JSON file (its field of view is kept at --size)")
+  sub->add_option("--gaze", a->gaze,
+                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
+  sub->add_option("--display", a->display,
+                  "Display preset or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
   sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");
   sub->callback([a] { run_render(*a); });
@@ -103,8 +115,11 @@ void register_render(CLI::App& app) {
 void register_scenes(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("scenes", "List the built-in scenes");
   sub->callback([] {
-    for (const SceneListing& s : builtin_scenes()) std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
-    std::printf("\nAlso: a Shadertoy shader file (.glsl, .frag) or a mesh file (OBJ, glTF/GLB, PLY, FBX, 3DS, ...).\n");
+    for (const SceneListing& s : builtin_scenes())
+      std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
+    std::printf(
+        "\nAlso: a Shadertoy shader file (.glsl, .frag) or a mesh file (OBJ, glTF/GLB, PLY, FBX, "
+        "3DS, ...).\n");
   });
 }
 
@@ -113,7 +128,8 @@ void register_techniques(CLI::App& app) {
   auto size = std::make_shared<std::string>("1920x1080");
   auto quality = std::make_shared<std::string>();
   auto slope = std::make_shared<std::optional<double>>();
-  CLI::App* sub = app.add_subcommand("techniques", "List the techniques with their parameters and defaults");
+  CLI::App* sub =
+      app.add_subcommand("techniques", "List the techniques with their parameters and defaults");
   sub->add_option("--display", *display, "Display for the derived defaults")->capture_default_str();
   sub->add_option("--size", *size, "Render size for the derived defaults")->capture_default_str();
   sub->add_option("--quality", *quality, "Acuity preset A or B (default A)");
@@ -123,8 +139,8 @@ void register_techniques(CLI::App& app) {
     TechniqueConfig c;
     c.display = Display::load(*display).resized(sz.width, sz.height);
     c.acuity = acuity_from_options(*quality, *slope);
-    std::printf("defaults derived for %s at %dx%d, MAR slope %.4f\n\n", c.display.name.c_str(), sz.width,
-                sz.height, c.acuity.slope);
+    std::printf("defaults derived for %s at %dx%d, MAR slope %.4f\n\n", c.display.name.c_str(),
+                sz.width, sz.height, c.acuity.slope);
     for (const TechniqueInfo& t : techniques()) {
       std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
       const auto values = default_parameters(t.name, c);
@@ -133,8 +149,8 @@ void register_techniques(CLI::App& app) {
         for (const auto& [k, x] : values) {
           if (k == p.key) v = x;
         }
-        std::printf("  %-18s = %-10s %s [%g..%g]\n", p.key.c_str(), fmt(v, p.integer ? 0 : 3).c_str(),
-                    p.help.c_str(), p.min, p.max);
+        std::printf("  %-18s = %-10s %s [%g..%g]\n", p.key.c_str(),
+                    fmt(v, p.integer ? 0 : 3).c_str(), p.help.c_str(), p.min, p.max);
       }
       std::printf("\n");
     }

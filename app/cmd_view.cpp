@@ -65,11 +65,14 @@ void run_view(const ViewArgs& a) {
   gpu::FrameTimer timer;
   const auto start = std::chrono::steady_clock::now();
   double shown_ms = 0;
-  std::printf("foveate view: keys 1-%zu switch technique (%s), O overlay, Esc quit\n", names.size(), [&] {
-    std::string s;
-    for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + std::to_string(i + 1) + " " + names[i];
-    return s;
-  }().c_str());
+  std::printf("foveate view: keys 1-%zu switch technique (%s), O overlay, Esc quit\n", names.size(),
+              [&] {
+                std::string s;
+                for (size_t i = 0; i < names.size(); ++i)
+                  s += (i ? ", " : "") + std::to_string(i + 1) + " " + names[i];
+                return s;
+              }()
+                  .c_str());
   for (int frame = 0; a.frames == 0 || frame < a.frames; ++frame) {
     const gpu::Window::Input in = session.window()->poll();
     if (in.should_close) break;
@@ -83,7 +86,8 @@ void run_view(const ViewArgs& a) {
       }
     }
     if (quit) break;
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     GazeState gaze;
     if (fixed) {
       gaze = fixed->at(t);
@@ -117,7 +121,8 @@ void run_view(const ViewArgs& a) {
 void register_view(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
   CLI::App* sub = app.add_subcommand("view", "Interactive window: the gaze follows the mouse");
-  sub->add_option("--scene", a->scene, "Built-in scene, Shadertoy .glsl file or mesh file")->capture_default_str();
+  sub->add_option("--scene", a->scene, "Built-in scene, Shadertoy .glsl file or mesh file")
+      ->capture_default_str();
   sub->add_option("--size", a->size, "Window size WxH")->capture_default_str();
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();
   sub->add_option("--quality", a->quality, "Acuity preset A or B (default A)");
@@ -128,7 +133,8 @@ void register_view(CLI::App& app) {
   sub->add_option("--camera-path", a->camera_path, "Camera keyframes JSON");
   sub->add_option("--channel", a->channels, "iChannel images for a Shadertoy shader");
   sub->add_flag("--overlay,!--no-overlay", a->overlay, "Draw layer/region borders (toggle with O)");
-  sub->add_option("--frames", a->frames, "Quit after N frames (0 = run until closed)")->capture_default_str();
+  sub->add_option("--frames", a->frames, "Quit after N frames (0 = run until closed)")
+      ->capture_default_str();
   sub->add_option("--screenshot", a->screenshot, "Save the window's last frame as PNG on exit");
   sub->callback([a] { run_view(*a); });
 }

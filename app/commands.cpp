@@ -19,7 +19,8 @@ CommandRegistrar::CommandRegistrar(int order, RegisterFn fn) {
 
 void register_all_commands(CLI::App& app) {
   auto& r = registry();
-  std::stable_sort(r.begin(), r.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(r.begin(), r.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [order, fn] : r) fn(app);
 }
 

@@ -12,7 +12,9 @@ class FixedGaze final : public GazeInput {
  public:
   explicit FixedGaze(Vec2d p) : p_(p) {}
   GazeState at(double) override { return GazeState{p_}; }
-  std::string describe() const override { return "fixed at (" + fmt(p_.x, 1) + ", " + fmt(p_.y, 1) + ") px"; }
+  std::string describe() const override {
+    return "fixed at (" + fmt(p_.x, 1) + ", " + fmt(p_.y, 1) + ") px";
+  }
 
  private:
   Vec2d p_;

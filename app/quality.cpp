@@ -23,7 +23,8 @@ QualityAccumulator::QualityAccumulator(const Display& display, const AcuityModel
 QualityAccumulator::~QualityAccumulator() = default;
 
 void QualityAccumulator::add(const Image& reference, const Image& test, Vec2d gaze_px) {
-  impl_->reports.push_back(metrics::compare(reference, test, impl_->display, gaze_px, impl_->options));
+  impl_->reports.push_back(
+      metrics::compare(reference, test, impl_->display, gaze_px, impl_->options));
   impl_->flicker.add(reference, test, gaze_px);
 }
 
@@ -42,7 +43,9 @@ nlohmann::json QualityAccumulator::summary() const {
     return n ? s / n : std::numeric_limits<double>::quiet_NaN();
   };
   nlohmann::json j = metrics::to_json(rs.back());
-  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  auto num = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
   int identical = 0;
   for (const auto& r : rs) identical += std::isinf(r.psnr_db) ? 1 : 0;
   j["frames"] = rs.size();
@@ -53,8 +56,10 @@ nlohmann::json QualityAccumulator::summary() const {
   j["acuity_visible_fraction"] = num(mean([](const auto& r) { return r.acuity_visible_fraction; }));
   j["flip_mean"] = num(mean([](const auto& r) { return r.flip_mean; }));
   for (size_t b = 0; b < rs.back().bands.size(); ++b) {
-    j["bands"][b]["psnr_db"] = num(mean([&](const auto& r) { return b < r.bands.size() ? r.bands[b].psnr_db : NAN; }));
-    j["bands"][b]["ssim"] = num(mean([&](const auto& r) { return b < r.bands.size() ? r.bands[b].ssim : NAN; }));
+    j["bands"][b]["psnr_db"] =
+        num(mean([&](const auto& r) { return b < r.bands.size() ? r.bands[b].psnr_db : NAN; }));
+    j["bands"][b]["ssim"] =
+        num(mean([&](const auto& r) { return b < r.bands.size() ? r.bands[b].ssim : NAN; }));
   }
   j["flicker_ratio"] = num(flicker_ratio());
   return j;
@@ -66,7 +71,8 @@ Image QualityAccumulator::heatmap(const Image& reference, const Image& test) {
   return metrics::error_heatmap(reference, test, 64.0);
 }
 
-Image QualityAccumulator::acuity_heatmap(const Image& reference, const Image& test, Vec2d gaze_px) const {
+Image QualityAccumulator::acuity_heatmap(const Image& reference, const Image& test,
+                                         Vec2d gaze_px) const {
   return metrics::acuity_error_heatmap(reference, test, impl_->display, gaze_px, impl_->options);
 }
 

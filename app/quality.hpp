@@ -21,7 +21,8 @@ class QualityAccumulator {
   /// Peripheral flicker relative to native's own frame-to-frame change.
   [[nodiscard]] double flicker_ratio() const;
   static Image heatmap(const Image& reference, const Image& test);
-  [[nodiscard]] Image acuity_heatmap(const Image& reference, const Image& test, Vec2d gaze_px) const;
+  [[nodiscard]] Image acuity_heatmap(const Image& reference, const Image& test,
+                                     Vec2d gaze_px) const;
 
  private:
   struct Impl;

@@ -58,20 +58,23 @@ nlohmann::json to_json(const BenchResult& b) {
     results.push_back(j);
   }
   nlohmann::json sweep = nullptr;
-  if (!b.options.sweep_key.empty()) sweep = {{"key", b.options.sweep_key}, {"values", b.options.sweep_values}};
-  return {{"schema", "foveate-bench/1"},
-          {"command", b.options.command_line},
-          {"renderer", b.renderer},
-          {"scene", b.scene},
-          {"size", {b.options.session.size.width, b.options.session.size.height}},
-          {"display", b.display},
-          {"acuity", {{"slope", b.options.session.acuity.slope}, {"w0_deg", b.options.session.acuity.w0_deg}}},
-          {"gaze", b.options.gaze.empty() ? "centre" : b.options.gaze},
-          {"frames", b.options.frames},
-          {"warmup", b.options.warmup},
-          {"fps_clock", b.options.session.fps},
-          {"sweep", sweep},
-          {"results", results}};
+  if (!b.options.sweep_key.empty())
+    sweep = {{"key", b.options.sweep_key}, {"values", b.options.sweep_values}};
+  return {
+      {"schema", "foveate-bench/1"},
+      {"command", b.options.command_line},
+      {"renderer", b.renderer},
+      {"scene", b.scene},
+      {"size", {b.options.session.size.width, b.options.session.size.height}},
+      {"display", b.display},
+      {"acuity",
+       {{"slope", b.options.session.acuity.slope}, {"w0_deg", b.options.session.acuity.w0_deg}}},
+      {"gaze", b.options.gaze.empty() ? "centre" : b.options.gaze},
+      {"frames", b.options.frames},
+      {"warmup", b.options.warmup},
+      {"fps_clock", b.options.session.fps},
+      {"sweep", sweep},
+      {"results", results}};
 }
 
 std::string csv(const BenchResult& b) {
@@ -84,10 +87,11 @@ std::string csv(const BenchResult& b) {
                  ? std::to_string(r.quality[k].get<double>())
                  : std::string();
     };
-    s << r.technique << ',' << '"' << label(b, r) << '"' << ',' << r.sweep_value << ',' << r.median_ms << ','
-      << r.p90_ms << ',' << r.speedup << ',' << r.speedup_lo << ',' << r.speedup_hi << ',' << r.shaded_pixels << ','
-      << r.native_pixels << ',' << r.pixel_ratio << ',' << r.bound_share << ',' << q("psnr_db") << ',' << q("ssim")
-      << ',' << q("acuity_rmse") << ',' << q("flicker_ratio") << '\n';
+    s << r.technique << ',' << '"' << label(b, r) << '"' << ',' << r.sweep_value << ','
+      << r.median_ms << ',' << r.p90_ms << ',' << r.speedup << ',' << r.speedup_lo << ','
+      << r.speedup_hi << ',' << r.shaded_pixels << ',' << r.native_pixels << ',' << r.pixel_ratio
+      << ',' << r.bound_share << ',' << q("psnr_db") << ',' << q("ssim") << ',' << q("acuity_rmse")
+      << ',' << q("flicker_ratio") << '\n';
   }
   return s.str();
 }
@@ -98,7 +102,8 @@ std::string base64(const std::string& in) {
   out.reserve((in.size() + 2) / 3 * 4);
   size_t i = 0;
   for (; i + 2 < in.size(); i += 3) {
-    const unsigned v = (unsigned(uint8_t(in[i])) << 16) | (unsigned(uint8_t(in[i + 1])) << 8) | uint8_t(in[i + 2]);
+    const unsigned v =
+        (unsigned(uint8_t(in[i])) << 16) | (unsigned(uint8_t(in[i + 1])) << 8) | uint8_t(in[i + 2]);
     out += t[v >> 18], out += t[(v >> 12) & 63], out += t[(v >> 6) & 63], out += t[v & 63];
   }
   if (i < in.size()) {
@@ -124,13 +129,13 @@ Image crop(const Image& img, int cx, int cy, int size) {
 
 std::string img_tag(const Image& img, const std::string& alt, int display_width) {
   if (img.empty()) return "<span class=missing>(no image)</span>";
-  return "<img alt=\"" + alt + "\" width=\"" + std::to_string(display_width) + "\" src=\"data:image/png;base64," +
-         base64(encode_png(img)) + "\">";
+  return "<img alt=\"" + alt + "\" width=\"" + std::to_string(display_width) +
+         "\" src=\"data:image/png;base64," + base64(encode_png(img)) + "\">";
 }
 
 std::string bar_chart(const std::vector<std::string>& names, const std::vector<double>& a,
-                      const std::vector<double>& b, const std::string& a_name, const std::string& b_name,
-                      const std::string& title) {
+                      const std::vector<double>& b, const std::string& a_name,
+                      const std::string& b_name, const std::string& title) {
   const int w = 720, row = 34, top = 40, left = 200;
   const int h = top + row * static_cast<int>(names.size()) + 30;
   double mx = 1e-9;
@@ -139,27 +144,33 @@ std::string bar_chart(const std::vector<std::string>& names, const std::vector<d
   const double scale = (w - left - 80) / mx;
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h
-    << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"100%\" height=\"100%\" fill=\"white\"/>"
-    << "<text x=\"" << w / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << title << "</text>";
+    << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"100%\" height=\"100%\" "
+       "fill=\"white\"/>"
+    << "<text x=\"" << w / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << title
+    << "</text>";
   for (size_t i = 0; i < names.size(); ++i) {
     const int y = top + row * static_cast<int>(i);
-    const double va = std::isfinite(a[i]) ? a[i] : 0.0, vb = i < b.size() && std::isfinite(b[i]) ? b[i] : 0.0;
-    s << "<text x=\"" << left - 8 << "\" y=\"" << y + 16 << "\" text-anchor=\"end\">" << names[i] << "</text>";
+    const double va = std::isfinite(a[i]) ? a[i] : 0.0,
+                 vb = i < b.size() && std::isfinite(b[i]) ? b[i] : 0.0;
+    s << "<text x=\"" << left - 8 << "\" y=\"" << y + 16 << "\" text-anchor=\"end\">" << names[i]
+      << "</text>";
     s << "<rect class=\"bar\" x=\"" << left << "\" y=\"" << y + 2 << "\" width=\"" << va * scale
-      << "\" height=\"13\" fill=\"#1f77b4\"/><text x=\"" << left + va * scale + 4 << "\" y=\"" << y + 13 << "\">"
-      << fmt(va, 2) << "</text>";
+      << "\" height=\"13\" fill=\"#1f77b4\"/><text x=\"" << left + va * scale + 4 << "\" y=\""
+      << y + 13 << "\">" << fmt(va, 2) << "</text>";
     if (!b.empty()) {
       s << "<rect class=\"bar\" x=\"" << left << "\" y=\"" << y + 16 << "\" width=\"" << vb * scale
-        << "\" height=\"13\" fill=\"#ff7f0e\"/><text x=\"" << left + vb * scale + 4 << "\" y=\"" << y + 27 << "\">"
-        << fmt(vb, 2) << "</text>";
+        << "\" height=\"13\" fill=\"#ff7f0e\"/><text x=\"" << left + vb * scale + 4 << "\" y=\""
+        << y + 27 << "\">" << fmt(vb, 2) << "</text>";
     }
   }
   const int ly = h - 14;
-  s << "<rect x=\"" << left << "\" y=\"" << ly - 9 << "\" width=\"12\" height=\"10\" fill=\"#1f77b4\"/><text x=\""
-    << left + 16 << "\" y=\"" << ly << "\">" << a_name << "</text>";
+  s << "<rect x=\"" << left << "\" y=\"" << ly - 9
+    << "\" width=\"12\" height=\"10\" fill=\"#1f77b4\"/><text x=\"" << left + 16 << "\" y=\"" << ly
+    << "\">" << a_name << "</text>";
   if (!b.empty()) {
-    s << "<rect x=\"" << left + 260 << "\" y=\"" << ly - 9 << "\" width=\"12\" height=\"10\" fill=\"#ff7f0e\"/><text x=\""
-      << left + 276 << "\" y=\"" << ly << "\">" << b_name << "</text>";
+    s << "<rect x=\"" << left + 260 << "\" y=\"" << ly - 9
+      << "\" width=\"12\" height=\"10\" fill=\"#ff7f0e\"/><text x=\"" << left + 276 << "\" y=\""
+      << ly << "\">" << b_name << "</text>";
   }
   s << "</svg>";
   return s.str();
@@ -169,27 +180,37 @@ std::string html(const BenchResult& b) {
   const nlohmann::json j = to_json(b);
   std::ostringstream h;
   const int W = b.options.session.size.width, H = b.options.session.size.height;
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>foveate bench: " << b.scene
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>foveate bench: "
+    << b.scene
     << "</title>\n<style>body{font-family:sans-serif;margin:24px;max-width:1400px;color:#222}"
-       "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #ccc;padding:4px 8px;text-align:right}"
-       "th{background:#f0f0f0}td:first-child{text-align:left}.crops{display:flex;flex-wrap:wrap;gap:16px}"
+       "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #ccc;padding:4px "
+       "8px;text-align:right}"
+       "th{background:#f0f0f0}td:first-child{text-align:left}.crops{display:flex;flex-wrap:wrap;"
+       "gap:16px}"
        ".crops figure{margin:0}.crops img{image-rendering:pixelated;border:1px solid #999}"
-       "figcaption{font-size:12px;color:#555}.note{color:#555;font-size:13px}</style></head><body>\n";
-  h << "<h1>foveate benchmark: " << b.scene << "</h1>\n<p class=note>" << W << "&times;" << H << " on "
-    << b.display.name << " geometry (field of view kept), renderer " << b.renderer << ", MAR slope "
-    << fmt(b.options.session.acuity.slope, 4) << ", gaze " << (b.options.gaze.empty() ? "centre" : b.options.gaze)
-    << ", " << b.options.frames << " measured frames after " << b.options.warmup
-    << " warm-up, techniques interleaved frame by frame. Speedup is the ratio of median frame times (95 % bootstrap "
+       "figcaption{font-size:12px;color:#555}.note{color:#555;font-size:13px}</style></"
+       "head><body>\n";
+  h << "<h1>foveate benchmark: " << b.scene << "</h1>\n<p class=note>" << W << "&times;" << H
+    << " on " << b.display.name << " geometry (field of view kept), renderer " << b.renderer
+    << ", MAR slope " << fmt(b.options.session.acuity.slope, 4) << ", gaze "
+    << (b.options.gaze.empty() ? "centre" : b.options.gaze) << ", " << b.options.frames
+    << " measured frames after " << b.options.warmup
+    << " warm-up, techniques interleaved frame by frame. Speedup is the ratio of median frame "
+       "times (95 % bootstrap "
        "interval); the pixel bound is native pixels / shaded pixels.</p>\n";
-  h << "<table id=\"results\"><tr><th>technique</th><th>median ms</th><th>p90 ms</th><th>speedup</th><th>95 % CI</th>"
-       "<th>shaded px</th><th>pixel ratio</th><th>share of bound</th><th>PSNR dB</th><th>SSIM</th><th>acuity RMSE</th>"
+  h << "<table id=\"results\"><tr><th>technique</th><th>median ms</th><th>p90 "
+       "ms</th><th>speedup</th><th>95 % CI</th>"
+       "<th>shaded px</th><th>pixel ratio</th><th>share of bound</th><th>PSNR "
+       "dB</th><th>SSIM</th><th>acuity RMSE</th>"
        "<th>flicker</th></tr>\n";
   for (const TechniqueResult& r : b.results) {
-    h << "<tr><td>" << label(b, r) << "</td><td>" << fmt(r.median_ms, 2) << "</td><td>" << fmt(r.p90_ms, 2)
-      << "</td><td>" << fmt(r.speedup, 2) << "x</td><td>" << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2)
-      << "</td><td>" << fmt(r.shaded_pixels, 0) << "</td><td>" << fmt(r.pixel_ratio, 3) << "</td><td>"
-      << fmt(100 * r.bound_share, 0) << " %</td><td>" << quality_cell(r.quality, "psnr_db", 2) << "</td><td>"
-      << quality_cell(r.quality, "ssim", 4) << "</td><td>" << quality_cell(r.quality, "acuity_rmse", 3) << "</td><td>"
+    h << "<tr><td>" << label(b, r) << "</td><td>" << fmt(r.median_ms, 2) << "</td><td>"
+      << fmt(r.p90_ms, 2) << "</td><td>" << fmt(r.speedup, 2) << "x</td><td>"
+      << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2) << "</td><td>"
+      << fmt(r.shaded_pixels, 0) << "</td><td>" << fmt(r.pixel_ratio, 3) << "</td><td>"
+      << fmt(100 * r.bound_share, 0) << " %</td><td>" << quality_cell(r.quality, "psnr_db", 2)
+      << "</td><td>" << quality_cell(r.quality, "ssim", 4) << "</td><td>"
+      << quality_cell(r.quality, "acuity_rmse", 3) << "</td><td>"
       << quality_cell(r.quality, "flicker_ratio", 2) << "</td></tr>\n";
   }
   h << "</table>\n<h2>Speed</h2>\n";
@@ -200,8 +221,9 @@ std::string html(const BenchResult& b) {
     speed.push_back(r.speedup);
     bound.push_back(1.0 / r.pixel_ratio);
     auto q = [&](const char* k) {
-      return r.quality.is_object() && r.quality.contains(k) && !r.quality[k].is_null() ? r.quality[k].get<double>()
-                                                                                       : std::nan("");
+      return r.quality.is_object() && r.quality.contains(k) && !r.quality[k].is_null()
+                 ? r.quality[k].get<double>()
+                 : std::nan("");
     };
     ssim.push_back(q("ssim"));
     acuity.push_back(q("acuity_rmse"));
@@ -212,7 +234,8 @@ std::string html(const BenchResult& b) {
     << "</div>\n<h2>Quality</h2>\n";
   if (b.options.quality) {
     h << "<div class=chart id=\"chart-quality\">"
-      << bar_chart(names, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity") << "</div>\n"
+      << bar_chart(names, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity")
+      << "</div>\n"
       << "<div class=chart id=\"chart-acuity\">"
       << bar_chart(names, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)", "",
                    "Error the eye can resolve")
@@ -236,23 +259,29 @@ std::string html(const BenchResult& b) {
       it->second.x.push_back(r.sweep_value);
       it->second.y.push_back(r.speedup);
       quality_series[r.technique].x.push_back(r.speedup);
-      quality_series[r.technique].y.push_back(
-          r.quality.is_object() && r.quality.contains("ssim") && !r.quality["ssim"].is_null() ? r.quality["ssim"].get<double>() : std::nan(""));
+      quality_series[r.technique].y.push_back(r.quality.is_object() && r.quality.contains("ssim") &&
+                                                      !r.quality["ssim"].is_null()
+                                                  ? r.quality["ssim"].get<double>()
+                                                  : std::nan(""));
     }
     std::vector<Series> s1, s2;
     for (auto& [k, v] : speed_series) s1.push_back(v);
     for (auto& [k, v] : quality_series) s2.push_back(v);
-    ChartOptions o1{"Speedup against " + b.options.sweep_key, b.options.sweep_key, "speedup over native", false};
-    ChartOptions o2{"Quality against speed (sweep of " + b.options.sweep_key + ")", "speedup over native", "SSIM", false};
-    h << "<h2>Sweep of " << b.options.sweep_key << "</h2>\n<div class=chart id=\"chart-sweep-speed\">"
-      << svg_line_chart(s1, o1) << "</div>\n<div class=chart id=\"chart-sweep-quality\">" << svg_line_chart(s2, o2)
+    ChartOptions o1{"Speedup against " + b.options.sweep_key, b.options.sweep_key,
+                    "speedup over native", false};
+    ChartOptions o2{"Quality against speed (sweep of " + b.options.sweep_key + ")",
+                    "speedup over native", "SSIM", false};
+    h << "<h2>Sweep of " << b.options.sweep_key
+      << "</h2>\n<div class=chart id=\"chart-sweep-speed\">" << svg_line_chart(s1, o1)
+      << "</div>\n<div class=chart id=\"chart-sweep-quality\">" << svg_line_chart(s2, o2)
       << "</div>\n";
   }
   // Crops: at the fovea and in the periphery (the screen corner farthest from the gaze).
   const int gx = static_cast<int>(b.sample_gaze_px.x), gy = static_cast<int>(b.sample_gaze_px.y);
   const int px = gx < W / 2 ? W - 1 : 0, py = gy < H / 2 ? H - 1 : 0;
   const int cs = std::max(16, std::min(W, H) / 4);
-  h << "<h2>Native and foveated, side by side</h2>\n<p class=note>Last measured frame; crops of " << cs << "&times;" << cs
+  h << "<h2>Native and foveated, side by side</h2>\n<p class=note>Last measured frame; crops of "
+    << cs << "&times;" << cs
     << " pixels at the gaze and in the farthest corner, shown at 2&times;.</p>\n<div class=crops>";
   auto figure = [&](const Image& img, const std::string& name) {
     h << "<figure>" << img_tag(crop(img, gx, gy, cs), name + " fovea", 2 * cs) << " "
@@ -263,33 +292,39 @@ std::string html(const BenchResult& b) {
   for (const TechniqueResult& r : b.results) {
     if (r.technique != "native") figure(r.sample, label(b, r));
   }
-  h << "</div>\n<h2>Error heat maps</h2>\n<p class=note>Left: absolute difference to native (black = none, white = "
-       "64/255 or more). Right: the difference after both images are low-pass filtered to what the eye resolves at "
+  h << "</div>\n<h2>Error heat maps</h2>\n<p class=note>Left: absolute difference to native (black "
+       "= none, white = "
+       "64/255 or more). Right: the difference after both images are low-pass filtered to what the "
+       "eye resolves at "
        "each eccentricity.</p>\n<div class=crops>";
   for (const TechniqueResult& r : b.results) {
     if (r.technique == "native" || r.heatmap.empty()) continue;
     h << "<figure>" << img_tag(r.heatmap, label(b, r) + " error", std::min(W, 480)) << " "
-      << img_tag(r.acuity_heatmap, label(b, r) + " acuity error", std::min(W, 480)) << "<figcaption>" << label(b, r)
-      << "</figcaption></figure>\n";
+      << img_tag(r.acuity_heatmap, label(b, r) + " acuity error", std::min(W, 480))
+      << "<figcaption>" << label(b, r) << "</figcaption></figure>\n";
   }
   h << "</div>\n<h2>Full frames</h2>\n<div class=crops>";
-  h << "<figure>" << img_tag(b.native_sample, "native frame", std::min(W, 640)) << "<figcaption>native</figcaption></figure>";
+  h << "<figure>" << img_tag(b.native_sample, "native frame", std::min(W, 640))
+    << "<figcaption>native</figcaption></figure>";
   for (const TechniqueResult& r : b.results) {
     if (r.technique != "native") {
-      h << "<figure>" << img_tag(r.sample, label(b, r) + " frame", std::min(W, 640)) << "<figcaption>" << label(b, r)
-        << "</figcaption></figure>";
+      h << "<figure>" << img_tag(r.sample, label(b, r) + " frame", std::min(W, 640))
+        << "<figcaption>" << label(b, r) << "</figcaption></figure>";
     }
   }
   h << "</div>\n<h2>Raw results</h2>\n<pre id=\"raw\">" << j.dump(2).substr(0, 20000) << "</pre>\n";
   // A self-check a browser runs on load (used by the tests, harmless otherwise):
   // how many images decoded, how many charts drew, and any script errors.
-  h << "<script>\nvar foveateErrors = 0;\nwindow.addEventListener('error', function () { foveateErrors++; });\n"
+  h << "<script>\nvar foveateErrors = 0;\nwindow.addEventListener('error', function () { "
+       "foveateErrors++; });\n"
        "window.addEventListener('load', function () {\n"
        "  var imgs = Array.prototype.slice.call(document.images);\n"
-       "  var broken = imgs.filter(function (i) { return !i.complete || i.naturalWidth === 0; }).length;\n"
+       "  var broken = imgs.filter(function (i) { return !i.complete || i.naturalWidth === 0; "
+       "}).length;\n"
        "  var charts = document.querySelectorAll('.chart svg').length;\n"
        "  var bars = document.querySelectorAll('.chart svg rect.bar').length;\n"
-       "  document.body.setAttribute('data-selfcheck', JSON.stringify({images: imgs.length, broken: broken, "
+       "  document.body.setAttribute('data-selfcheck', JSON.stringify({images: imgs.length, "
+       "broken: broken, "
        "charts: charts, bars: bars, errors: foveateErrors}));\n"
        "});\n</script>\n</body></html>\n";
   return h.str();
@@ -299,14 +334,16 @@ std::string html(const BenchResult& b) {
 
 std::string bench_markdown(const BenchResult& b) {
   std::ostringstream s;
-  s << "| technique | median ms | p90 ms | speedup (95 % CI) | shaded px | pixel ratio | share of bound | PSNR dB | SSIM | acuity RMSE | flicker |\n"
+  s << "| technique | median ms | p90 ms | speedup (95 % CI) | shaded px | pixel ratio | share of "
+       "bound | PSNR dB | SSIM | acuity RMSE | flicker |\n"
     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const TechniqueResult& r : b.results) {
     s << "| " << label(b, r) << " | " << fmt(r.median_ms, 2) << " | " << fmt(r.p90_ms, 2) << " | "
       << fmt(r.speedup, 2) << "x (" << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2) << ") | "
-      << fmt(r.shaded_pixels, 0) << " | " << fmt(r.pixel_ratio, 3) << " | " << fmt(100 * r.bound_share, 0) << " % | "
-      << quality_cell(r.quality, "psnr_db", 2) << " | " << quality_cell(r.quality, "ssim", 4) << " | "
-      << quality_cell(r.quality, "acuity_rmse", 3) << " | " << quality_cell(r.quality, "flicker_ratio", 2) << " |\n";
+      << fmt(r.shaded_pixels, 0) << " | " << fmt(r.pixel_ratio, 3) << " | "
+      << fmt(100 * r.bound_share, 0) << " % | " << quality_cell(r.quality, "psnr_db", 2) << " | "
+      << quality_cell(r.quality, "ssim", 4) << " | " << quality_cell(r.quality, "acuity_rmse", 3)
+      << " | " << quality_cell(r.quality, "flicker_ratio", 2) << " |\n";
   }
   return s.str();
 }

@@ -43,7 +43,8 @@ void validate_params(const ParamArgs& p, const std::vector<std::string>& techs) 
       for (const ParamSpec& s : technique_info(t).params) known = known || s.key == key;
     }
     if (!known) {
-      throw Error("--param " + key + ": no such parameter in " + names + " (see 'foveate techniques')");
+      throw Error("--param " + key + ": no such parameter in " + names +
+                  " (see 'foveate techniques')");
     }
   }
 }
@@ -91,7 +92,8 @@ Session::Session(const SessionOptions& o) : options_(o) {
   fbo_.check("output");
 }
 
-std::unique_ptr<Technique> Session::make(const std::string& technique, const ParamArgs& params) const {
+std::unique_ptr<Technique> Session::make(const std::string& technique,
+                                         const ParamArgs& params) const {
   TechniqueConfig c;
   c.display = display_;
   c.acuity = options_.acuity;

@@ -31,7 +31,7 @@ struct SessionOptions {
   Size size{640, 360};
   std::string display = "desktop-1080p";
   AcuityModel acuity;
-  double fps = 60.0;   ///< the fixed clock: frame k is at time start + k / fps
+  double fps = 60.0;  ///< the fixed clock: frame k is at time start + k / fps
   double start_time = 0.0;
   Vec2d mouse_px{0, 0};
   bool mouse_down = false;

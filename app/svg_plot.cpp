@@ -12,11 +12,20 @@ std::string escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -82,8 +91,8 @@ std::string svg_line_chart(const std::vector<Series>& series, const ChartOptions
   s << "<text x=\"" << o.width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
     << escape(o.title) << "</text>\n";
   for (double t : ticks(x0, x1, 8)) {
-    s << "<line x1=\"" << px(t) << "\" y1=\"" << top << "\" x2=\"" << px(t) << "\" y2=\"" << top + ph
-      << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << px(t) << "\" y=\"" << top + ph + 16
+    s << "<line x1=\"" << px(t) << "\" y1=\"" << top << "\" x2=\"" << px(t) << "\" y2=\""
+      << top + ph << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << px(t) << "\" y=\"" << top + ph + 16
       << "\" text-anchor=\"middle\">" << num(t) << "</text>\n";
   }
   std::vector<double> yt;
@@ -101,13 +110,14 @@ std::string svg_line_chart(const std::vector<Series>& series, const ChartOptions
     << "\" fill=\"none\" stroke=\"#444\"/>\n";
   s << "<text x=\"" << left + pw / 2 << "\" y=\"" << o.height - 12 << "\" text-anchor=\"middle\">"
     << escape(o.x_label) << "</text>\n";
-  s << "<text transform=\"translate(16," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
-    << escape(o.y_label) << "</text>\n";
+  s << "<text transform=\"translate(16," << top + ph / 2
+    << ") rotate(-90)\" text-anchor=\"middle\">" << escape(o.y_label) << "</text>\n";
   int row = 0;
   for (const Series& se : series) {
     std::ostringstream pts;
     for (size_t i = 0; i < se.x.size() && i < se.y.size(); ++i) {
-      if (std::isfinite(se.x[i]) && std::isfinite(se.y[i])) pts << px(se.x[i]) << ',' << py(se.y[i]) << ' ';
+      if (std::isfinite(se.x[i]) && std::isfinite(se.y[i]))
+        pts << px(se.x[i]) << ',' << py(se.y[i]) << ' ';
     }
     s << "<polyline fill=\"none\" stroke=\"" << se.color << "\" stroke-width=\"2\""
       << (se.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"" << pts.str() << "\"/>\n";

@@ -129,7 +129,9 @@ Display Display::from_json(const nlohmann::json& j, const std::string& where) {
   if (!j.contains("width_px")) throw Error(r.path("width_px") + ": required");
   if (!j.contains("height_px")) throw Error(r.path("height_px") + ": required");
   if (has_fov && (has_w || has_v)) {
-    throw Error(where + ": give either fov_h_deg (head-mounted) or width_mm and distance_mm (flat), not both");
+    throw Error(
+        where +
+        ": give either fov_h_deg (head-mounted) or width_mm and distance_mm (flat), not both");
   }
   if (!has_fov) {
     if (!has_w) throw Error(r.path("width_mm") + ": required for a flat display");
@@ -147,7 +149,8 @@ Display Display::load(const std::string& name_or_path) {
   if (!std::filesystem::exists(name_or_path, ec)) {
     std::string names;
     for (const Display& d : presets()) names += (names.empty() ? "" : ", ") + d.name;
-    throw Error("display '" + name_or_path + "': not a preset (" + names + ") nor an existing file");
+    throw Error("display '" + name_or_path + "': not a preset (" + names +
+                ") nor an existing file");
   }
   Display d = from_json(read_json_file(name_or_path), name_or_path);
   if (d.name.empty()) d.name = std::filesystem::path(name_or_path).stem().string();

@@ -14,9 +14,8 @@ Image read_image(const std::string& path) {
   const std::string bytes = read_file(path);
   if (bytes.empty()) throw Error(path + ": the file is empty");
   int w = 0, h = 0, n = 0;
-  unsigned char* data =
-      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
-                            &w, &h, &n, 4);
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                              static_cast<int>(bytes.size()), &w, &h, &n, 4);
   if (!data) throw Error(path + ": not a readable image (" + stbi_failure_reason() + ")");
   Image img(w, h);
   std::memcpy(img.rgba.data(), data, img.rgba.size());
@@ -40,6 +39,8 @@ std::string encode_png(const Image& image) {
   return out;
 }
 
-void write_png(const std::string& path, const Image& image) { write_file_atomic(path, encode_png(image)); }
+void write_png(const std::string& path, const Image& image) {
+  write_file_atomic(path, encode_png(image));
+}
 
 }  // namespace foveate

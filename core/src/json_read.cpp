@@ -33,8 +33,8 @@ bool JsonReader::number(const char* key, double& out, double min, double max) {
   double x = v->get<double>();
   if (!std::isfinite(x)) throw Error(path(key) + ": must be finite");
   if (x < min || x > max) {
-    throw Error(path(key) + ": " + std::to_string(x) + " is out of range [" +
-                std::to_string(min) + ", " + std::to_string(max) + "]");
+    throw Error(path(key) + ": " + std::to_string(x) + " is out of range [" + std::to_string(min) +
+                ", " + std::to_string(max) + "]");
   }
   out = x;
   return true;
@@ -49,8 +49,8 @@ bool JsonReader::integer(const char* key, int& out, int min, int max) {
   }
   long long x = v->get<long long>();
   if (x < min || x > max) {
-    throw Error(path(key) + ": " + std::to_string(x) + " is out of range [" +
-                std::to_string(min) + ", " + std::to_string(max) + "]");
+    throw Error(path(key) + ": " + std::to_string(x) + " is out of range [" + std::to_string(min) +
+                ", " + std::to_string(max) + "]");
   }
   out = static_cast<int>(x);
   return true;

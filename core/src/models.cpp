@@ -24,8 +24,9 @@ void require(bool ok, const std::string& what) {
 void LatencyAwareFovea::validate() const {
   require(std::isfinite(latency_ms) && latency_ms >= 0.0 && latency_ms <= 1000.0,
           "latency_ms: expected 0..1000 ms, got " + std::to_string(latency_ms));
-  require(std::isfinite(saccade_deg_per_s) && saccade_deg_per_s >= 0.0 && saccade_deg_per_s <= 1000.0,
-          "saccade_deg_per_s: expected 0..1000, got " + std::to_string(saccade_deg_per_s));
+  require(
+      std::isfinite(saccade_deg_per_s) && saccade_deg_per_s >= 0.0 && saccade_deg_per_s <= 1000.0,
+      "saccade_deg_per_s: expected 0..1000, got " + std::to_string(saccade_deg_per_s));
   require(std::isfinite(fovea_deg) && fovea_deg > 0.0 && fovea_deg < 90.0,
           "fovea_deg: expected (0, 90), got " + std::to_string(fovea_deg));
   require(std::isfinite(blend_border_px) && blend_border_px >= 0.0,

@@ -16,7 +16,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Continuous geometry of one plan, shared by the optimiser and the report.
 struct Geometry {
-  double focal = 0.0;   // V* D* / W* in pixels
+  double focal = 0.0;  // V* D* / W* in pixels
   double long_axis = 0.0;
   double aspect = 1.0;
   double sharp = 0.0;   // w*
@@ -96,7 +96,8 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
     std::vector<std::vector<double>> cost(m);
     std::vector<std::vector<int>> from(m);
     cost[0].resize(cand[0].size());
-    for (size_t k = 0; k < cand[0].size(); ++k) cost[0][k] = w[0] * inner_pixels(g, cand[0][k], 1.0);
+    for (size_t k = 0; k < cand[0].size(); ++k)
+      cost[0][k] = w[0] * inner_pixels(g, cand[0][k], 1.0);
     for (int i = 1; i < m; ++i) {
       cost[i].assign(cand[i].size(), kInf);
       from[i].assign(cand[i].size(), -1);
@@ -123,7 +124,9 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
         arg = static_cast<int>(j);
       }
     }
-    if (arg < 0) throw Error("layers: the display is too small for " + std::to_string(n) + " layers at this grid step");
+    if (arg < 0)
+      throw Error("layers: the display is too small for " + std::to_string(n) +
+                  " layers at this grid step");
     radii.assign(m, 0.0);
     for (int i = m - 1; i >= 0; --i) {
       radii[i] = cand[i][arg];

@@ -4,8 +4,8 @@
 #include "foveate/core/planner.hpp"
 
 int main() {
-  const foveate::LayerPlan plan =
-      foveate::plan_layers(foveate::Display::load("desktop-1080p"), foveate::AcuityModel::quality("A"));
+  const foveate::LayerPlan plan = foveate::plan_layers(foveate::Display::load("desktop-1080p"),
+                                                       foveate::AcuityModel::quality("A"));
   for (const foveate::Layer& layer : plan.layers) {
     std::printf("layer: %.2f deg, s = %.2f, %dx%d\n", layer.radius_deg, layer.sampling_factor,
                 layer.width_px, layer.height_px);

@@ -15,7 +15,9 @@ namespace {
 // An "expensive" procedural pattern: rings around the screen centre.
 class RingsScene final : public foveate::Scene {
  public:
-  foveate::SceneInfo info() const override { return {"rings", "example user scene", false, false, 0}; }
+  foveate::SceneInfo info() const override {
+    return {"rings", "example user scene", false, false, 0};
+  }
   std::string shade_key() const override { return "example:rings"; }
   std::vector<foveate::gpu::StageSource::Piece> shade_source() const override {
     return {{"rings.glsl", R"(
@@ -61,10 +63,12 @@ int main(int argc, char** argv) {
     frame.height = h;
     frame.time_s = 1.0;
     scene.update(frame);
-    const foveate::FrameStats stats = t->render(scene, frame, foveate::GazeState{{200, 150}}, fbo.id());
+    const foveate::FrameStats stats =
+        t->render(scene, frame, foveate::GazeState{{200, 150}}, fbo.id());
     foveate::write_png(out, foveate::gpu::read_texture(color));
-    std::printf("%s: shaded %.0f of %.0f pixels (%.1f %%), wrote %s\n", technique.c_str(), stats.shaded_pixels,
-                stats.native_pixels, 100.0 * stats.shaded_pixels / stats.native_pixels, out.c_str());
+    std::printf("%s: shaded %.0f of %.0f pixels (%.1f %%), wrote %s\n", technique.c_str(),
+                stats.shaded_pixels, stats.native_pixels,
+                100.0 * stats.shaded_pixels / stats.native_pixels, out.c_str());
     return stats.shaded_pixels > 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "own_renderer: %s\n", e.what());

@@ -21,8 +21,8 @@ std::string Context::version() const {
 
 std::vector<DebugMessage> Context::take_debug_errors() { return std::exchange(errors_, {}); }
 
-void Context::debug_callback(unsigned source, unsigned type, unsigned, unsigned severity, int length,
-                             const char* message, const void* user) {
+void Context::debug_callback(unsigned source, unsigned type, unsigned, unsigned severity,
+                             int length, const char* message, const void* user) {
   auto* self = const_cast<Context*>(static_cast<const Context*>(user));
   if (type != GL_DEBUG_TYPE_ERROR && type != GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR) return;
   // Shader compile errors are reported (with file and line) by ShaderCompiler.

@@ -57,9 +57,16 @@ std::unique_ptr<EglContext> try_display(EGLDisplay dpy, bool pbuffer, const std:
     eglTerminate(dpy);
     return nullptr;
   }
-  const EGLint config_attrs[] = {EGL_SURFACE_TYPE, pbuffer ? EGL_PBUFFER_BIT : 0,
-                                 EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                 EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
+  const EGLint config_attrs[] = {EGL_SURFACE_TYPE,
+                                 pbuffer ? EGL_PBUFFER_BIT : 0,
+                                 EGL_RENDERABLE_TYPE,
+                                 EGL_OPENGL_BIT,
+                                 EGL_RED_SIZE,
+                                 8,
+                                 EGL_GREEN_SIZE,
+                                 8,
+                                 EGL_BLUE_SIZE,
+                                 8,
                                  EGL_NONE};
   EGLConfig config = nullptr;
   EGLint count = 0;
@@ -68,10 +75,14 @@ std::unique_ptr<EglContext> try_display(EGLDisplay dpy, bool pbuffer, const std:
     eglTerminate(dpy);
     return nullptr;
   }
-  const EGLint ctx_attrs[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
-                              EGL_CONTEXT_MINOR_VERSION, 5,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                              EGL_CONTEXT_OPENGL_DEBUG, o.debug ? EGL_TRUE : EGL_FALSE,
+  const EGLint ctx_attrs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                              4,
+                              EGL_CONTEXT_MINOR_VERSION,
+                              5,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                              EGL_CONTEXT_OPENGL_DEBUG,
+                              o.debug ? EGL_TRUE : EGL_FALSE,
                               EGL_NONE};
   EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctx_attrs);
   if (ctx == EGL_NO_CONTEXT) {
@@ -101,7 +112,8 @@ std::unique_ptr<EglContext> try_display(EGLDisplay dpy, bool pbuffer, const std:
 std::unique_ptr<Context> create_headless_context(const ContextOptions& options) {
   std::string why;
   if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-    EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay d =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (auto c = try_display(d, false, "egl-surfaceless", options, why)) return c;
   } else {
     why += "egl-surfaceless: EGL_MESA_platform_surfaceless missing; ";

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace foveate::gpu {
@@ -77,7 +77,8 @@ void FrameTimer::start() {
 double FrameTimer::stop() {
   if (use_query_) glEndQuery(GL_TIME_ELAPSED);
   glFinish();
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
   if (use_query_) {
     GLuint64 ns = 0;
     glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &ns);

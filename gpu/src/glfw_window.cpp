@@ -16,7 +16,8 @@ class GlfwWindow final : public Window {
   explicit GlfwWindow(GLFWwindow* w) : window_(w) {
     glfwSetWindowUserPointer(w, this);
     glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
-      if (action == GLFW_PRESS) static_cast<GlfwWindow*>(glfwGetWindowUserPointer(win))->keys_.push_back(key);
+      if (action == GLFW_PRESS)
+        static_cast<GlfwWindow*>(glfwGetWindowUserPointer(win))->keys_.push_back(key);
     });
   }
   ~GlfwWindow() override {
@@ -79,7 +80,8 @@ std::unique_ptr<Window> create_window(int width, int height, const std::string& 
     const char* desc = nullptr;
     glfwGetError(&desc);
     glfwTerminate();
-    throw Error(std::string("cannot create an OpenGL 4.5 core window: ") + (desc ? desc : "unknown"));
+    throw Error(std::string("cannot create an OpenGL 4.5 core window: ") +
+                (desc ? desc : "unknown"));
   }
   auto win = std::make_unique<GlfwWindow>(w);
   win->make_current();

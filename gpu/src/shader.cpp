@@ -19,7 +19,9 @@ GLint Program::uniform(const char* name) const {
 
 void Program::set(const char* n, float v) const { glProgramUniform1f(id(), uniform(n), v); }
 void Program::set(const char* n, int v) const { glProgramUniform1i(id(), uniform(n), v); }
-void Program::set(const char* n, float x, float y) const { glProgramUniform2f(id(), uniform(n), x, y); }
+void Program::set(const char* n, float x, float y) const {
+  glProgramUniform2f(id(), uniform(n), x, y);
+}
 void Program::set(const char* n, float x, float y, float z) const {
   glProgramUniform3f(id(), uniform(n), x, y, z);
 }
@@ -88,11 +90,16 @@ class Assembler {
 
 const char* stage_name(GLenum s) {
   switch (s) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_COMPUTE_SHADER: return "compute";
-    case GL_GEOMETRY_SHADER: return "geometry";
-    default: return "shader";
+    case GL_VERTEX_SHADER:
+      return "vertex";
+    case GL_FRAGMENT_SHADER:
+      return "fragment";
+    case GL_COMPUTE_SHADER:
+      return "compute";
+    case GL_GEOMETRY_SHADER:
+      return "geometry";
+    default:
+      return "shader";
   }
 }
 
@@ -122,7 +129,8 @@ std::string map_info_log(const std::string& log, const std::vector<std::string>&
   return out.str();
 }
 
-Program ShaderCompiler::build(const std::vector<StageSource>& stages, const std::string& what) const {
+Program ShaderCompiler::build(const std::vector<StageSource>& stages,
+                              const std::string& what) const {
   std::vector<Handle<detail::delete_shader>> shaders;
   GLuint program = glCreateProgram();
   Program p(program);

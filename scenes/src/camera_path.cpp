@@ -81,15 +81,19 @@ CameraPath CameraPath::from_json(const nlohmann::json& j, const std::string& whe
   return path;
 }
 
-CameraPath CameraPath::load(const std::string& file) { return from_json(read_json_file(file), file); }
+CameraPath CameraPath::load(const std::string& file) {
+  return from_json(read_json_file(file), file);
+}
 
-CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double period, double fov) {
+CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double period,
+                             double fov) {
   CameraPath p;
   p.loop = true;
   const int n = 8;
   for (int i = 0; i <= n; ++i) {
     const double a = 2.0 * std::numbers::pi * i / n;
-    p.keys.push_back({period * i / n, c + glm::dvec3(radius * std::sin(a), height, radius * std::cos(a)), c, fov});
+    p.keys.push_back({period * i / n,
+                      c + glm::dvec3(radius * std::sin(a), height, radius * std::cos(a)), c, fov});
   }
   return p;
 }

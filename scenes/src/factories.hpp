@@ -9,7 +9,8 @@ namespace foveate::detail {
 
 /// A Shadertoy-style shader: a user file, or a built-in by name.
 std::unique_ptr<Scene> make_shadertoy_file(const std::string& path, const SceneOptions& options);
-std::unique_ptr<Scene> make_builtin_shader_scene(const std::string& name, const SceneOptions& options);
+std::unique_ptr<Scene> make_builtin_shader_scene(const std::string& name,
+                                                 const SceneOptions& options);
 bool is_builtin_shader_scene(const std::string& name);
 
 }  // namespace foveate::detail

@@ -33,9 +33,12 @@ std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOp
                 ") nor an existing file");
   }
   std::string ext = fs::path(name_or_path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".glsl" || ext == ".frag" || ext == ".fs") return detail::make_shadertoy_file(name_or_path, options);
-  throw Error(name_or_path + ": unsupported scene file type '" + ext + "' (expected .glsl/.frag Shadertoy shaders)");
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".glsl" || ext == ".frag" || ext == ".fs")
+    return detail::make_shadertoy_file(name_or_path, options);
+  throw Error(name_or_path + ": unsupported scene file type '" + ext +
+              "' (expected .glsl/.frag Shadertoy shaders)");
 }
 
 }  // namespace foveate

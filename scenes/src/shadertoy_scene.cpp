@@ -31,10 +31,14 @@ struct Builtin {
 
 const Builtin kBuiltins[] = {
     {"raymarch", "raymarch.glsl",
-     "expensive ray-marched scene: soft shadows, occlusion, reflections (about 2 s per 1080p frame on llvmpipe)",
-     [] { return CameraPath::orbit({0.0, 1.0, 0.0}, 7.0, 1.8, 40.0, 55.0); }},
+     "expensive ray-marched scene: soft shadows, occlusion, reflections (about 2 s per 1080p frame "
+     "on llvmpipe)",
+     [] {
+       return CameraPath::orbit({0.0, 1.0, 0.0}, 7.0, 1.8, 40.0, 55.0);
+     }},
     {"detail", "detail.glsl",
-     "fine high-contrast detail everywhere (checkers to the horizon, a zone plate): the aliasing worst case",
+     "fine high-contrast detail everywhere (checkers to the horizon, a zone plate): the aliasing "
+     "worst case",
      [] {
        CameraPath p;
        p.loop = true;
@@ -44,8 +48,11 @@ const Builtin kBuiltins[] = {
                  {30.0, {0, 1.6, 0}, {0, 1.0, -6}, 60.0}};
        return p;
      }},
-    {"cheap", "cheap.glsl", "cheap smooth scene: a sky gradient and soft discs (a few ms per frame)",
-     [] { return CameraPath::orbit({0.0, 0.0, 0.0}, 6.0, 2.5, 30.0, 55.0); }},
+    {"cheap", "cheap.glsl",
+     "cheap smooth scene: a sky gradient and soft discs (a few ms per frame)",
+     [] {
+       return CameraPath::orbit({0.0, 0.0, 0.0}, 6.0, 2.5, 30.0, 55.0);
+     }},
 };
 
 class ShadertoyScene final : public Scene {
@@ -63,7 +70,8 @@ class ShadertoyScene final : public Scene {
     Image black(1, 1);
     black.rgba = {0, 0, 0, 255};
     for (int i = 0; i < 4; ++i) {
-      const Image& img = i < static_cast<int>(channels.size()) && !channels[i].empty() ? channels[i] : black;
+      const Image& img =
+          i < static_cast<int>(channels.size()) && !channels[i].empty() ? channels[i] : black;
       channel_size_[i][0] = static_cast<float>(img.width);
       channel_size_[i][1] = static_cast<float>(img.height);
       channels_[i] = gpu::upload_image(img);
@@ -97,12 +105,17 @@ class ShadertoyScene final : public Scene {
       channels_[i].bind(static_cast<GLuint>(i));
       p.set(names[i], i);
     }
-    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[0]"), channel_size_[0][0], channel_size_[0][1], 1.0f);
-    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[1]"), channel_size_[1][0], channel_size_[1][1], 1.0f);
-    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[2]"), channel_size_[2][0], channel_size_[2][1], 1.0f);
-    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[3]"), channel_size_[3][0], channel_size_[3][1], 1.0f);
+    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[0]"), channel_size_[0][0],
+                       channel_size_[0][1], 1.0f);
+    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[1]"), channel_size_[1][0],
+                       channel_size_[1][1], 1.0f);
+    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[2]"), channel_size_[2][0],
+                       channel_size_[2][1], 1.0f);
+    glProgramUniform3f(p.id(), p.uniform("iChannelResolution[3]"), channel_size_[3][0],
+                       channel_size_[3][1], 1.0f);
     const CameraPose pose = camera_.at(f.time_s);
-    p.set("foveate_cam_pos", float(pose.position.x), float(pose.position.y), float(pose.position.z));
+    p.set("foveate_cam_pos", float(pose.position.x), float(pose.position.y),
+          float(pose.position.z));
     p.set("foveate_cam_target", float(pose.target.x), float(pose.target.y), float(pose.target.z));
     p.set("foveate_cam_fov", float(pose.fov_deg));
   }
@@ -163,9 +176,9 @@ std::unique_ptr<Scene> make_builtin_shader_scene(const std::string& name, const 
     if (name != b.name) continue;
     gpu::ShaderCompiler c({embedded::scenes_shaders()});
     CameraPath cam = o.camera_path.empty() ? b.camera() : CameraPath::load(o.camera_path);
-    auto scene = std::make_unique<ShadertoyScene>(b.name, b.description, b.file,
-                                                  std::string(c.file(b.file)), std::string("builtin:") + b.name,
-                                                  std::move(cam), load_channels("", o));
+    auto scene = std::make_unique<ShadertoyScene>(
+        b.name, b.description, b.file, std::string(c.file(b.file)),
+        std::string("builtin:") + b.name, std::move(cam), load_channels("", o));
     validate(*scene);
     return scene;
   }
@@ -174,21 +187,26 @@ std::unique_ptr<Scene> make_builtin_shader_scene(const std::string& name, const 
 
 std::unique_ptr<Scene> make_shadertoy_file(const std::string& path, const SceneOptions& o) {
   std::string text = read_file(path);
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(path + ": the shader file is empty");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw Error(path + ": the shader file is empty");
   if (text.find('\0') != std::string::npos) throw Error(path + ": not a text file");
-  static const std::regex main_image(R"(void\s+mainImage\s*\(\s*out\s+vec4\s+\w+\s*,\s*(in\s+)?vec2\s+\w+\s*\))");
+  static const std::regex main_image(
+      R"(void\s+mainImage\s*\(\s*out\s+vec4\s+\w+\s*,\s*(in\s+)?vec2\s+\w+\s*\))");
   if (!std::regex_search(text, main_image)) {
-    throw Error(path + ": no Shadertoy entry point: expected 'void mainImage(out vec4 fragColor, in vec2 fragCoord)'");
+    throw Error(path +
+                ": no Shadertoy entry point: expected 'void mainImage(out vec4 fragColor, in vec2 "
+                "fragCoord)'");
   }
   if (std::regex_search(text, std::regex(R"(\bvoid\s+main\s*\(\s*\))"))) {
     throw Error(path + ": defines main(); a Shadertoy shader defines only mainImage()");
   }
-  CameraPath cam = o.camera_path.empty() ? CameraPath::orbit({0, 0, 0}, 5, 1, 30) : CameraPath::load(o.camera_path);
+  CameraPath cam = o.camera_path.empty() ? CameraPath::orbit({0, 0, 0}, 5, 1, 30)
+                                         : CameraPath::load(o.camera_path);
   const std::string stem = fs::path(path).filename().string();
-  auto scene = std::make_unique<ShadertoyScene>(stem, "Shadertoy shader " + path, path, text,
-                                                "file:" + fs::absolute(path).string() + ":" +
-                                                    std::to_string(std::hash<std::string>{}(text)),
-                                                std::move(cam), load_channels(path, o));
+  auto scene = std::make_unique<ShadertoyScene>(
+      stem, "Shadertoy shader " + path, path, text,
+      "file:" + fs::absolute(path).string() + ":" + std::to_string(std::hash<std::string>{}(text)),
+      std::move(cam), load_channels(path, o));
   validate(*scene);
   return scene;
 }

@@ -24,8 +24,9 @@ CheckerParams derive(const TechniqueConfig& c, Params& p) {
   o.block = static_cast<int>(p.get("block", 4));
   o.fractions = p.get("fractions", 0) != 0.0;
   const CheckerboardPattern pat =
-      o.fractions ? CheckerboardPattern::from_fractions(o.block, c.display.width_px, c.display.height_px)
-                  : CheckerboardPattern::from_acuity(o.block, c.display, c.acuity);
+      o.fractions
+          ? CheckerboardPattern::from_fractions(o.block, c.display.width_px, c.display.height_px)
+          : CheckerboardPattern::from_acuity(o.block, c.display, c.acuity);
   o.thresholds_px[0] = p.get("r1", pat.thresholds_px[0]);
   o.thresholds_px[1] = p.get("r2", std::max(pat.thresholds_px[1], o.thresholds_px[0]));
   o.thresholds_px[2] = p.get("r3", std::max(pat.thresholds_px[2], o.thresholds_px[1]));
@@ -51,13 +52,15 @@ class Checkerboard final : public Technique {
     std::array<double, 3> t = opt_.thresholds_px;
     const double extra = latency_margin_deg(g);
     for (double& x : t) {
-      const double e = std::atan(x / display_.focal_px()) * 180.0 / 3.14159265358979 * g.fovea_scale + extra;
+      const double e =
+          std::atan(x / display_.focal_px()) * 180.0 / 3.14159265358979 * g.fovea_scale + extra;
       if (g.fovea_scale != 1.0 || extra > 0.0) x = display_.radius_px_at(e);
     }
     return t;
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze, GLuint target) override {
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
+                    GLuint target) override {
     const int W = frame.width, H = frame.height;
     // The pattern is defined in top-left pixel coordinates (CheckerboardPattern);
     // the shaders flip gl_FragCoord to match.
@@ -81,7 +84,8 @@ class Checkerboard final : public Technique {
     // 2. Shading where the stencil says so: dropped quads never reach the shader.
     glStencilFunc(GL_EQUAL, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const double shaded = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
+    const double shaded = kit_.shade(
+        scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
     glDisable(GL_STENCIL_TEST);
     // 3. Reconstruction into the target.
     const gpu::Program& rec = kit_.fullscreen("checkerboard/reconstruct.frag");
@@ -103,15 +107,17 @@ class Checkerboard final : public Technique {
     const float colours[3][3] = {{1, 0.1f, 0.1f}, {0.1f, 0.9f, 0.2f}, {0.2f, 0.4f, 1}};
     std::vector<OverlayShape> out;
     for (int k = 0; k < 3; ++k) {
-      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, t[static_cast<size_t>(k)], 0,
-                     colours[k][0], colours[k][1], colours[k][2]});
+      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y,
+                     t[static_cast<size_t>(k)], 0, colours[k][0], colours[k][1], colours[k][2]});
     }
-    out.push_back({OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f});
+    out.push_back(
+        {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f});
     return out;
   }
 
  private:
-  void set_pattern(const gpu::Program& p, const GazeState& g, const std::array<double, 3>& t, int H) const {
+  void set_pattern(const gpu::Program& p, const GazeState& g, const std::array<double, 3>& t,
+                   int H) const {
     p.set("u_block", opt_.block);
     p.set("u_gaze", float(g.gaze_px.x), float(g.gaze_px.y));
     p.set("u_thresholds", float(t[0]), float(t[1]), float(t[2]));
@@ -135,16 +141,20 @@ std::vector<std::pair<std::string, double>> checkerboard_defaults(const Techniqu
 }
 
 TechniqueInfo checkerboard_info() {
-  return {"checkerboard",
-          "Mask-based pixel dropping: four regions drop 0-3 of every 4 quads (stencil-rejected), "
-          "then a reconstruction pass fills them.",
-          "Silvera, OpenGL Foveated Rendering, 2022 (after Wei's mask-based foveated rendering)",
-          {{"block", "quad size n in pixels (tiles are 2n x 2n); 4 matches llvmpipe's 4x4 rejection", 1, 256, true},
-           {"fractions", "1 = Silvera's fixed thresholds (10/25/40 % of the diagonal) instead of the acuity model", 0, 1, true},
-           {"r1", "radius (px) where region 1 (drop 1 of 4) begins", 0, 1e6, false},
-           {"r2", "radius (px) where region 2 (drop 2 of 4) begins", 0, 1e6, false},
-           {"r3", "radius (px) where region 3 (drop 3 of 4) begins", 0, 1e6, false}},
-          [](const TechniqueConfig& c) { return std::make_unique<Checkerboard>(c); }};
+  return {
+      "checkerboard",
+      "Mask-based pixel dropping: four regions drop 0-3 of every 4 quads (stencil-rejected), "
+      "then a reconstruction pass fills them.",
+      "Silvera, OpenGL Foveated Rendering, 2022 (after Wei's mask-based foveated rendering)",
+      {{"block", "quad size n in pixels (tiles are 2n x 2n); 4 matches llvmpipe's 4x4 rejection", 1,
+        256, true},
+       {"fractions",
+        "1 = Silvera's fixed thresholds (10/25/40 % of the diagonal) instead of the acuity model",
+        0, 1, true},
+       {"r1", "radius (px) where region 1 (drop 1 of 4) begins", 0, 1e6, false},
+       {"r2", "radius (px) where region 2 (drop 2 of 4) begins", 0, 1e6, false},
+       {"r3", "radius (px) where region 3 (drop 3 of 4) begins", 0, 1e6, false}},
+      [](const TechniqueConfig& c) { return std::make_unique<Checkerboard>(c); }};
 }
 
 }  // namespace foveate::tech

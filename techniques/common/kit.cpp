@@ -15,7 +15,8 @@ double Params::get(const std::string& key, double fallback) {
   for (const ParamSpec& s : info_.params) {
     if (s.key == key) spec = &s;
   }
-  if (!spec) throw Error("technique " + info_.name + ": internal: parameter '" + key + "' has no spec");
+  if (!spec)
+    throw Error("technique " + info_.name + ": internal: parameter '" + key + "' has no spec");
   double v = fallback;
   auto it = overrides_.find(key);
   if (it != overrides_.end()) {

@@ -21,7 +21,9 @@ class Params {
   double get(const std::string& key, double fallback);
   /// Throws if an override was not read by the technique (unknown key).
   void finish() const;
-  [[nodiscard]] const std::vector<std::pair<std::string, double>>& values() const { return values_; }
+  [[nodiscard]] const std::vector<std::pair<std::string, double>>& values() const {
+    return values_;
+  }
 
  private:
   const TechniqueInfo& info_;

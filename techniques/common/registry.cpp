@@ -1,16 +1,17 @@
 // The one registry of techniques, and the overlay pass they share.
+#include "registry.hpp"
+
 #include <algorithm>
 
 #include "foveate/core/error.hpp"
 #include "kit.hpp"
-#include "registry.hpp"
 
 namespace foveate {
 
 const std::vector<TechniqueInfo>& techniques() {
-  static const std::vector<TechniqueInfo> all = {tech::native_info(),       tech::layered_info(),
-                                                 tech::logpolar_info(),     tech::checkerboard_info(),
-                                                 tech::lodmask_info(),      tech::inset_info()};
+  static const std::vector<TechniqueInfo> all = {tech::native_info(),   tech::layered_info(),
+                                                 tech::logpolar_info(), tech::checkerboard_info(),
+                                                 tech::lodmask_info(),  tech::inset_info()};
   return all;
 }
 
@@ -40,7 +41,8 @@ struct OverlayRenderer::Impl {
 OverlayRenderer::OverlayRenderer() : impl_(std::make_unique<Impl>()) {}
 OverlayRenderer::~OverlayRenderer() = default;
 
-void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes, int width, int height, GLuint target) {
+void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes, int width, int height,
+                           GLuint target) {
   tech::Kit& kit = impl_->kit;
   const gpu::Program& p = kit.fullscreen("common/overlay.frag");
   const int n = static_cast<int>(std::min<size_t>(shapes.size(), 32));
@@ -48,7 +50,9 @@ void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes, int width, i
   for (int i = 0; i < n; ++i) {
     const OverlayShape& s = shapes[static_cast<size_t>(i)];
     const double y = s.kind == OverlayShape::Kind::Rect ? height - s.y - s.h : height - s.y;
-    const float kind = s.kind == OverlayShape::Kind::Circle ? 0.f : s.kind == OverlayShape::Kind::Rect ? 1.f : 2.f;
+    const float kind = s.kind == OverlayShape::Kind::Circle ? 0.f
+                       : s.kind == OverlayShape::Kind::Rect ? 1.f
+                                                            : 2.f;
     const size_t k = static_cast<size_t>(i) * 4;
     geo[k] = float(s.x), geo[k + 1] = float(y), geo[k + 2] = float(s.w), geo[k + 3] = float(s.h);
     style[k] = s.r, style[k + 1] = s.g, style[k + 2] = s.b, style[k + 3] = kind;

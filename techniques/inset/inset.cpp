@@ -60,7 +60,8 @@ class Inset final : public Technique {
     return f;
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze, GLuint target) override {
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
+                    GLuint target) override {
     const int W = frame.width, H = frame.height;
     const Vec2d g = to_gl(gaze.gaze_px, H);
     FrameStats s;
@@ -72,14 +73,17 @@ class Inset final : public Technique {
     scene.prepass(pv);
     periphery_.ensure(pw, ph);
     periphery_.bind_viewport();
-    const double np = kit_.shade(scene, pv, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, pv); });
+    const double np =
+        kit_.shade(scene, pv, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, pv); });
     s.parts.push_back({"periphery", np});
     // Foveal inset at native resolution, clipped to the screen.
     const LatencyAwareFovea f = fovea(gaze);
     const double diameter = f.diameter_px(display_);
     const double half = 0.5 * diameter;
-    const double x0 = std::max(0.0, std::floor(g.x - half)), y0 = std::max(0.0, std::floor(g.y - half));
-    const double x1 = std::min(double(W), std::ceil(g.x + half)), y1 = std::min(double(H), std::ceil(g.y + half));
+    const double x0 = std::max(0.0, std::floor(g.x - half)),
+                 y0 = std::max(0.0, std::floor(g.y - half));
+    const double x1 = std::min(double(W), std::ceil(g.x + half)),
+                 y1 = std::min(double(H), std::ceil(g.y + half));
     double ni = 0.0;
     const bool has_inset = x1 > x0 && y1 > y0;
     if (has_inset) {
@@ -114,7 +118,8 @@ class Inset final : public Technique {
     const LatencyAwareFovea f = fovea(gaze);
     const double half = 0.5 * f.diameter_px(display_);
     return {{OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half, 0, 1, 0.1f, 0.1f},
-            {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half - f.blend_border_px, 0, 0.1f, 0.9f, 0.2f},
+            {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half - f.blend_border_px,
+             0, 0.1f, 0.9f, 0.2f},
             {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f}};
   }
 
@@ -136,17 +141,21 @@ std::vector<std::pair<std::string, double>> inset_defaults(const TechniqueConfig
 }
 
 TechniqueInfo inset_info() {
-  return {"inset",
-          "Quarter-resolution periphery upscaled with a slight blur, and a full-resolution foveal "
-          "inset sized by the latency-aware formula, blended with a vignette.",
-          "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015",
-          {{"scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", 0.05, 1.0, false},
-           {"fovea_deg", "angle the fovea subtends (alpha of eq. 1); default from the acuity model", 0.5, 170.0, false},
-           {"border", "vignette blend border as a fraction of the foveal radius", 0.0, 1.0, false},
-           {"latency_ms", "worst-case total latency L_tot (the measured gaze latency is used if larger)", 0.0, 1000.0, false},
-           {"saccade_deg_per_s", "maximal saccade speed S_max", 0.0, 1000.0, false},
-           {"blur", "upscale blur radius in periphery texels (0 = plain bilinear)", 0.0, 4.0, false}},
-          [](const TechniqueConfig& c) { return std::make_unique<Inset>(c); }};
+  return {
+      "inset",
+      "Quarter-resolution periphery upscaled with a slight blur, and a full-resolution foveal "
+      "inset sized by the latency-aware formula, blended with a vignette.",
+      "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015",
+      {{"scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", 0.05, 1.0, false},
+       {"fovea_deg", "angle the fovea subtends (alpha of eq. 1); default from the acuity model",
+        0.5, 170.0, false},
+       {"border", "vignette blend border as a fraction of the foveal radius", 0.0, 1.0, false},
+       {"latency_ms",
+        "worst-case total latency L_tot (the measured gaze latency is used if larger)", 0.0, 1000.0,
+        false},
+       {"saccade_deg_per_s", "maximal saccade speed S_max", 0.0, 1000.0, false},
+       {"blur", "upscale blur radius in periphery texels (0 = plain bilinear)", 0.0, 4.0, false}},
+      [](const TechniqueConfig& c) { return std::make_unique<Inset>(c); }};
 }
 
 }  // namespace foveate::tech

@@ -66,7 +66,8 @@ class Layered final : public Technique {
     auto v = values_;
     for (size_t i = 0; i < plan_.layers.size(); ++i) {
       v.emplace_back("layer" + std::to_string(i + 1) + ".radius_deg", plan_.layers[i].radius_deg);
-      v.emplace_back("layer" + std::to_string(i + 1) + ".sampling_factor", plan_.layers[i].sampling_factor);
+      v.emplace_back("layer" + std::to_string(i + 1) + ".sampling_factor",
+                     plan_.layers[i].sampling_factor);
     }
     return v;
   }
@@ -83,7 +84,8 @@ class Layered final : public Technique {
     return {0.5 * side * L.sampling_factor, side};
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze, GLuint target) override {
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
+                    GLuint target) override {
     const int W = frame.width, H = frame.height;
     const size_t n = plan_.layers.size();
     const Vec2d g = to_gl(gaze.gaze_px, H);
@@ -118,7 +120,8 @@ class Layered final : public Technique {
       }
       st.centre = g;
       if (opt_.jitter && s > 1.0) {
-        const double jx = (halton(frame.frame, 2) - 0.5) * s, jy = (halton(frame.frame, 3) - 0.5) * s;
+        const double jx = (halton(frame.frame, 2) - 0.5) * s,
+                     jy = (halton(frame.frame, 3) - 0.5) * s;
         v.x0 += jx, v.x1 += jx, v.y0 += jy, v.y1 += jy;
       }
       scene.prepass(v);
@@ -141,18 +144,23 @@ class Layered final : public Technique {
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
-    static const float colours[kMaxLayers][3] = {{1, 0.1f, 0.1f}, {0.1f, 0.9f, 0.2f}, {0.2f, 0.4f, 1},
-                                                 {1, 0.8f, 0.1f}, {0.8f, 0.2f, 1},   {0.1f, 0.9f, 0.9f}};
+    static const float colours[kMaxLayers][3] = {{1, 0.1f, 0.1f}, {0.1f, 0.9f, 0.2f},
+                                                 {0.2f, 0.4f, 1}, {1, 0.8f, 0.1f},
+                                                 {0.8f, 0.2f, 1}, {0.1f, 0.9f, 0.9f}};
     std::vector<OverlayShape> out;
     for (size_t i = 0; i + 1 < plan_.layers.size(); ++i) {
       const double half = inner_size(i, gaze).first;
       const auto* c = colours[i];
-      out.push_back({OverlayShape::Kind::Rect, gaze.gaze_px.x - half, gaze.gaze_px.y - half, 2 * half, 2 * half, c[0], c[1], c[2]});
-      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, (1 - opt_.transition) * half, 0, c[0], c[1], c[2]});
+      out.push_back({OverlayShape::Kind::Rect, gaze.gaze_px.x - half, gaze.gaze_px.y - half,
+                     2 * half, 2 * half, c[0], c[1], c[2]});
+      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y,
+                     (1 - opt_.transition) * half, 0, c[0], c[1], c[2]});
     }
     const auto* c = colours[plan_.layers.size() - 1];
-    out.push_back({OverlayShape::Kind::Rect, 1, 1, display_.width_px - 2.0, display_.height_px - 2.0, c[0], c[1], c[2]});
-    out.push_back({OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f});
+    out.push_back({OverlayShape::Kind::Rect, 1, 1, display_.width_px - 2.0,
+                   display_.height_px - 2.0, c[0], c[1], c[2]});
+    out.push_back(
+        {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f});
     return out;
   }
 
@@ -160,12 +168,12 @@ class Layered final : public Technique {
   struct LayerState {
     Target current;
     std::array<Target, 2> history;
-    int latest = 0;          // index of the newest history
+    int latest = 0;  // index of the newest history
     bool valid = false;
-    std::array<double, 4> rect{};       // x0, y0, w, h of the newest history
+    std::array<double, 4> rect{};  // x0, y0, w, h of the newest history
     std::array<double, 4> prev_rect{};
-    Vec2d centre{};          // unjittered gaze of the newest render
-    double radius = 0;       // blend radius (half side), native pixels
+    Vec2d centre{};     // unjittered gaze of the newest render
+    double radius = 0;  // blend radius (half side), native pixels
   };
 
   // Temporal reverse reprojection in screen space: the previous result is
@@ -258,7 +266,8 @@ TechniqueInfo layered_info() {
            {"transition", "blend transition as a fraction of the layer radius", 0.0, 1.0, false},
            {"half_rate", "update outer layers at half rate, staggered (0 or 1)", 0, 1, true},
            {"jitter", "jitter each layer by up to half its pixel per frame (0 or 1)", 0, 1, true},
-           {"history", "weight of the reprojected history in the temporal blend (0 = off)", 0.0, 0.95, false},
+           {"history", "weight of the reprojected history in the temporal blend (0 = off)", 0.0,
+            0.95, false},
            {"grid_step", "planner search step in degrees", 0.01, 1.0, false}},
           [](const TechniqueConfig& c) { return std::make_unique<Layered>(c); }};
 }

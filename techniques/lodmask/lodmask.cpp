@@ -45,11 +45,13 @@ class LodMask final : public Technique {
             display_.radius_px_at(opt_.outer_deg * g.fovea_scale + extra)};
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze, GLuint target) override {
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
+                    GLuint target) override {
     const SceneInfo info = scene.info();
     if (!info.has_mesh_lods) {
-      throw Error("technique lodmask changes mesh detail, but scene '" + info.name +
-                  "' has no meshes (it is shaded in screen space); use a mesh file or the guenter scene");
+      throw Error(
+          "technique lodmask changes mesh detail, but scene '" + info.name +
+          "' has no meshes (it is shaded in screen space); use a mesh file or the guenter scene");
     }
     const int W = frame.width, H = frame.height;
     const Vec2d g = to_gl(gaze.gaze_px, H);
@@ -73,12 +75,14 @@ class LodMask final : public Technique {
     scene.prepass_end();
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, W, H);
-    const double shaded = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
+    const double shaded = kit_.shade(
+        scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
     FrameStats s;
     const double pi = 3.14159265358979;
     const double a_in = std::min(pi * r_in * r_in, double(W) * H);
     const double a_out = std::min(pi * r_out * r_out, double(W) * H);
-    s.parts = {{"full detail (approx. area)", a_in}, {"mid detail (approx. area)", a_out - a_in},
+    s.parts = {{"full detail (approx. area)", a_in},
+               {"mid detail (approx. area)", a_out - a_in},
                {"low detail (approx. area)", double(W) * H - a_out}};
     s.shaded_pixels = shaded;
     s.native_pixels = double(W) * H;
@@ -87,9 +91,10 @@ class LodMask final : public Technique {
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     const auto [r_in, r_out] = radii(gaze);
-    return {{OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_in, 0, 1, 0.1f, 0.1f},
-            {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_out, 0, 0.1f, 0.9f, 0.2f},
-            {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f}};
+    return {
+        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_in, 0, 1, 0.1f, 0.1f},
+        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_out, 0, 0.1f, 0.9f, 0.2f},
+        {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f}};
   }
 
  private:
@@ -128,16 +133,20 @@ std::vector<std::pair<std::string, double>> lodmask_defaults(const TechniqueConf
 }
 
 TechniqueInfo lodmask_info() {
-  return {"lodmask",
-          "Mesh level of detail per screen region: coarse LOD everywhere, finer LODs inside stencil "
-          "circles around the gaze, deferred lighting. Mesh scenes only.",
-          "Knapik and McGowen, Foveal Rendering, 2016",
-          {{"inner_deg", "radius of the full-detail circle in degrees; default where w(e) = 2 w*", 0.0, 90.0, false},
-           {"outer_deg", "radius of the mid-detail circle in degrees; default where w(e) = 4 w*", 0.0, 90.0, false}},
-          [](const TechniqueConfig& c) { return std::make_unique<LodMask>(c); }};
+  return {
+      "lodmask",
+      "Mesh level of detail per screen region: coarse LOD everywhere, finer LODs inside stencil "
+      "circles around the gaze, deferred lighting. Mesh scenes only.",
+      "Knapik and McGowen, Foveal Rendering, 2016",
+      {{"inner_deg", "radius of the full-detail circle in degrees; default where w(e) = 2 w*", 0.0,
+        90.0, false},
+       {"outer_deg", "radius of the mid-detail circle in degrees; default where w(e) = 4 w*", 0.0,
+        90.0, false}},
+      [](const TechniqueConfig& c) { return std::make_unique<LodMask>(c); }};
 }
 
-std::vector<std::pair<std::string, double>> derive_parameters(const std::string& name, const TechniqueConfig& c) {
+std::vector<std::pair<std::string, double>> derive_parameters(const std::string& name,
+                                                              const TechniqueConfig& c) {
   if (name == "native") return {};
   if (name == "layered") return layered_defaults(c);
   if (name == "logpolar") return logpolar_defaults(c);

@@ -65,7 +65,8 @@ class LogPolar final : public Technique {
     opt_ = derive(c, p);
     p.finish();
     values_ = p.values();
-    model_ = KernelLogPolar{double(display_.width_px), double(display_.height_px), opt_.sigma, opt_.alpha};
+    model_ = KernelLogPolar{double(display_.width_px), double(display_.height_px), opt_.sigma,
+                            opt_.alpha};
     model_.validate();
   }
   std::string name() const override { return "logpolar"; }
@@ -76,7 +77,8 @@ class LogPolar final : public Technique {
     return v;
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze, GLuint target) override {
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
+                    GLuint target) override {
     const int W = frame.width, H = frame.height;
     const int bw = std::max(1, static_cast<int>(std::lround(W / opt_.sigma)));
     const int bh = std::max(1, static_cast<int>(std::lround(H / opt_.sigma)));
@@ -97,20 +99,23 @@ class LogPolar final : public Technique {
     scene.prepass(native);
     buffer_.ensure(bw, bh);
     buffer_.color.set_wrap(GL_CLAMP_TO_EDGE);
-    glTextureParameteri(buffer_.color.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);  // the angle wraps around
+    glTextureParameteri(buffer_.color.id(), GL_TEXTURE_WRAP_T,
+                        GL_REPEAT);  // the angle wraps around
     buffer_.bind_viewport();
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     // Buffer texels whose screen position lies beyond the screen (plus a margin
     // for filtering) are not shaded.
     const double margin = 0.02 * std::hypot(W, H);
-    const double shaded = kit_.shade(scene, native, "logpolar/map_logpolar.glsl", [&](const gpu::Program& p) {
-      p.set("u_lp_gaze", float(g.x), float(g.y));
-      p.set("u_lp_L", L);
-      p.set("u_lp_alpha", float(opt_.alpha));
-      p.set("u_lp_buffer", float(bw), float(bh));
-      p.set("u_keep_rect", float(-margin), float(-margin), float(W + margin), float(H + margin));
-    });
+    const double shaded =
+        kit_.shade(scene, native, "logpolar/map_logpolar.glsl", [&](const gpu::Program& p) {
+          p.set("u_lp_gaze", float(g.x), float(g.y));
+          p.set("u_lp_L", L);
+          p.set("u_lp_alpha", float(opt_.alpha));
+          p.set("u_lp_buffer", float(bw), float(bh));
+          p.set("u_keep_rect", float(-margin), float(-margin), float(W + margin),
+                float(H + margin));
+        });
     // Inverse mapping with the two-level antialiasing blur.
     const gpu::Program& inv = kit_.fullscreen("logpolar/inverse.frag");
     buffer_.color.bind(Scene::kFirstTechniqueUnit);
@@ -133,17 +138,21 @@ class LogPolar final : public Technique {
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     // Rings where the buffer's radial pixel reaches 1, 2, 4 and 8 screen pixels.
     std::vector<OverlayShape> out;
-    const float colours[4][3] = {{1, 0.1f, 0.1f}, {0.1f, 0.9f, 0.2f}, {0.2f, 0.4f, 1}, {1, 0.8f, 0.1f}};
+    const float colours[4][3] = {
+        {1, 0.1f, 0.1f}, {0.1f, 0.9f, 0.2f}, {0.2f, 0.4f, 1}, {1, 0.8f, 0.1f}};
     int k = 0;
     for (double r = 2.0; r < 4000 && k < 4; r *= 1.01) {
       const double t = std::log(r) / model_.log_extent();
-      const double radial = r * model_.log_extent() * opt_.alpha * std::pow(t, 1.0 - 1.0 / opt_.alpha) / model_.buffer_w();
+      const double radial = r * model_.log_extent() * opt_.alpha *
+                            std::pow(t, 1.0 - 1.0 / opt_.alpha) / model_.buffer_w();
       if (radial >= std::pow(2.0, k)) {
-        out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r, 0, colours[k][0], colours[k][1], colours[k][2]});
+        out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r, 0,
+                       colours[k][0], colours[k][1], colours[k][2]});
         ++k;
       }
     }
-    out.push_back({OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f});
+    out.push_back(
+        {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f});
     return out;
   }
 
@@ -170,8 +179,10 @@ TechniqueInfo logpolar_info() {
           "Shading in a kernel log-polar buffer (W/sigma x H/sigma, K(x) = x^alpha), mapped back "
           "with an eccentricity-growing Gaussian (two-level antialiasing).",
           "Meng, Du, Zwicker, Varshney, Kernel Foveated Rendering, 2018",
-          {{"sigma", "buffer parameter W / w (1 = native size); default from the acuity model", 1.0, 16.0, false},
-           {"alpha", "kernel exponent, K(x) = x^alpha; default from the acuity model within [1, 4]", 0.25, 8.0, false},
+          {{"sigma", "buffer parameter W / w (1 = native size); default from the acuity model", 1.0,
+            16.0, false},
+           {"alpha", "kernel exponent, K(x) = x^alpha; default from the acuity model within [1, 4]",
+            0.25, 8.0, false},
            {"blur", "antialiasing Gaussian sigma in buffer texels (0 = off)", 0.0, 3.0, false}},
           [](const TechniqueConfig& c) { return std::make_unique<LogPolar>(c); }};
 }

@@ -15,12 +15,14 @@ class Native final : public Technique {
   std::string name() const override { return "native"; }
   std::vector<std::pair<std::string, double>> parameters() const override { return {}; }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState&, GLuint target) override {
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState&,
+                    GLuint target) override {
     const View view = View::full(frame.width, frame.height);
     scene.prepass(view);
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, frame.width, frame.height);
-    const double n = kit_.shade(scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); });
+    const double n = kit_.shade(scene, view, kMapRect,
+                                [&](const gpu::Program& p) { set_rect_mapping(p, view); });
     FrameStats s;
     s.parts.push_back({"screen", n});
     s.shaded_pixels = n;
@@ -40,7 +42,10 @@ class Native final : public Technique {
 }  // namespace
 
 TechniqueInfo native_info() {
-  return {"native", "Non-foveated reference: every pixel shaded at the display's resolution.", "-", {},
+  return {"native",
+          "Non-foveated reference: every pixel shaded at the display's resolution.",
+          "-",
+          {},
           [](const TechniqueConfig& c) { return std::make_unique<Native>(c); }};
 }
 

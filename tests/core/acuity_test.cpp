@@ -1,9 +1,10 @@
+#include "foveate/core/acuity.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
 #include "foveate/core/error.hpp"
 
@@ -96,7 +97,8 @@ TEST(Display, JsonRoundTripAndErrors) {
     }
     return std::string("no error");
   };
-  const nlohmann::json base = {{"width_px", 1920}, {"height_px", 1080}, {"width_mm", 510}, {"distance_mm", 590}};
+  const nlohmann::json base = {
+      {"width_px", 1920}, {"height_px", 1080}, {"width_mm", 510}, {"distance_mm", 590}};
   auto with = [&](const char* k, nlohmann::json v) {
     nlohmann::json b = base;
     b[k] = v;

@@ -1,9 +1,10 @@
+#include "foveate/core/models.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "foveate/core/error.hpp"
-#include "foveate/core/models.hpp"
 
 using namespace foveate;
 

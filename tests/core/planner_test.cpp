@@ -1,3 +1,5 @@
+#include "foveate/core/planner.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -5,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include "foveate/core/error.hpp"
-#include "foveate/core/planner.hpp"
 
 using namespace foveate;
 
@@ -19,10 +20,12 @@ TEST(Planner, SamplingFactorsFollowEq2) {
   EXPECT_DOUBLE_EQ(p.layers[0].sampling_factor, 1.0);
   for (size_t i = 1; i < 3; ++i) {
     const double e = p.layers[i - 1].radius_deg;
-    EXPECT_NEAR(p.layers[i].sampling_factor, (0.0275 * e + 1.0 / 48) / kDesk.sharpness_deg(), 1e-12);
+    EXPECT_NEAR(p.layers[i].sampling_factor, (0.0275 * e + 1.0 / 48) / kDesk.sharpness_deg(),
+                1e-12);
   }
   // Eq. 3: inner layer diameter 2 f tan(e1), outer layer the screen divided by s3.
-  EXPECT_EQ(p.layers[0].width_px, std::lround(2 * kDesk.focal_px() * std::tan(p.layers[0].radius_deg * M_PI / 180)));
+  EXPECT_EQ(p.layers[0].width_px,
+            std::lround(2 * kDesk.focal_px() * std::tan(p.layers[0].radius_deg * M_PI / 180)));
   EXPECT_EQ(p.layers[2].width_px, std::lround(1920 / p.layers[2].sampling_factor));
   EXPECT_EQ(p.layers[2].height_px, std::lround(1080 / p.layers[2].sampling_factor));
 }
@@ -51,7 +54,8 @@ TEST(Planner, OptimumIsAMinimum) {
     for (double e2 = e1 + 0.5; e2 < kDesk.half_fov_deg(); e2 += 0.5) {
       const double s2 = std::max(1.0, acu.mar_deg(e1) / kDesk.sharpness_deg());
       const double s3 = std::max(1.0, acu.mar_deg(e2) / kDesk.sharpness_deg());
-      const double d1 = 2 * f * std::tan(e1 * M_PI / 180), d2 = 2 * f * std::tan(e2 * M_PI / 180) / s2;
+      const double d1 = 2 * f * std::tan(e1 * M_PI / 180),
+                   d2 = 2 * f * std::tan(e2 * M_PI / 180) / s2;
       const double P = d1 * d1 + d2 * d2 + 0.5625 * std::pow(1920 / s3, 2);
       best = std::min(best, P);
     }

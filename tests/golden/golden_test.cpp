@@ -21,7 +21,8 @@ const std::string kData = FOVEATE_TEST_DATA;
 
 class Golden : public test::GlTest {
  protected:
-  Image render(Scene& scene, const std::string& technique, int w, int h, Vec2d gaze, FrameInput f = {}) {
+  Image render(Scene& scene, const std::string& technique, int w, int h, Vec2d gaze,
+               FrameInput f = {}) {
     gpu::Texture color = gpu::Texture::create_2d(GL_RGBA8, w, h);
     gpu::Framebuffer fbo = gpu::Framebuffer::create();
     fbo.attach(GL_COLOR_ATTACHMENT0, color);
@@ -43,7 +44,8 @@ TEST_F(Golden, EveryBuiltinScene) {
   for (const SceneListing& s : builtin_scenes()) {
     auto scene = load_scene(s.name);
     const Image img = render(*scene, "native", 128, 72, {64, 36});
-    const std::string msg = check_golden(img, kGolden + "/scene-" + s.name + ".png", "scene-" + s.name);
+    const std::string msg =
+        check_golden(img, kGolden + "/scene-" + s.name + ".png", "scene-" + s.name);
     EXPECT_EQ(msg, "") << msg;
   }
 }
@@ -52,7 +54,8 @@ TEST_F(Golden, EachTechniqueOnTheDetailScene) {
   auto scene = load_scene("detail");
   for (const std::string t : {"layered", "logpolar", "checkerboard", "inset"}) {
     const Image img = render(*scene, t, 320, 180, {200, 80});
-    const std::string msg = check_golden(img, kGolden + "/technique-" + t + ".png", "technique-" + t);
+    const std::string msg =
+        check_golden(img, kGolden + "/technique-" + t + ".png", "technique-" + t);
     EXPECT_EQ(msg, "") << msg;
   }
 }
@@ -74,13 +77,17 @@ TEST_F(Golden, AnAlteredImageFailsTheComparison) {
   }
   const std::string msg = check_golden(img, kGolden + "/scene-cheap.png", "altered-cheap");
   EXPECT_NE(msg.find("max error"), std::string::npos) << msg;
-  EXPECT_TRUE(std::filesystem::exists(std::filesystem::current_path() / "golden-failures" / "altered-cheap.diff.png") ||
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::current_path() / "golden-failures" /
+                                      "altered-cheap.diff.png") ||
               std::getenv("FOVEATE_TEST_OUTPUT"));
   // A uniformly brightened image fails on the mean.
   Image bright = render(*scene, "native", 128, 72, {64, 36});
-  for (size_t i = 0; i < bright.rgba.size(); i += 4) bright.rgba[i] = static_cast<uint8_t>(std::min(255, bright.rgba[i] + 6));
+  for (size_t i = 0; i < bright.rgba.size(); i += 4)
+    bright.rgba[i] = static_cast<uint8_t>(std::min(255, bright.rgba[i] + 6));
   test::Tolerance t;
-  EXPECT_FALSE(test::compare_images(read_image(kGolden + "/scene-cheap.png"), bright, t.pixel_threshold).within(t));
+  EXPECT_FALSE(
+      test::compare_images(read_image(kGolden + "/scene-cheap.png"), bright, t.pixel_threshold)
+          .within(t));
 }
 
 TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
@@ -106,7 +113,8 @@ TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
   EXPECT_GT(mouse[0], 200);
   EXPECT_GT(mouse[1], 200);
   EXPECT_LT(mouse[2], 50);
-  const std::string msg = check_golden(img, kGolden + "/shadertoy-channels.png", "shadertoy-channels");
+  const std::string msg =
+      check_golden(img, kGolden + "/shadertoy-channels.png", "shadertoy-channels");
   EXPECT_EQ(msg, "") << msg;
   // Without the button down the disc is not drawn (iMouse.z < 0).
   f.mouse_down = false;
@@ -117,7 +125,8 @@ TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
 TEST_F(Golden, ChannelGivenExplicitly) {
   SceneOptions o;
   o.channels = {kData + "/shadertoy/quadrants.png"};
-  auto scene = load_scene(kData + "/shadertoy/missing_texture.glsl", o);  // explicit channels override the JSON
+  auto scene = load_scene(kData + "/shadertoy/missing_texture.glsl",
+                          o);  // explicit channels override the JSON
   const Image img = render(*scene, "native", 32, 32, {16, 16});
   // The whole screen shows the texture: white in the bottom-right quadrant, red top-left.
   EXPECT_GT(img.at(28, 28)[0], 200);
@@ -140,8 +149,10 @@ TEST_F(Golden, BadShadertoyFiles) {
   EXPECT_NE(message(kData + "/shadertoy/no_main_image.glsl").find("mainImage"), std::string::npos);
   const std::string tex = message(kData + "/shadertoy/missing_texture.glsl");
   EXPECT_NE(tex.find("does-not-exist.png"), std::string::npos) << tex;
-  EXPECT_NE(message(kData + "/shadertoy/nope.glsl").find("nor an existing file"), std::string::npos);
-  const std::string empty = (std::filesystem::temp_directory_path() / "foveate-empty.glsl").string();
+  EXPECT_NE(message(kData + "/shadertoy/nope.glsl").find("nor an existing file"),
+            std::string::npos);
+  const std::string empty =
+      (std::filesystem::temp_directory_path() / "foveate-empty.glsl").string();
   { std::ofstream(empty) << "\n"; }
   EXPECT_NE(message(empty).find("empty"), std::string::npos);
 }

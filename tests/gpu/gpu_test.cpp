@@ -56,7 +56,8 @@ TEST_F(Gpu, CompileErrorNamesOriginalFileAndLine) {
 TEST_F(Gpu, MapsDriverLogs) {
   const std::vector<std::string> names = {"a.frag", "b.glsl"};
   EXPECT_EQ(gpu::map_info_log("1:7(3): error: bad\n", names), "b.glsl:7:3: error: bad\n");
-  EXPECT_EQ(gpu::map_info_log("0(12) : error C1008: undefined\n", names), "a.frag:12: error C1008: undefined\n");
+  EXPECT_EQ(gpu::map_info_log("0(12) : error C1008: undefined\n", names),
+            "a.frag:12: error C1008: undefined\n");
 }
 
 TEST_F(Gpu, UnknownShaderAndBadTextureSize) {

@@ -20,7 +20,8 @@ class GlTest : public ::testing::Test {
     context_->make_current();
   }
   void TearDown() override {
-    for (const auto& e : context_->take_debug_errors()) ADD_FAILURE() << "GL debug error: " << e.text;
+    for (const auto& e : context_->take_debug_errors())
+      ADD_FAILURE() << "GL debug error: " << e.text;
   }
   static gpu::Context& context() { return *context_; }
 

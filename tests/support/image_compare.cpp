@@ -36,15 +36,16 @@ Image difference_image(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height) return d;
   for (size_t i = 0; i < a.rgba.size(); i += 4) {
     for (int ch = 0; ch < 3; ++ch) {
-      d.rgba[i + ch] = static_cast<uint8_t>(std::min(255, 4 * std::abs(int(a.rgba[i + ch]) - int(b.rgba[i + ch]))));
+      d.rgba[i + ch] = static_cast<uint8_t>(
+          std::min(255, 4 * std::abs(int(a.rgba[i + ch]) - int(b.rgba[i + ch]))));
     }
     d.rgba[i + 3] = 255;
   }
   return d;
 }
 
-std::string check_golden(const Image& actual, const std::string& reference_path, const std::string& name,
-                         const Tolerance& t) {
+std::string check_golden(const Image& actual, const std::string& reference_path,
+                         const std::string& name, const Tolerance& t) {
   namespace fs = std::filesystem;
   const char* update = std::getenv("FOVEATE_UPDATE_GOLDEN");
   if (update && std::string(update) == "1") {
@@ -55,7 +56,8 @@ std::string check_golden(const Image& actual, const std::string& reference_path,
   try {
     expected = read_image(reference_path);
   } catch (const Error& e) {
-    return std::string("cannot read the reference: ") + e.what() + " (run with FOVEATE_UPDATE_GOLDEN=1 to create it)";
+    return std::string("cannot read the reference: ") + e.what() +
+           " (run with FOVEATE_UPDATE_GOLDEN=1 to create it)";
   }
   const Comparison c = compare_images(expected, actual, t.pixel_threshold);
   if (c.within(t)) return "";
@@ -68,12 +70,13 @@ std::string check_golden(const Image& actual, const std::string& reference_path,
   if (c.size_matches) write_png(diff_path, difference_image(expected, actual));
   std::ostringstream m;
   if (!c.size_matches) {
-    m << name << ": size " << actual.width << "x" << actual.height << " differs from the reference's "
-      << expected.width << "x" << expected.height;
+    m << name << ": size " << actual.width << "x" << actual.height
+      << " differs from the reference's " << expected.width << "x" << expected.height;
   } else {
-    m << name << ": max error " << c.max_error << " (limit " << t.max_error << "), mean " << c.mean_error << " (limit "
-      << t.mean_error << "), " << 100 * c.fraction << " % of pixels off by more than " << t.pixel_threshold
-      << " (limit " << 100 * t.max_fraction << " %)";
+    m << name << ": max error " << c.max_error << " (limit " << t.max_error << "), mean "
+      << c.mean_error << " (limit " << t.mean_error << "), " << 100 * c.fraction
+      << " % of pixels off by more than " << t.pixel_threshold << " (limit " << 100 * t.max_fraction
+      << " %)";
   }
   m << "; actual: " << actual_path << ", difference: " << diff_path;
   return m.str();

@@ -11,10 +11,10 @@
 namespace foveate::test {
 
 struct Tolerance {
-  int max_error = 48;            ///< largest channel difference (0..255)
-  double mean_error = 0.5;       ///< mean channel difference
-  int pixel_threshold = 16;      ///< a pixel "differs" when a channel is off by more
-  double max_fraction = 0.005;   ///< share of differing pixels allowed
+  int max_error = 48;           ///< largest channel difference (0..255)
+  double mean_error = 0.5;      ///< mean channel difference
+  int pixel_threshold = 16;     ///< a pixel "differs" when a channel is off by more
+  double max_fraction = 0.005;  ///< share of differing pixels allowed
 };
 
 struct Comparison {
@@ -23,7 +23,8 @@ struct Comparison {
   double mean_error = 0;
   double fraction = 0;
   [[nodiscard]] bool within(const Tolerance& t) const {
-    return size_matches && max_error <= t.max_error && mean_error <= t.mean_error && fraction <= t.max_fraction;
+    return size_matches && max_error <= t.max_error && mean_error <= t.mean_error &&
+           fraction <= t.max_fraction;
   }
 };
 
@@ -33,7 +34,7 @@ Image difference_image(const Image& expected, const Image& actual);
 
 /// Compares `actual` with the PNG at `reference_path`; returns "" when within
 /// tolerance, else a message naming the numbers and the files written.
-std::string check_golden(const Image& actual, const std::string& reference_path, const std::string& name,
-                         const Tolerance& tolerance = {});
+std::string check_golden(const Image& actual, const std::string& reference_path,
+                         const std::string& name, const Tolerance& tolerance = {});
 
 }  // namespace foveate::test

@@ -1,6 +1,8 @@
 // Each technique against native on the built-in scenes: the fovea matches,
 // the shaded pixels match the plan, identity parameters reproduce native, and
 // gazes at the corners and off screen work.
+#include "foveate/techniques/technique.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include "foveate/core/models.hpp"
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/frame.hpp"
-#include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 
 using namespace foveate;
@@ -22,11 +23,11 @@ constexpr int kW = 640, kH = 360;
 // only from floating-point rounding of sample positions, which flips the odd
 // pixel on a hard edge of the "detail" scene. Tolerance: mean channel error
 // below 0.1 and at most 0.1 % of pixels off by more than 8 of 255.
-#define EXPECT_MATCHES_NATIVE(d)  \
-  do {                            \
-    const Diff dd = (d);          \
-    EXPECT_LT(dd.mean, 0.1);      \
-    EXPECT_LE(dd.off, 0.001);     \
+#define EXPECT_MATCHES_NATIVE(d) \
+  do {                           \
+    const Diff dd = (d);         \
+    EXPECT_LT(dd.mean, 0.1);     \
+    EXPECT_LE(dd.off, 0.001);    \
   } while (0)
 
 struct Diff {
@@ -167,7 +168,8 @@ TEST_F(Techniques, CheckerboardCountsMatchThePatternAndFoveaIsExact) {
   FrameStats s;
   const Image img = run(*t, *scene, gaze, &s);
   // The CPU model of the same pattern.
-  CheckerboardPattern p = CheckerboardPattern::from_acuity(4, config().display, AcuityModel::quality("A"));
+  CheckerboardPattern p =
+      CheckerboardPattern::from_acuity(4, config().display, AcuityModel::quality("A"));
   double kept = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) kept += p.kept({x + 0.5, y + 0.5}, gaze) ? 1 : 0;
@@ -222,8 +224,10 @@ TEST_F(Techniques, InsetCountsAndFovea) {
   for (const auto& [k, v] : t->parameters()) {
     if (k == "diameter_px") diameter = v;
   }
-  const double side_x = std::min(double(kW), std::ceil(gaze.x + diameter / 2)) - std::floor(gaze.x - diameter / 2);
-  const double side_y = std::min(double(kH), std::ceil(kH - gaze.y + diameter / 2)) - std::max(0.0, std::floor(kH - gaze.y - diameter / 2));
+  const double side_x =
+      std::min(double(kW), std::ceil(gaze.x + diameter / 2)) - std::floor(gaze.x - diameter / 2);
+  const double side_y = std::min(double(kH), std::ceil(kH - gaze.y + diameter / 2)) -
+                        std::max(0.0, std::floor(kH - gaze.y - diameter / 2));
   EXPECT_EQ(s.parts[1].pixels, side_x * side_y);
   const double inner = 0.5 * diameter * (1 - 0.2) - 1;
   EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, inner));
@@ -252,7 +256,8 @@ TEST_F(Techniques, LogPolarFoveaMatchesAndBufferSize) {
   // sigma = 1 is closer to native than sigma = 2.
   auto t1 = make_technique("logpolar", config({{"sigma", 1.0}, {"alpha", 2.0}, {"blur", 0.0}}));
   auto t2 = make_technique("logpolar", config({{"sigma", 2.0}, {"alpha", 2.0}, {"blur", 0.0}}));
-  EXPECT_LT(compare_all(ref, run(*t1, *scene, gaze)).mean, compare_all(ref, run(*t2, *scene, gaze)).mean);
+  EXPECT_LT(compare_all(ref, run(*t1, *scene, gaze)).mean,
+            compare_all(ref, run(*t2, *scene, gaze)).mean);
 }
 
 TEST_F(Techniques, LogPolarHasNoSeamWhereTheAngleWraps) {
@@ -282,7 +287,8 @@ TEST_F(Techniques, GazeAtCornersAndOffScreen) {
   for (const std::string name : {"layered", "logpolar", "checkerboard", "inset"}) {
     auto t = make_technique(name, config());
     int k = 0;
-    for (Vec2d g : {Vec2d{0, 0}, Vec2d{kW - 1.0, kH - 1.0}, Vec2d{kW, 0}, Vec2d{-200, 500}, Vec2d{5000, -5000}}) {
+    for (Vec2d g : {Vec2d{0, 0}, Vec2d{kW - 1.0, kH - 1.0}, Vec2d{kW, 0}, Vec2d{-200, 500},
+                    Vec2d{5000, -5000}}) {
       FrameStats s;
       const Image img = run(*t, *scene, g, &s, k++);
       // (layered may shade nothing on a frame whose updated layers are all off screen)
@@ -291,7 +297,8 @@ TEST_F(Techniques, GazeAtCornersAndOffScreen) {
       }
       EXPECT_LE(s.shaded_pixels, 1.3 * kW * kH) << name;
       // Still an image of the scene everywhere.
-      EXPECT_LT(compare_all(native(*scene, k - 1), img).mean, 25.0) << name << " gaze " << g.x << "," << g.y;
+      EXPECT_LT(compare_all(native(*scene, k - 1), img).mean, 25.0)
+          << name << " gaze " << g.x << "," << g.y;
     }
   }
 }
@@ -316,7 +323,8 @@ TEST_F(Techniques, BadParametersAreErrors) {
   try {
     make_technique("checkerboard", config({{"colour", 1}}));
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("block"), std::string::npos) << "lists known keys: " << e.what();
+    EXPECT_NE(std::string(e.what()).find("block"), std::string::npos)
+        << "lists known keys: " << e.what();
   }
 }
 
@@ -330,10 +338,14 @@ TEST_F(Techniques, DefaultsComeFromTheAcuityModel) {
     }
     return std::nan("");
   };
-  EXPECT_GT(get(default_parameters("checkerboard", a), "r3"), get(default_parameters("checkerboard", b), "r3"));
-  EXPECT_GT(get(default_parameters("inset", a), "fovea_deg"), get(default_parameters("inset", b), "fovea_deg"));
-  EXPECT_LT(get(default_parameters("logpolar", a), "sigma"), get(default_parameters("logpolar", b), "sigma"));
-  EXPECT_GT(get(default_parameters("lodmask", a), "inner_deg"), get(default_parameters("lodmask", b), "inner_deg"));
+  EXPECT_GT(get(default_parameters("checkerboard", a), "r3"),
+            get(default_parameters("checkerboard", b), "r3"));
+  EXPECT_GT(get(default_parameters("inset", a), "fovea_deg"),
+            get(default_parameters("inset", b), "fovea_deg"));
+  EXPECT_LT(get(default_parameters("logpolar", a), "sigma"),
+            get(default_parameters("logpolar", b), "sigma"));
+  EXPECT_GT(get(default_parameters("lodmask", a), "inner_deg"),
+            get(default_parameters("lodmask", b), "inner_deg"));
 }
 
 TEST_F(Techniques, LatencyGrowsEveryFovea) {

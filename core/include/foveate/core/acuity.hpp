@@ -13,8 +13,8 @@ inline constexpr double kSlopeQualityB = 0.0220;  ///< 1.32 arc minutes per degr
 inline constexpr double kFovealMarDeg = 1.0 / 48.0;
 
 struct AcuityModel {
-  double slope = kSlopeQualityA;     ///< m
-  double w0_deg = kFovealMarDeg;     ///< w0, MAR at the fovea
+  double slope = kSlopeQualityA;  ///< m
+  double w0_deg = kFovealMarDeg;  ///< w0, MAR at the fovea
 
   /// MAR in degrees per cycle at eccentricity e (degrees).
   [[nodiscard]] double mar_deg(double eccentricity_deg) const;

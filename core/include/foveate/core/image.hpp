@@ -15,7 +15,9 @@ struct Image {
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(static_cast<size_t>(w) * h * 4, 0) {}
   [[nodiscard]] bool empty() const { return width == 0 || height == 0; }
-  [[nodiscard]] std::uint8_t* at(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  [[nodiscard]] std::uint8_t* at(int x, int y) {
+    return &rgba[(static_cast<size_t>(y) * width + x) * 4];
+  }
   [[nodiscard]] const std::uint8_t* at(int x, int y) const {
     return &rgba[(static_cast<size_t>(y) * width + x) * 4];
   }

@@ -10,11 +10,11 @@ namespace foveate {
 // --- Swafford, Cosker, Mitchell: "Latency Aware Foveated Rendering in UE4" (2015), eq. 1.
 //   F' = 2 * rho_pixel * d_u * tan(L_tot * S_max + alpha / 2) + 2 * b_w + c
 struct LatencyAwareFovea {
-  double latency_ms = 0.0;             ///< L_tot, worst-case total latency
-  double saccade_deg_per_s = 200.0;    ///< S_max
-  double fovea_deg = 5.0;              ///< alpha, angle the fovea subtends
-  double blend_border_px = 0.0;        ///< b_w
-  double error_px = 0.0;               ///< c
+  double latency_ms = 0.0;           ///< L_tot, worst-case total latency
+  double saccade_deg_per_s = 200.0;  ///< S_max
+  double fovea_deg = 5.0;            ///< alpha, angle the fovea subtends
+  double blend_border_px = 0.0;      ///< b_w
+  double error_px = 0.0;             ///< c
 
   /// Foveal diameter F' in pixels on `display` (rho * d_u = focal_px).
   [[nodiscard]] double diameter_px(const Display& display) const;
@@ -29,8 +29,8 @@ struct LatencyAwareFovea {
 struct KernelLogPolar {
   double screen_w = 1920.0;
   double screen_h = 1080.0;
-  double sigma = 1.8;   ///< buffer parameter, W / w
-  double alpha = 4.0;   ///< kernel exponent
+  double sigma = 1.8;  ///< buffer parameter, W / w
+  double alpha = 4.0;  ///< kernel exponent
 
   [[nodiscard]] double buffer_w() const { return screen_w / sigma; }
   [[nodiscard]] double buffer_h() const { return screen_h / sigma; }
@@ -47,13 +47,12 @@ struct KernelLogPolar {
 // drops k of the 4 quads of each tile. Regions are chosen by the distance
 // between the tile and the gaze tile (both snapped to the 2n grid).
 struct CheckerboardPattern {
-  int block = 16;                          ///< n
-  std::array<double, 3> thresholds_px{};   ///< region k+1 begins beyond thresholds_px[k]
+  int block = 16;                         ///< n
+  std::array<double, 3> thresholds_px{};  ///< region k+1 begins beyond thresholds_px[k]
 
   /// Silvera's fixed thresholds: 10 %, 25 %, 40 % of the framebuffer diagonal.
   static CheckerboardPattern from_fractions(int block, int width, int height,
-                                            std::array<double, 3> fractions = {0.10, 0.25,
-                                                                               0.40});
+                                            std::array<double, 3> fractions = {0.10, 0.25, 0.40});
   /// Thresholds from the acuity model: region k starts where the MAR allows the
   /// effective sampling factor sqrt(4 / (4 - k)) of a tile keeping 4 - k quads.
   static CheckerboardPattern from_acuity(int block, const Display& display,

@@ -17,10 +17,10 @@
 namespace foveate {
 
 struct PlannerOptions {
-  int layers = 3;                      ///< n, 1..6 (1 = native rendering)
-  double grid_step_deg = 0.05;         ///< discretisation of the radii
-  std::vector<double> weights;         ///< w_i of eq. 5; empty = all 1
-  std::optional<double> fixed_s2;      ///< the paper's "3*": s_2 fixed (e.g. 2)
+  int layers = 3;                  ///< n, 1..6 (1 = native rendering)
+  double grid_step_deg = 0.05;     ///< discretisation of the radii
+  std::vector<double> weights;     ///< w_i of eq. 5; empty = all 1
+  std::optional<double> fixed_s2;  ///< the paper's "3*": s_2 fixed (e.g. 2)
 };
 
 struct Layer {
@@ -29,16 +29,16 @@ struct Layer {
   double sampling_factor = 1.0;  ///< s_i, pixel size as a multiple of the native pixel
   int width_px = 0;              ///< render-target size of the layer
   int height_px = 0;
-  double pixels = 0.0;           ///< width_px * height_px (P_i)
+  double pixels = 0.0;  ///< width_px * height_px (P_i)
 };
 
 struct LayerPlan {
   Display display;
   AcuityModel acuity;
   std::vector<Layer> layers;
-  double native_pixels = 0.0;          ///< P* (eq. 8)
-  double total_pixels = 0.0;           ///< sum of P_i
-  double total_pixels_half_rate = 0.0; ///< P_1 + sum_{i>1} P_i / 2
+  double native_pixels = 0.0;           ///< P* (eq. 8)
+  double total_pixels = 0.0;            ///< sum of P_i
+  double total_pixels_half_rate = 0.0;  ///< P_1 + sum_{i>1} P_i / 2
   /// P* / P: the speedup in pixels (the paper's "pixels" curve).
   [[nodiscard]] double pixel_ratio() const { return native_pixels / total_pixels; }
   /// P* / P with the outer layers counted at half rate (how the paper counts its
@@ -61,13 +61,13 @@ void to_json(nlohmann::json& j, const LayerPlan& plan);
 /// foveal acuity (w* = w0), aspect 3/4, for fields of view theta*.
 struct SweepRow {
   double fov_deg = 0.0;
-  double display_width_px = 0.0;   ///< D*(theta*) of eq. 9
+  double display_width_px = 0.0;  ///< D*(theta*) of eq. 9
   double native_pixels = 0.0;
   /// P*/P (unweighted, as the paper predicts) per variant, in the order of
   /// sweep_variants(), for quality A then B.
   std::vector<double> speedup_a;
   std::vector<double> speedup_b;
-  std::vector<double> pixels_a;    ///< foveated pixel counts P, same order
+  std::vector<double> pixels_a;  ///< foveated pixel counts P, same order
   std::vector<double> pixels_b;
 };
 

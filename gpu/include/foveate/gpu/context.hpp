@@ -60,7 +60,7 @@ class Window : public Context {
     double mouse_x = 0, mouse_y = 0;  ///< pixels, origin top-left
     bool mouse_inside = false;
     bool should_close = false;
-    std::vector<int> keys_pressed;    ///< GLFW key codes pressed since the last poll
+    std::vector<int> keys_pressed;  ///< GLFW key codes pressed since the last poll
   };
   virtual void swap_buffers() = 0;
   virtual Input poll() = 0;

@@ -27,7 +27,7 @@ struct FrameInput {
   double time_s = 0.0;
   double delta_s = 1.0 / 60.0;
   int frame = 0;
-  int width = 0;   ///< full output resolution
+  int width = 0;  ///< full output resolution
   int height = 0;
   Vec2d mouse_px{0.0, 0.0};  ///< pixels, origin bottom-left (Shadertoy's iMouse.xy)
   bool mouse_down = false;
@@ -43,7 +43,9 @@ struct View {
   /// Size of one target pixel in native pixels (a layer's sampling factor s):
   /// geometric LOD sees it.
   double pixel_scale = 1.0;
-  [[nodiscard]] static View full(int w, int h) { return View{0, 0, double(w), double(h), w, h, 1.0}; }
+  [[nodiscard]] static View full(int w, int h) {
+    return View{0, 0, double(w), double(h), w, h, 1.0};
+  }
 };
 
 struct SceneInfo {
@@ -114,6 +116,7 @@ struct SceneOptions {
 /// A built-in scene by name, or a file: .glsl/.frag (Shadertoy) or a mesh file
 /// assimp reads. Needs a current GL context. Throws foveate::Error with the
 /// file and the reason for bad input.
-std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOptions& options = {});
+std::unique_ptr<Scene> load_scene(const std::string& name_or_path,
+                                  const SceneOptions& options = {});
 
 }  // namespace foveate

@@ -37,8 +37,8 @@ struct GazeState {
 };
 
 struct PixelPart {
-  std::string name;      ///< "layer 1", "region 0", "periphery", ...
-  double pixels = 0.0;   ///< fragments shaded this frame (occlusion-query counted)
+  std::string name;     ///< "layer 1", "region 0", "periphery", ...
+  double pixels = 0.0;  ///< fragments shaded this frame (occlusion-query counted)
 };
 
 struct FrameStats {
@@ -51,8 +51,8 @@ struct FrameStats {
 struct OverlayShape {
   enum class Kind { Circle, Rect, Dot };
   Kind kind = Kind::Circle;
-  double x = 0, y = 0;      ///< centre (circle, dot) or corner (rect), pixels, origin top-left
-  double w = 0, h = 0;      ///< radius in w (circle, dot) or size (rect)
+  double x = 0, y = 0;  ///< centre (circle, dot) or corner (rect), pixels, origin top-left
+  double w = 0, h = 0;  ///< radius in w (circle, dot) or size (rect)
   float r = 1, g = 1, b = 1;
 };
 
@@ -74,7 +74,7 @@ class Technique {
 
 struct ParamSpec {
   std::string key;
-  std::string help;     ///< meaning and unit
+  std::string help;  ///< meaning and unit
   double min = 0.0;
   double max = 0.0;
   bool integer = false;
@@ -83,7 +83,7 @@ struct ParamSpec {
 struct TechniqueInfo {
   std::string name;
   std::string summary;
-  std::string source;   ///< the paper it implements
+  std::string source;  ///< the paper it implements
   std::vector<ParamSpec> params;
   std::function<std::unique_ptr<Technique>(const TechniqueConfig&)> make;
 };
