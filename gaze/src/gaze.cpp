@@ -1,0 +1,226 @@
+#include "foveate/gaze/gaze.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <utility>
+
+#include "foveate/core/error.hpp"
+#include "foveate/gaze/pupil.hpp"
+#include "foveate/gaze/synthetic.hpp"
+#include "foveate/gaze/trace.hpp"
+
+namespace foveate::gaze {
+
+Vec2d GazeSample::pixels(int width, int height) const { return {pos.x * width, pos.y * height}; }
+
+double angle_between_deg(const Display& display, Vec2d a, Vec2d b) {
+  const double w = display.width_px, h = display.height_px;
+  return display.eccentricity_deg({a.x * w, a.y * h}, {b.x * w, b.y * h});
+}
+
+// ------------------------------------------------------------ dropped samples
+
+const char* to_string(DropReason reason) {
+  switch (reason) {
+    case DropReason::kNonFinite:
+      return "non-finite";
+    case DropReason::kOutOfRange:
+      return "out-of-range";
+    case DropReason::kBackwards:
+      return "backwards";
+    case DropReason::kDuplicate:
+      return "duplicate";
+  }
+  return "?";
+}
+
+void DropCounts::add(DropReason reason) {
+  switch (reason) {
+    case DropReason::kNonFinite:
+      ++non_finite;
+      break;
+    case DropReason::kOutOfRange:
+      ++out_of_range;
+      break;
+    case DropReason::kBackwards:
+      ++backwards;
+      break;
+    case DropReason::kDuplicate:
+      ++duplicate;
+      break;
+  }
+}
+
+DropCounts& DropCounts::operator+=(const DropCounts& o) {
+  non_finite += o.non_finite;
+  out_of_range += o.out_of_range;
+  backwards += o.backwards;
+  duplicate += o.duplicate;
+  return *this;
+}
+
+std::string DropCounts::summary() const {
+  if (total() == 0) return "none dropped";
+  std::string s = std::to_string(total()) + " dropped (";
+  bool first = true;
+  auto part = [&](std::uint64_t n, const char* what) {
+    if (n == 0) return;
+    if (!first) s += ", ";
+    s += std::to_string(n) + " " + what;
+    first = false;
+  };
+  part(non_finite, "non-finite");
+  part(out_of_range, "out-of-range");
+  part(backwards, "backwards in time");
+  part(duplicate, "duplicate time");
+  return s + ")";
+}
+
+SampleValidator::SampleValidator(double margin) : margin_(margin) {
+  if (!(std::isfinite(margin) && margin >= 0.0 && margin <= 10.0)) {
+    throw Error("gaze margin: expected 0..10 screen widths, got " + std::to_string(margin));
+  }
+}
+
+std::optional<DropReason> SampleValidator::check(const GazeSample& s) {
+  std::optional<DropReason> r;
+  if (!std::isfinite(s.time_s) || !std::isfinite(s.pos.x) || !std::isfinite(s.pos.y) ||
+      !std::isfinite(s.confidence)) {
+    r = DropReason::kNonFinite;
+  } else if (s.pos.x < -margin_ || s.pos.x > 1.0 + margin_ || s.pos.y < -margin_ ||
+             s.pos.y > 1.0 + margin_ || s.confidence < 0.0 || s.confidence > 1.0) {
+    r = DropReason::kOutOfRange;
+  } else if (have_last_ && s.time_s < last_time_) {
+    r = DropReason::kBackwards;
+  } else if (have_last_ && s.time_s == last_time_) {
+    r = DropReason::kDuplicate;
+  }
+  if (r) {
+    counts_.add(*r);
+    return r;
+  }
+  have_last_ = true;
+  last_time_ = s.time_s;
+  ++accepted_;
+  return std::nullopt;
+}
+
+// ------------------------------------------------------------ simple sources
+
+namespace {
+
+bool parse_double(const std::string& s, double& out) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(out);
+}
+
+class FixedSource final : public GazeSource {
+ public:
+  explicit FixedSource(Vec2d pos) : pos_(pos) {}
+  GazeSample sample(double t_s) override { return {t_s, pos_, 1.0, true}; }
+  std::string describe() const override {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "fixed at (%.3f, %.3f) normalized", pos_.x, pos_.y);
+    return buf;
+  }
+
+ private:
+  Vec2d pos_;
+};
+
+class MouseSource final : public GazeSource {
+ public:
+  explicit MouseSource(std::function<std::optional<Vec2d>()> mouse) : mouse_(std::move(mouse)) {}
+  GazeSample sample(double t_s) override {
+    const std::optional<Vec2d> p = mouse_();
+    // Outside the window the mouse says nothing: invalid, like a lost eye.
+    if (!p) return {t_s, last_, 0.0, false};
+    last_ = *p;
+    return {t_s, *p, 1.0, true};
+  }
+  std::string describe() const override { return "mouse"; }
+
+ private:
+  std::function<std::optional<Vec2d>()> mouse_;
+  Vec2d last_{0.5, 0.5};
+};
+
+Vec2d parse_fixed(const std::string& text, const Display& d) {
+  const auto c = text.find(',');
+  double x = 0, y = 0;
+  if (c == std::string::npos || !parse_double(text.substr(0, c), x) ||
+      !parse_double(text.substr(c + 1), y)) {
+    throw Error(
+        "--gaze fixed: expected X,Y in pixels or normalized (e.g. 960,540 or 0.5,0.5), got '" +
+        text + "'");
+  }
+  const std::string sx = text.substr(0, c), sy = text.substr(c + 1);
+  const bool normalized = sx.find('.') != std::string::npos && sy.find('.') != std::string::npos &&
+                          x >= 0.0 && x <= 1.0 && y >= 0.0 && y <= 1.0;
+  if (normalized) return {x, y};
+  if (std::fabs(x) > 1e6 || std::fabs(y) > 1e6) {
+    throw Error("--gaze fixed: point '" + text + "' is absurdly far off screen");
+  }
+  return {x / d.width_px, y / d.height_px};
+}
+
+}  // namespace
+
+const char* gaze_spec_help() {
+  return "fixed:X,Y (pixels, or normalized 0.5,0.5) | trace:FILE (CSV, Pupil gaze_positions.csv, "
+         "JSON) | synthetic[:SEED] | pupil[:HOST[:PORT]] (default 127.0.0.1:50020) | mouse | "
+         "nearest (the nearest scene object)";
+}
+
+std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const GazeContext& ctx) {
+  const auto colon = spec.find(':');
+  const std::string kind = spec.substr(0, colon);
+  const bool has_arg = colon != std::string::npos;
+  const std::string arg = has_arg ? spec.substr(colon + 1) : std::string();
+  if (spec.empty()) throw Error("--gaze: empty spec; expected " + std::string(gaze_spec_help()));
+
+  if (kind == "fixed") {
+    if (!has_arg) throw Error("--gaze fixed: give the point, e.g. fixed:960,540 or fixed:0.5,0.5");
+    return std::make_unique<FixedSource>(parse_fixed(arg, ctx.display));
+  }
+  if (!has_arg && spec.find(',') != std::string::npos) {
+    return std::make_unique<FixedSource>(parse_fixed(spec, ctx.display));
+  }
+  if (kind == "trace") {
+    if (arg.empty()) throw Error("--gaze trace: give the file, e.g. trace:gaze.csv");
+    TraceOptions o;
+    o.width_px = ctx.display.width_px;
+    o.height_px = ctx.display.height_px;
+    return std::make_unique<TraceSource>(load_trace(arg, o), arg);
+  }
+  if (kind == "synthetic") {
+    SyntheticOptions o;
+    if (has_arg) {
+      char* end = nullptr;
+      const unsigned long long seed = std::strtoull(arg.c_str(), &end, 10);
+      if (arg.empty() || arg[0] == '-' || end != arg.c_str() + arg.size()) {
+        throw Error("--gaze synthetic: the seed must be a non-negative integer, got '" + arg + "'");
+      }
+      o.seed = seed;
+    }
+    return std::make_unique<SyntheticViewer>(ctx.display, o);
+  }
+  if (kind == "pupil") {
+    return std::make_unique<PupilSource>(parse_pupil_address(arg));
+  }
+  if (kind == "mouse") {
+    if (has_arg) throw Error("--gaze mouse takes no argument");
+    if (!ctx.mouse) throw Error("--gaze mouse needs a window (foveate view)");
+    return std::make_unique<MouseSource>(ctx.mouse);
+  }
+  if (kind == "nearest") {
+    if (has_arg) throw Error("--gaze nearest takes no argument");
+    if (!ctx.objects) throw Error("--gaze nearest needs a scene that knows its objects");
+    return std::make_unique<NearestObjectViewer>(ctx.display, ctx.objects);
+  }
+  throw Error("--gaze: unknown source '" + kind + "'; expected " + gaze_spec_help());
+}
+
+}  // namespace foveate::gaze
