@@ -89,8 +89,11 @@ FilteredGaze GazeFilter::update(const GazeSample& s, double now_s) {
                     std::clamp(sac_start_.y + f * (s.pos.y - sac_start_.y), lo, hi)};
           }
         }
-      } else if (after_gap || was_saccade ||
+      } else if (after_gap || was_saccade || settling_ ||
                  angle_between_deg(display_, out_, s.pos) >= o.deadband_deg) {
+        // After a saccade the eye decelerates below the threshold before it
+        // lands: follow it without the deadband until it has settled.
+        settling_ = (was_saccade || settling_) && velocity > 0.25 * o.saccade_deg_per_s;
         out_ = s.pos;
       } else {
         ++counters_.deadband_suppressed;

@@ -194,7 +194,9 @@ struct PupilSource::Impl {
     if (t_text->empty() || *end != '\0' || !std::isfinite(t)) return fail_request(), false;
     offset = t - 0.5 * (before + after);
     validator.reset_clock();  // a restarted tracker starts a new clock
-    if (!sub || port != sub_port) {
+    // A fresh SUB socket each time: after silence, a dropped connection (an
+    // oversized frame makes ZMQ disconnect) or a restart, start clean.
+    {
       sub.reset();
       auto s = std::make_unique<zmq::socket_t>(ctx, zmq::socket_type::sub);
       s->set(zmq::sockopt::linger, 0);

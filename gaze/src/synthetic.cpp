@@ -51,16 +51,51 @@ double profile_velocity(double u, double a) {
   return std::pow(u * (1.0 - u), a) * inv_beta(a);
 }
 
+namespace {
+
+/// Continued fraction of the incomplete beta function (modified Lentz).
+double beta_cf(double a, double b, double x) {
+  constexpr double tiny = 1e-300, eps = 1e-15;
+  const double qab = a + b, qap = a + 1.0, qam = a - 1.0;
+  double c = 1.0, d = 1.0 - qab * x / qap;
+  if (std::fabs(d) < tiny) d = tiny;
+  d = 1.0 / d;
+  double h = d;
+  for (int m = 1; m <= 300; ++m) {
+    const double m2 = 2.0 * m;
+    double aa = m * (b - m) * x / ((qam + m2) * (a + m2));
+    d = 1.0 + aa * d;
+    if (std::fabs(d) < tiny) d = tiny;
+    c = 1.0 + aa / c;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    h *= d * c;
+    aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
+    d = 1.0 + aa * d;
+    if (std::fabs(d) < tiny) d = tiny;
+    c = 1.0 + aa / c;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::fabs(del - 1.0) < eps) break;
+  }
+  return h;
+}
+
+}  // namespace
+
 double profile_position(double u, double a) {
   if (u <= 0.0) return 0.0;
   if (u >= 1.0) return 1.0;
-  if (u > 0.5) return 1.0 - profile_position(1.0 - u, a);  // the profile is symmetric
-  // Simpson's rule on the normalized velocity; exact at u = 0.5 by symmetry.
-  constexpr int n = 256;
-  const double h = u / n;
-  double sum = profile_velocity(0.0, a) + profile_velocity(u, a);
-  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * profile_velocity(i * h, a);
-  return std::min(sum * h / 3.0, 0.5);
+  if (u == 0.5) return 0.5;
+  // I_u(p, p) with p = a + 1; the profile is symmetric, so use the side where
+  // the continued fraction converges fast.
+  const double p = a + 1.0;
+  if (u > 0.5) return 1.0 - profile_position(1.0 - u, a);
+  const double front =
+      std::exp(std::lgamma(2 * p) - 2 * std::lgamma(p) + p * std::log(u) + p * std::log1p(-u));
+  return front * beta_cf(p, p, u) / p;
 }
 
 const char* to_string(Movement::Kind kind) {

@@ -71,6 +71,7 @@ class GazeFilter {
   bool last_was_lost_ = false;
   Vec2d out_{0.5, 0.5};  ///< current output (after deadband)
   bool in_saccade_ = false;
+  bool settling_ = false;  ///< just after a saccade: no deadband until the eye is slow
   bool in_fallback_ = false;
   Vec2d sac_start_{};
   double sac_peak_ = 0.0;
