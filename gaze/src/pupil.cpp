@@ -134,6 +134,7 @@ struct PupilSource::Impl {
   mutable std::condition_variable cv;
   PupilCounters counters;
   std::deque<GazeSample> queue;
+  std::deque<double> arrivals;
   bool have_latest = false;
   GazeSample latest;
 
@@ -268,8 +269,10 @@ struct PupilSource::Impl {
     have_latest = true;
     if (o.queue_limit > 0) {
       queue.push_back(s);
+      arrivals.push_back(received);
       while (queue.size() > o.queue_limit) {
         queue.pop_front();
+        arrivals.pop_front();
         ++counters.overflow;
       }
     }
@@ -325,10 +328,12 @@ GazeSample PupilSource::sample(double t_s) {
   return s;
 }
 
-std::vector<GazeSample> PupilSource::drain() {
+std::vector<GazeSample> PupilSource::drain(std::vector<double>* arrival_s) {
   std::lock_guard<std::mutex> lock(impl_->mu);
   std::vector<GazeSample> out(impl_->queue.begin(), impl_->queue.end());
+  if (arrival_s) arrival_s->assign(impl_->arrivals.begin(), impl_->arrivals.end());
   impl_->queue.clear();
+  impl_->arrivals.clear();
   return out;
 }
 

@@ -75,8 +75,9 @@ class PupilSource final : public GazeSource {
   [[nodiscard]] std::string report() const override;
 
   /// Every accepted sample since the last call, times in seconds on this
-  /// source's steady clock (seconds since construction).
-  std::vector<GazeSample> drain();
+  /// source's steady clock (seconds since construction). With `arrival_s`,
+  /// also when each arrived on that clock (arrival - time = transport latency).
+  std::vector<GazeSample> drain(std::vector<double>* arrival_s = nullptr);
   /// Seconds since construction on the steady clock (the clock drain() uses).
   [[nodiscard]] double now_s() const;
   [[nodiscard]] PupilCounters counters() const;

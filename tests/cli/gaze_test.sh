@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# Command-line behaviour of `foveate gaze`: synth, stats, errors and help.
+set -u
+fail=0
+check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+out=$("$FOVEATE" gaze synth --seed 5 --seconds 4 --rate 100 --out "$tmp/a.csv"); rc=$?
+check "synth writes a CSV" '[[ $rc -eq 0 && $(head -2 "$tmp/a.csv" | tail -1) == "time_s,x,y,confidence,valid" && $(wc -l < "$tmp/a.csv") -eq 403 ]]'
+check "synth reports what it generated" '[[ "$out" == *"401 samples at 100 Hz"* && "$out" == *saccades* ]]'
+"$FOVEATE" gaze synth --seed 5 --seconds 4 --rate 100 --out "$tmp/b.csv" >/dev/null
+check "same seed, same trace" 'cmp -s "$tmp/a.csv" "$tmp/b.csv"'
+"$FOVEATE" gaze synth --seed 6 --seconds 4 --rate 100 --out "$tmp/c.csv" >/dev/null
+check "another seed, another trace" '! cmp -s "$tmp/a.csv" "$tmp/c.csv"'
+"$FOVEATE" gaze synth --seed 5 --seconds 2 --out "$tmp/a.json" >/dev/null
+check "synth writes JSON" 'python3 -c "import json,sys; j=json.load(open(sys.argv[1])); assert j[\"format\"]==\"foveate-gaze\" and len(j[\"samples\"])==241" "$tmp/a.json"'
+
+out=$("$FOVEATE" gaze stats "$tmp/a.csv"); rc=$?
+check "stats: rate and counts" '[[ $rc -eq 0 && "$out" == *"401 samples over 4.00 s, 100.0 Hz"* && "$out" == *"none dropped"* && "$out" == *"saccades"* && "$out" == *"fixations"* ]]'
+json=$("$FOVEATE" gaze stats "$tmp/a.json" --json)
+check "stats --json" 'python3 -c "import json,sys; j=json.loads(sys.argv[1]); assert j[\"samples\"]==241 and abs(j[\"rate_hz\"]-120)<1e-6 and j[\"ivt\"][\"saccades\"]>0 and j[\"dropped\"][\"total\"]==0" "$json"'
+
+# A hand-made trace: a saccade, a blink, a gap, and one bad sample of each kind.
+cat > "$tmp/h.csv" <<'CSV'
+time_ms,x_px,y_px,confidence,latency_ms
+0,576,540,1,10
+10,576,540,1,12
+20,576,540,1,12
+30,576,540,1,12
+40,576,540,1,12
+50,576,540,1,12
+60,576,540,1,12
+70,576,540,1,12
+80,1344,540,1,12
+90,1344,540,1,12
+100,1344,540,1,12
+110,1344,540,0,12
+120,1344,540,0,12
+130,1344,540,1,12
+140,1344,540,1,12
+150,1344,540,1,12
+160,1344,540,1,12
+170,1344,540,1,12
+180,1344,540,1,12
+190,1344,540,1,12
+190,1344,540,1,12
+185,1344,540,1,12
+195,nan,540,1,12
+196,99999,540,1,12
+400,1344,540,1,40
+410,1344,540,1,12
+CSV
+out=$("$FOVEATE" gaze stats "$tmp/h.csv")
+check "stats: dropped by reason" '[[ "$out" == *"4 dropped (1 non-finite, 1 out-of-range, 1 backwards in time, 1 duplicate time)"* ]]'
+check "stats: dropouts" '[[ "$out" == *"dropouts: 2, 0.240 s in total, longest 210 ms"* ]]'
+check "stats: one saccade, fixations" '[[ "$out" == *"1 saccades"* && "$out" == *"2 fixations"* ]]'
+check "stats: latency" '[[ "$out" == *"latency: median 12.0 ms"* && "$out" == *"max 40.0 ms"* ]]'
+check "stats: lost samples" '[[ "$out" == *"lost samples (invalid or confidence < 0.60): 2"* ]]'
+
+# Bad files: FILE:LINE and a non-zero exit, never a crash.
+printf 'time_s,x,y\n0,0.5,0.5\n0.1,abc,0.5\n' > "$tmp/bad.csv"
+err=$("$FOVEATE" gaze stats "$tmp/bad.csv" 2>&1); rc=$?
+check "bad number: FILE:LINE" '[[ $rc -eq 1 && "$err" == *"bad.csv:3: x: '"'"'abc'"'"' is not a number"* ]]'
+printf 'time_s,x,y\n0,0.5\n' > "$tmp/short.csv"
+err=$("$FOVEATE" gaze stats "$tmp/short.csv" 2>&1); rc=$?
+check "short line: FILE:LINE" '[[ $rc -eq 1 && "$err" == *"short.csv:2: expected 3 fields"* ]]'
+printf 'when,where\n1,2\n' > "$tmp/hdr.csv"
+err=$("$FOVEATE" gaze stats "$tmp/hdr.csv" 2>&1); rc=$?
+check "bad header: FILE:LINE" '[[ $rc -eq 1 && "$err" == *"hdr.csv:1: the header needs"* ]]'
+printf 'time_s,x,y\n0,960,540\n' > "$tmp/px.csv"
+err=$("$FOVEATE" gaze stats "$tmp/px.csv" 2>&1); rc=$?
+check "pixels without saying so: a hint" '[[ $rc -eq 1 && "$err" == *"x_px,y_px"* ]]'
+out=$("$FOVEATE" gaze stats "$tmp/px.csv" --units px); rc=$?
+check "--units px reads it" '[[ $rc -eq 0 && "$out" == *"1 samples"* ]]'
+: > "$tmp/empty.csv"
+err=$("$FOVEATE" gaze stats "$tmp/empty.csv" 2>&1); rc=$?
+check "empty file" '[[ $rc -eq 1 && "$err" == *"empty file"* ]]'
+head -c 3000 /dev/urandom > "$tmp/random.csv"
+err=$("$FOVEATE" gaze stats "$tmp/random.csv" 2>&1); rc=$?
+check "random bytes: an error, not a crash" '[[ $rc -eq 1 && "$err" == *random.csv* ]]'
+printf '{"samples": [[0, 0.5' > "$tmp/trunc.json"
+err=$("$FOVEATE" gaze stats "$tmp/trunc.json" 2>&1); rc=$?
+check "truncated JSON" '[[ $rc -eq 1 && "$err" == *trunc.json* ]]'
+err=$("$FOVEATE" gaze stats "$tmp/missing.csv" 2>&1); rc=$?
+check "missing file" '[[ $rc -eq 1 && "$err" == *missing.csv* ]]'
+
+for args in "synth --out $tmp/x.csv --seconds 0" "synth --out $tmp/x.csv --rate 0" "synth --out $tmp/x.csv --seed -1" \
+            "stats $tmp/a.csv --time-unit h" "stats $tmp/a.csv --units mm" "stats $tmp/a.csv --velocity 0" \
+            "record --from tobii --out $tmp/r.csv" "record --from pupil:host:0 --out $tmp/r.csv" "synth" "stats"; do
+  err=$("$FOVEATE" gaze $args 2>&1); rc=$?
+  check "bad arguments '$args' fail with a message" '[[ $rc -ne 0 && -n "$err" ]]'
+done
+port=$(python3 -c "import socket; s=socket.socket(); s.bind(('127.0.0.1',0)); print(s.getsockname()[1]); s.close()")
+err=$(timeout 20 "$FOVEATE" gaze record --from "pupil:127.0.0.1:$port" --out "$tmp/r.csv" --connect-timeout 0.5 2>&1); rc=$?
+check "record without a tracker: a clear error in bounded time" '[[ $rc -eq 1 && "$err" == *"cannot reach Pupil Capture"* && ! -e "$tmp/r.csv" ]]'
+
+for sub in stats record synth; do
+  h=$("$FOVEATE" gaze $sub --help)
+  check "gaze $sub --help" '[[ $? -eq 0 && "$h" == *Usage* ]]'
+done
+check "stats help names the formats" '[[ $("$FOVEATE" gaze stats --help) == *gaze_positions.csv* ]]'
+ls "$tmp" | grep -q tmp- && { echo "FAIL: temporary files left"; fail=1; }
+exit $fail

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# `foveate gaze record --from pupil` against a local publisher speaking Pupil's
+# protocol (foveate_fake_pupil); then `gaze stats` on the recording.
+set -u
+fail=0
+check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
+tmp=$(mktemp -d)
+"$FAKE_PUPIL" 6 > "$tmp/port" &
+fake_pid=$!
+trap 'kill "$fake_pid" 2>/dev/null; wait "$fake_pid" 2>/dev/null; rm -rf "$tmp"' EXIT
+for _ in $(seq 100); do [[ -s "$tmp/port" ]] && break; sleep 0.05; done
+port=$(head -1 "$tmp/port")
+check "publisher started" '[[ -n "$port" ]]'
+
+out=$(timeout 20 "$FOVEATE" gaze record --from "pupil:127.0.0.1:$port" --out "$tmp/r.csv" --seconds 1.5 2>&1); rc=$?
+echo "$out"
+check "record exits 0" '[[ $rc -eq 0 ]]'
+check "record reports malformed frames" '[[ "$out" == *"malformed"* ]]'
+check "recording has the project header with latency" '[[ $(sed -n 2p "$tmp/r.csv") == "time_s,x,y,confidence,valid,latency_ms" ]]'
+n=$(($(wc -l < "$tmp/r.csv") - 2))
+check "about 200 Hz for 1.5 s recorded ($n samples)" '[[ $n -gt 150 && $n -lt 400 ]]'
+stats=$("$FOVEATE" gaze stats "$tmp/r.csv"); rc=$?
+echo "$stats"
+check "stats on the recording" '[[ $rc -eq 0 && "$stats" == *"none dropped"* && "$stats" == *"latency: median"* ]]'
+check "positions on the circle, y flipped to top-left" 'python3 - "$tmp/r.csv" <<PY
+import csv, math, sys
+rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))]
+for r in rows:
+    x, y = float(r["x"]), float(r["y"])
+    assert abs(math.hypot(x - 0.5, y - 0.5) - 0.2) < 1e-5, (x, y)
+    assert 0 <= float(r["latency_ms"]) < 500
+PY'
+exit $fail
