@@ -125,6 +125,7 @@ FilteredGaze GazeFilter::update(const GazeSample& s, double now_s) {
     if (!in_fallback_ && have_valid_) ++counters_.fallbacks;
     in_fallback_ = true;
     in_saccade_ = false;
+    settling_ = false;
     ++counters_.fallback_frames;
   }
   counters_.dropped = validator_.counts();
