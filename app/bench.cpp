@@ -100,7 +100,7 @@ BenchResult run_bench(const BenchOptions& o) {
     const auto* r = glGetString(GL_RENDERER);
     out.renderer = r ? reinterpret_cast<const char*>(r) : "";
   }
-  auto gaze = GazeInput::create(o.gaze, session);
+  GazeInput gaze(o.gaze, session);
 
   // The runs: each technique once, or once per swept value.
   struct Run {
@@ -161,7 +161,7 @@ BenchResult run_bench(const BenchOptions& o) {
   // Warm-up: compile shaders, allocate targets, fill temporal history.
   for (int k = 0; k < o.warmup; ++k) {
     const double t = session.frame_input(k).time_s;
-    const GazeState g = gaze->at(t);
+    const GazeState g = gaze.at(t);
     for (Run& r : runs) {
       session.render(*r.impl, k, g);
       progress.step("warm-up " + r.technique);
@@ -173,7 +173,7 @@ BenchResult run_bench(const BenchOptions& o) {
   for (int k = 0; k < o.frames; ++k) {
     const int frame = o.warmup + k;
     const double t = session.frame_input(frame).time_s;
-    const GazeState g = gaze->at(t);
+    const GazeState g = gaze.at(t);
     Image native_image;
     std::vector<std::pair<size_t, Image>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
@@ -212,6 +212,7 @@ BenchResult run_bench(const BenchOptions& o) {
     if (k + 1 == o.frames) out.native_sample = runs[0].result.sample;
   }
 
+  out.gaze_report = gaze.report();
   const std::vector<double> native_ms =
       runs[0].result.frame_ms;  // a copy: results are moved out below
   const double native_median = percentile(native_ms, 0.5);

@@ -53,6 +53,7 @@ struct BenchResult {
   std::vector<TechniqueResult> results;
   Image native_sample;
   Vec2d sample_gaze_px;
+  std::string gaze_report;
 };
 
 BenchResult run_bench(const BenchOptions& options);

@@ -121,7 +121,8 @@ void add_common(CLI::App* sub, BenchArgs& a) {
   sub->add_option("--frames", a.frames, "Measured frames per technique")->capture_default_str();
   sub->add_option("--warmup", a.warmup, "Warm-up frames per technique (not measured)")
       ->capture_default_str();
-  sub->add_option("--gaze", a.gaze, "Gaze: X,Y | fixed:X,Y (pixels or normalized); default centre");
+  sub->add_option("--gaze", a.gaze,
+                  "Gaze: X,Y | fixed:X,Y | trace:FILE | synthetic[:SEED] | pupil[:HOST:PORT] | nearest; default centre");
   sub->add_option("--camera-path", a.camera_path, "Camera keyframes JSON");
   sub->add_option("--channel", a.channels,
                   "iChannel images for a Shadertoy shader (repeat, in order)");

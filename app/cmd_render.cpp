@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "gaze_input.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -55,13 +56,13 @@ void run_render(const RenderArgs& a) {
   }
   const ParamArgs params = parse_params(a.params);
   validate_params(params, {a.technique});
-  const GazeState gaze{a.gaze.empty() ? Vec2d{0.5 * o.size.width, 0.5 * o.size.height}
-                                      : parse_point(a.gaze, o.size.width, o.size.height, "--gaze")};
   std::filesystem::create_directories(a.out);
   Session session(o);
+  GazeInput gaze_input(a.gaze, session);
   auto technique = session.make(a.technique, params);
   double shaded = 0, native = 0;
   for (int k = 0; k < a.frames; ++k) {
+    const GazeState gaze = gaze_input.at(session.frame_input(k).time_s);
     const FrameStats s = session.render(*technique, k, gaze, a.overlay);
     shaded += s.shaded_pixels;
     native += s.native_pixels;
@@ -73,7 +74,8 @@ void run_render(const RenderArgs& a) {
             << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out
             << "/\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
-            << fmt(100.0 * shaded / native, 1) << " % of native)\n";
+            << fmt(100.0 * shaded / native, 1) << " % of native)\n"
+            << gaze_input.report() << "\n";
 }
 
 }  // namespace

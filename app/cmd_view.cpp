@@ -60,7 +60,13 @@ void run_view(const ViewArgs& a) {
   (void)technique_info(a.technique);
   validate_params(params, {a.technique});
   auto technique = session.make(names[current], params);
-  std::unique_ptr<GazeInput> fixed = a.gaze.empty() ? nullptr : GazeInput::create(a.gaze, session);
+  // The mouse is the gaze unless --gaze says otherwise (normalized, top-left).
+  gpu::Window::Input last_input;
+  GazeInput gaze_input(a.gaze.empty() ? "mouse" : a.gaze, session, [&]() -> std::optional<Vec2d> {
+    if (!last_input.mouse_inside) return std::nullopt;
+    return Vec2d{last_input.mouse_x / session.window()->framebuffer_width(),
+                 last_input.mouse_y / session.window()->framebuffer_height()};
+  });
   bool overlay = a.overlay;
   gpu::FrameTimer timer;
   const auto start = std::chrono::steady_clock::now();
@@ -75,6 +81,7 @@ void run_view(const ViewArgs& a) {
                   .c_str());
   for (int frame = 0; a.frames == 0 || frame < a.frames; ++frame) {
     const gpu::Window::Input in = session.window()->poll();
+    last_input = in;
     if (in.should_close) break;
     bool quit = false;
     for (int key : in.keys_pressed) {
@@ -88,16 +95,7 @@ void run_view(const ViewArgs& a) {
     if (quit) break;
     const double t =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    GazeState gaze;
-    if (fixed) {
-      gaze = fixed->at(t);
-    } else {
-      // The mouse is the gaze (window pixels scaled to the render size).
-      const double sx = double(o.size.width) / session.window()->framebuffer_width();
-      const double sy = double(o.size.height) / session.window()->framebuffer_height();
-      gaze.gaze_px = in.mouse_inside ? Vec2d{in.mouse_x * sx, in.mouse_y * sy}
-                                     : Vec2d{0.5 * o.size.width, 0.5 * o.size.height};
-    }
+    const GazeState gaze = gaze_input.at(t);
     timer.start();
     const FrameStats s = session.render(*technique, frame, gaze, overlay);
     const double ms = timer.stop();
@@ -128,7 +126,7 @@ void register_view(CLI::App& app) {
   sub->add_option("--quality", a->quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", a->slope, "Custom MAR slope m");
   sub->add_option("--param", a->params, "Technique parameter KEY=VALUE (repeatable)");
-  sub->add_option("--gaze", a->gaze, "Fixed gaze X,Y instead of the mouse");
+  sub->add_option("--gaze", a->gaze, "Gaze source instead of the mouse (X,Y | trace:FILE | synthetic | pupil[:HOST:PORT])");
   sub->add_option("--display", a->display, "Display preset or JSON file")->capture_default_str();
   sub->add_option("--camera-path", a->camera_path, "Camera keyframes JSON");
   sub->add_option("--channel", a->channels, "iChannel images for a Shadertoy shader");
