@@ -1,0 +1,201 @@
+// The whole-frame comparison, its JSON form and the heatmaps.
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "foveate/core/error.hpp"
+#include "internal.hpp"
+
+namespace foveate::metrics {
+
+namespace {
+
+void check_options(const QualityOptions& o) {
+  const auto& e = o.band_edges_deg;
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (!std::isfinite(e[i]) || e[i] < 0.0) {
+      throw Error("quality options: band edges must be finite and >= 0 degrees");
+    }
+    if (i > 0 && e[i] <= e[i - 1]) throw Error("quality options: band edges must be ascending");
+  }
+  if (e.size() > 250) throw Error("quality options: at most 250 bands");
+  if (!(o.visible_threshold >= 0.0)) throw Error("quality options: visible_threshold must be >= 0");
+  if (!(o.acuity.slope > 0.0) || !(o.acuity.w0_deg > 0.0)) {
+    throw Error("quality options: the acuity model needs slope > 0 and w0 > 0");
+  }
+}
+
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+std::vector<std::uint8_t> band_indices(const Map& ecc, const std::vector<double>& edges) {
+  std::vector<std::uint8_t> out(ecc.values.size(), 255);
+  for (size_t i = 0; i < ecc.values.size(); ++i) {
+    const double e = ecc.values[i];
+    // upper_bound: the first edge above e; the band is the one before it.
+    const auto it = std::upper_bound(edges.begin(), edges.end(), e);
+    if (it != edges.begin()) out[i] = static_cast<std::uint8_t>(it - edges.begin() - 1);
+  }
+  return out;
+}
+
+QualityReport compare(const Image& reference, const Image& test, const Display& display, Vec2d gaze,
+                      const QualityOptions& options) {
+  detail::check_same_size(reference, test, "compare");
+  check_options(options);
+  if (display.width_px != reference.width || display.height_px != reference.height) {
+    throw Error("compare: display '" + display.name + "' is " + std::to_string(display.width_px) +
+                "x" + std::to_string(display.height_px) + " but the images are " +
+                std::to_string(reference.width) + "x" + std::to_string(reference.height) +
+                " (use Display::resized)");
+  }
+  const int w = reference.width, h = reference.height;
+  const size_t n = static_cast<size_t>(w) * h;
+  QualityReport r;
+  r.width = w;
+  r.height = h;
+  r.acuity_threshold = options.visible_threshold;
+
+  // Per-pixel squared error (RGB mean) for the global and per-band PSNR.
+  std::vector<float> sq(n);
+  {
+    const std::uint8_t* a = reference.rgba.data();
+    const std::uint8_t* b = test.rgba.data();
+    for (size_t i = 0; i < n; ++i, a += 4, b += 4) {
+      int s = 0;
+      for (int c = 0; c < 3; ++c) s += (int(a[c]) - int(b[c])) * (int(a[c]) - int(b[c]));
+      sq[i] = static_cast<float>(s);
+    }
+  }
+  const Map ssim = ssim_map(reference, test);
+  const Map ecc = eccentricity_map(display, gaze);
+  const Map diff = detail::acuity_difference_with_sigma(
+      reference, test, detail::acuity_sigma_from_eccentricity(ecc, display, gaze, options.acuity));
+  Map flip;
+  if (options.flip) {
+    r.flip_ppd = display.pixels_per_degree(gaze, gaze);
+    flip = flip_map(reference, test, r.flip_ppd);
+  }
+
+  const std::vector<std::uint8_t> band = band_indices(ecc, options.band_edges_deg);
+  const size_t nb = options.band_edges_deg.size();
+  struct Acc {
+    double sq = 0, ssim = 0, flip = 0, acu = 0, count = 0;
+  };
+  std::vector<Acc> acc(nb + 1);  // the last one is the whole image
+  double visible = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double d = diff.values[i];
+    visible += std::fabs(d) > options.visible_threshold ? 1.0 : 0.0;
+    for (size_t k : {size_t(band[i]), nb}) {
+      if (k > nb) continue;  // pixel below the first band edge
+      Acc& x = acc[k];
+      x.sq += sq[i];
+      x.ssim += ssim.values[i];
+      x.acu += d * d;
+      x.count += 1;
+      if (options.flip) x.flip += flip.values[i];
+    }
+  }
+  auto psnr = [](const Acc& x) {
+    if (x.count == 0) return kNaN;
+    const double m = x.sq / (3.0 * x.count);
+    return m == 0.0 ? kInf : 10.0 * std::log10(255.0 * 255.0 / m);
+  };
+  const Acc& all = acc[nb];
+  r.psnr_db = psnr(all);
+  r.ssim = all.ssim / all.count;
+  r.acuity_rmse = std::sqrt(all.acu / all.count);
+  r.acuity_visible_fraction = visible / all.count;
+  r.flip_mean = options.flip ? all.flip / all.count : kNaN;
+  for (size_t k = 0; k < nb; ++k) {
+    BandStats b;
+    b.from_deg = options.band_edges_deg[k];
+    b.to_deg = k + 1 < nb ? options.band_edges_deg[k + 1] : kInf;
+    const Acc& x = acc[k];
+    b.pixels_fraction = x.count / all.count;
+    if (x.count > 0) {
+      b.psnr_db = psnr(x);
+      b.ssim = x.ssim / x.count;
+      b.acuity_rmse = std::sqrt(x.acu / x.count);
+      if (options.flip) b.flip_mean = x.flip / x.count;
+    }
+    r.bands.push_back(b);
+  }
+  return r;
+}
+
+nlohmann::json to_json(const QualityReport& r) {
+  nlohmann::json j;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["identical"] = std::isinf(r.psnr_db);
+  j["psnr_db"] = number(r.psnr_db);
+  j["ssim"] = number(r.ssim);
+  j["acuity_rmse"] = number(r.acuity_rmse);
+  j["acuity_visible_fraction"] = number(r.acuity_visible_fraction);
+  j["acuity_threshold"] = r.acuity_threshold;
+  j["flip_mean"] = number(r.flip_mean);
+  j["flip_ppd"] = number(r.flip_ppd);
+  nlohmann::json bands = nlohmann::json::array();
+  for (const BandStats& b : r.bands) {
+    bands.push_back({{"from_deg", b.from_deg},
+                     {"to_deg", number(b.to_deg)},
+                     {"pixels_fraction", b.pixels_fraction},
+                     {"identical", std::isinf(b.psnr_db)},
+                     {"psnr_db", number(b.psnr_db)},
+                     {"ssim", number(b.ssim)},
+                     {"acuity_rmse", number(b.acuity_rmse)},
+                     {"flip_mean", number(b.flip_mean)}});
+  }
+  j["bands"] = bands;
+  return j;
+}
+
+void heat_color(double t, std::uint8_t rgb[3]) {
+  // Anchors at t = 0, 0.25, 0.5, 0.75, 1: black, purple, red, orange, pale yellow.
+  static constexpr double kAnchors[5][3] = {
+      {0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}};
+  if (!(t > 0.0)) t = 0.0;  // also NaN
+  t = std::min(t, 1.0) * 4.0;
+  const int i = std::min(static_cast<int>(t), 3);
+  const double f = t - i;
+  for (int c = 0; c < 3; ++c) {
+    const double v = kAnchors[i][c] + f * (kAnchors[i + 1][c] - kAnchors[i][c]);
+    rgb[c] = static_cast<std::uint8_t>(std::lround(v));
+  }
+}
+
+Image heatmap(const Map& values, double max_value) {
+  if (!(max_value > 0.0)) throw Error("heatmap: the top of the colour scale must be > 0");
+  Image out(values.width, values.height);
+  for (size_t i = 0; i < values.values.size(); ++i) {
+    std::uint8_t* p = &out.rgba[i * 4];
+    heat_color(double(values.values[i]) / max_value, p);
+    p[3] = 255;
+  }
+  return out;
+}
+
+Image error_heatmap(const Image& reference, const Image& test, double max_error) {
+  detail::check_same_size(reference, test, "error_heatmap");
+  Map m(reference.width, reference.height);
+  const std::uint8_t* a = reference.rgba.data();
+  const std::uint8_t* b = test.rgba.data();
+  for (size_t i = 0; i < m.values.size(); ++i, a += 4, b += 4) {
+    int e = 0;
+    for (int c = 0; c < 3; ++c) e = std::max(e, std::abs(int(a[c]) - int(b[c])));
+    m.values[i] = static_cast<float>(e);
+  }
+  return heatmap(m, max_error);
+}
+
+Image acuity_error_heatmap(const Image& reference, const Image& test, const Display& display,
+                           Vec2d gaze, const QualityOptions& options, double max_error) {
+  Map d = acuity_difference(reference, test, display, gaze, options.acuity);
+  for (float& v : d.values) v = std::fabs(v);
+  return heatmap(d, max_error);
+}
+
+}  // namespace foveate::metrics
