@@ -18,6 +18,7 @@ QualityAccumulator::QualityAccumulator(const Display& display, const AcuityModel
     : impl_(std::make_unique<Impl>()) {
   impl_->display = display;
   impl_->options.acuity = acuity;
+  impl_->flicker = metrics::FlickerTracker(display);
 }
 
 QualityAccumulator::~QualityAccumulator() = default;
