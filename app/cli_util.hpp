@@ -6,6 +6,7 @@
 
 #include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate::app {
 
@@ -16,9 +17,6 @@ struct Size {
 
 /// "WxH", each 1..16384.
 Size parse_size(const std::string& text, const std::string& option);
-/// "X,Y" in pixels, or normalized when both values are written with a decimal
-/// point and lie in [0, 1] (e.g. "0.5,0.5"). Points outside the screen are allowed.
-Vec2d parse_point(const std::string& text, int width, int height, const std::string& option);
 /// --quality A|B or --slope M (at most one); defaults to quality A.
 AcuityModel acuity_from_options(const std::string& quality, std::optional<double> slope);
 /// Formats a number with `digits` decimals.

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/gaze/pupil.hpp"
 #include "foveate/gaze/synthetic.hpp"
 #include "foveate/gaze/trace.hpp"
@@ -109,13 +110,6 @@ std::optional<DropReason> SampleValidator::check(const GazeSample& s) {
 
 namespace {
 
-bool parse_double(const std::string& s, double& out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  out = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size() && std::isfinite(out);
-}
-
 class FixedSource final : public GazeSource {
  public:
   explicit FixedSource(Vec2d pos) : pos_(pos) {}
@@ -148,22 +142,8 @@ class MouseSource final : public GazeSource {
 };
 
 Vec2d parse_fixed(const std::string& text, const Display& d) {
-  const auto c = text.find(',');
-  double x = 0, y = 0;
-  if (c == std::string::npos || !parse_double(text.substr(0, c), x) ||
-      !parse_double(text.substr(c + 1), y)) {
-    throw Error(
-        "--gaze fixed: expected X,Y in pixels or normalized (e.g. 960,540 or 0.5,0.5), got '" +
-        text + "'");
-  }
-  const std::string sx = text.substr(0, c), sy = text.substr(c + 1);
-  const bool normalized = sx.find('.') != std::string::npos && sy.find('.') != std::string::npos &&
-                          x >= 0.0 && x <= 1.0 && y >= 0.0 && y <= 1.0;
-  if (normalized) return {x, y};
-  if (std::fabs(x) > 1e6 || std::fabs(y) > 1e6) {
-    throw Error("--gaze fixed: point '" + text + "' is absurdly far off screen");
-  }
-  return {x / d.width_px, y / d.height_px};
+  const Vec2d px = parse_point(text, d.width_px, d.height_px, "--gaze fixed");
+  return {px.x / d.width_px, px.y / d.height_px};
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // really saved; a reconstruction pass fills them from the shaded neighbours
 // using an explicit coverage mask (alpha), so a black pixel is a valid pixel.
 #include <cmath>
+#include <tuple>
 
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
@@ -36,10 +37,7 @@ CheckerParams derive(const TechniqueConfig& c, Params& p) {
 class Checkerboard final : public Technique {
  public:
   explicit Checkerboard(const TechniqueConfig& c) : display_(c.display) {
-    Params p("checkerboard", c);
-    opt_ = derive(c, p);
-    p.finish();
-    values_ = p.values();
+    std::tie(opt_, values_) = derive_options<CheckerParams>("checkerboard", c, derive);
     CheckerboardPattern pat;
     pat.block = opt_.block;
     pat.thresholds_px = opt_.thresholds_px;
@@ -133,13 +131,6 @@ class Checkerboard final : public Technique {
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> checkerboard_defaults(const TechniqueConfig& c) {
-  Params p("checkerboard", c);
-  derive(c, p);
-  p.finish();
-  return p.values();
-}
-
 TechniqueInfo checkerboard_info() {
   return {
       "checkerboard",
@@ -154,7 +145,10 @@ TechniqueInfo checkerboard_info() {
        {"r1", "radius (px) where region 1 (drop 1 of 4) begins", 0, 1e6, false},
        {"r2", "radius (px) where region 2 (drop 2 of 4) begins", 0, 1e6, false},
        {"r3", "radius (px) where region 3 (drop 3 of 4) begins", 0, 1e6, false}},
-      [](const TechniqueConfig& c) { return std::make_unique<Checkerboard>(c); }};
+      [](const TechniqueConfig& c) { return std::make_unique<Checkerboard>(c); },
+      [](const TechniqueConfig& c) {
+        return derive_options<CheckerParams>("checkerboard", c, derive).second;
+      }};
 }
 
 }  // namespace foveate::tech

@@ -31,6 +31,18 @@ class Params {
   std::vector<std::pair<std::string, double>> values_;
 };
 
+/// Derives a technique's options from the configuration with
+/// `derive(config, params)`, then checks that every override was used.
+/// Returns the options and every parameter value in use.
+template <class Options, class Derive>
+std::pair<Options, std::vector<std::pair<std::string, double>>> derive_options(
+    const std::string& technique, const TechniqueConfig& config, Derive derive) {
+  Params p(technique, config);
+  Options o = derive(config, p);
+  p.finish();
+  return {o, p.values()};
+}
+
 /// Compiler over gpu, scenes and techniques GLSL; a full-screen triangle VAO.
 class Kit {
  public:

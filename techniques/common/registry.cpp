@@ -31,7 +31,7 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
 
 std::vector<std::pair<std::string, double>> default_parameters(const std::string& name,
                                                                const TechniqueConfig& config) {
-  return tech::derive_parameters(name, config);
+  return technique_info(name).defaults(config);
 }
 
 struct OverlayRenderer::Impl {

@@ -4,6 +4,7 @@
 // foveal inset, whose diameter follows the latency-aware formula (eq. 1), is
 // blended over it with a vignette mask.
 #include <cmath>
+#include <tuple>
 
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
@@ -38,10 +39,7 @@ InsetParams derive(const TechniqueConfig& c, Params& p) {
 class Inset final : public Technique {
  public:
   explicit Inset(const TechniqueConfig& c) : display_(c.display) {
-    Params p("inset", c);
-    opt_ = derive(c, p);
-    p.finish();
-    values_ = p.values();
+    std::tie(opt_, values_) = derive_options<InsetParams>("inset", c, derive);
   }
   std::string name() const override { return "inset"; }
   std::vector<std::pair<std::string, double>> parameters() const override {
@@ -133,13 +131,6 @@ class Inset final : public Technique {
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> inset_defaults(const TechniqueConfig& c) {
-  Params p("inset", c);
-  derive(c, p);
-  p.finish();
-  return p.values();
-}
-
 TechniqueInfo inset_info() {
   return {
       "inset",
@@ -155,7 +146,10 @@ TechniqueInfo inset_info() {
         false},
        {"saccade_deg_per_s", "maximal saccade speed S_max", 0.0, 1000.0, false},
        {"blur", "upscale blur radius in periphery texels (0 = plain bilinear)", 0.0, 4.0, false}},
-      [](const TechniqueConfig& c) { return std::make_unique<Inset>(c); }};
+      [](const TechniqueConfig& c) { return std::make_unique<Inset>(c); },
+      [](const TechniqueConfig& c) {
+        return derive_options<InsetParams>("inset", c, derive).second;
+      }};
 }
 
 }  // namespace foveate::tech

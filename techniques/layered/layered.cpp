@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
@@ -51,10 +52,7 @@ double halton(int i, int b) {
 class Layered final : public Technique {
  public:
   explicit Layered(const TechniqueConfig& c) : display_(c.display) {
-    Params p("layered", c);
-    opt_ = derive(c, p);
-    p.finish();
-    values_ = p.values();
+    std::tie(opt_, values_) = derive_options<LayeredParams>("layered", c, derive);
     PlannerOptions po;
     po.layers = opt_.layers;
     po.grid_step_deg = opt_.grid_step;
@@ -245,13 +243,6 @@ class Layered final : public Technique {
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> layered_defaults(const TechniqueConfig& c) {
-  Params p("layered", c);
-  derive(c, p);
-  p.finish();
-  return p.values();
-}
-
 const LayerPlan* layered_plan(const Technique& t) {
   const auto* l = dynamic_cast<const Layered*>(&t);
   return l ? &l->plan() : nullptr;
@@ -269,7 +260,10 @@ TechniqueInfo layered_info() {
            {"history", "weight of the reprojected history in the temporal blend (0 = off)", 0.0,
             0.95, false},
            {"grid_step", "planner search step in degrees", 0.01, 1.0, false}},
-          [](const TechniqueConfig& c) { return std::make_unique<Layered>(c); }};
+          [](const TechniqueConfig& c) { return std::make_unique<Layered>(c); },
+          [](const TechniqueConfig& c) {
+            return derive_options<LayeredParams>("layered", c, derive).second;
+          }};
 }
 
 }  // namespace foveate::tech

@@ -5,6 +5,7 @@
 // deferred. The circles come from the acuity model: the eye resolves half the
 // display's detail beyond e where w(e) = 2 w*, a quarter beyond w(e) = 4 w*.
 #include <cmath>
+#include <tuple>
 
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
@@ -31,10 +32,7 @@ LodParams derive(const TechniqueConfig& c, Params& p) {
 class LodMask final : public Technique {
  public:
   explicit LodMask(const TechniqueConfig& c) : display_(c.display) {
-    Params p("lodmask", c);
-    opt_ = derive(c, p);
-    p.finish();
-    values_ = p.values();
+    std::tie(opt_, values_) = derive_options<LodParams>("lodmask", c, derive);
   }
   std::string name() const override { return "lodmask"; }
   std::vector<std::pair<std::string, double>> parameters() const override { return values_; }
@@ -125,13 +123,6 @@ class LodMask final : public Technique {
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> lodmask_defaults(const TechniqueConfig& c) {
-  Params p("lodmask", c);
-  derive(c, p);
-  p.finish();
-  return p.values();
-}
-
 TechniqueInfo lodmask_info() {
   return {
       "lodmask",
@@ -142,19 +133,10 @@ TechniqueInfo lodmask_info() {
         90.0, false},
        {"outer_deg", "radius of the mid-detail circle in degrees; default where w(e) = 4 w*", 0.0,
         90.0, false}},
-      [](const TechniqueConfig& c) { return std::make_unique<LodMask>(c); }};
-}
-
-std::vector<std::pair<std::string, double>> derive_parameters(const std::string& name,
-                                                              const TechniqueConfig& c) {
-  if (name == "native") return {};
-  if (name == "layered") return layered_defaults(c);
-  if (name == "logpolar") return logpolar_defaults(c);
-  if (name == "checkerboard") return checkerboard_defaults(c);
-  if (name == "lodmask") return lodmask_defaults(c);
-  if (name == "inset") return inset_defaults(c);
-  (void)technique_info(name);  // throws for unknown names
-  return {};
+      [](const TechniqueConfig& c) { return std::make_unique<LodMask>(c); },
+      [](const TechniqueConfig& c) {
+        return derive_options<LodParams>("lodmask", c, derive).second;
+      }};
 }
 
 }  // namespace foveate::tech

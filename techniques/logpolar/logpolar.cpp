@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
@@ -61,10 +62,7 @@ LogPolarParams derive(const TechniqueConfig& c, Params& p) {
 class LogPolar final : public Technique {
  public:
   explicit LogPolar(const TechniqueConfig& c) : display_(c.display) {
-    Params p("logpolar", c);
-    opt_ = derive(c, p);
-    p.finish();
-    values_ = p.values();
+    std::tie(opt_, values_) = derive_options<LogPolarParams>("logpolar", c, derive);
     model_ = KernelLogPolar{double(display_.width_px), double(display_.height_px), opt_.sigma,
                             opt_.alpha};
     model_.validate();
@@ -167,13 +165,6 @@ class LogPolar final : public Technique {
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> logpolar_defaults(const TechniqueConfig& c) {
-  Params p("logpolar", c);
-  derive(c, p);
-  p.finish();
-  return p.values();
-}
-
 TechniqueInfo logpolar_info() {
   return {"logpolar",
           "Shading in a kernel log-polar buffer (W/sigma x H/sigma, K(x) = x^alpha), mapped back "
@@ -184,7 +175,10 @@ TechniqueInfo logpolar_info() {
            {"alpha", "kernel exponent, K(x) = x^alpha; default from the acuity model within [1, 4]",
             0.25, 8.0, false},
            {"blur", "antialiasing Gaussian sigma in buffer texels (0 = off)", 0.0, 3.0, false}},
-          [](const TechniqueConfig& c) { return std::make_unique<LogPolar>(c); }};
+          [](const TechniqueConfig& c) { return std::make_unique<LogPolar>(c); },
+          [](const TechniqueConfig& c) {
+            return derive_options<LogPolarParams>("logpolar", c, derive).second;
+          }};
 }
 
 }  // namespace foveate::tech

@@ -46,7 +46,8 @@ TechniqueInfo native_info() {
           "Non-foveated reference: every pixel shaded at the display's resolution.",
           "-",
           {},
-          [](const TechniqueConfig& c) { return std::make_unique<Native>(c); }};
+          [](const TechniqueConfig& c) { return std::make_unique<Native>(c); },
+          [](const TechniqueConfig&) { return std::vector<std::pair<std::string, double>>{}; }};
 }
 
 }  // namespace foveate::tech

@@ -86,6 +86,8 @@ struct TechniqueInfo {
   std::string source;  ///< the paper it implements
   std::vector<ParamSpec> params;
   std::function<std::unique_ptr<Technique>(const TechniqueConfig&)> make;
+  /// The parameter values `make` would use (derived defaults + overrides), without GL.
+  std::function<std::vector<std::pair<std::string, double>>(const TechniqueConfig&)> defaults;
 };
 
 /// All techniques, in a stable order: native, layered, logpolar, checkerboard, lodmask, inset.

@@ -1,0 +1,19 @@
+#pragma once
+// Parsing of the small values users type: numbers and screen points. Errors
+// name the option they came from.
+#include <string>
+
+#include "foveate/core/display.hpp"
+
+namespace foveate {
+
+/// The whole string as a finite number; false otherwise.
+bool parse_number(const std::string& text, double& out);
+
+/// "X,Y" in pixels, or normalized when both values are written with a decimal
+/// point and lie in [0, 1] (e.g. "0.5,0.5"); returned in pixels of a
+/// width x height screen, origin top-left. Points off the screen are allowed;
+/// throws foveate::Error naming `option` for anything else.
+Vec2d parse_point(const std::string& text, int width, int height, const std::string& option);
+
+}  // namespace foveate
