@@ -218,6 +218,9 @@ namespace foveate {
 std::vector<SceneListing> builtin_scenes() {
   std::vector<SceneListing> out;
   for (const auto& b : detail::kBuiltins) out.push_back({b.name, b.description});
+  out.push_back({"guenter",
+                 "the test scene of Guenter et al.: terrain, 20x20 parametric objects, procedural materials, "
+                 "environment map, continuous LOD (meshes: every technique incl. lodmask)"});
   return out;
 }
 

@@ -1,0 +1,21 @@
+// Fills the G-buffer: albedo and material id, normal and gloss, world position.
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+uniform vec4 u_base_color;
+uniform sampler2D u_albedo_tex;
+uniform int u_has_tex;
+uniform float u_material;
+uniform float u_gloss;
+layout(location = 0) out vec4 o_albedo;
+layout(location = 1) out vec4 o_normal;
+layout(location = 2) out vec4 o_position;
+void main() {
+  vec3 c = u_base_color.rgb;
+  if (u_has_tex != 0) c *= pow(texture(u_albedo_tex, v_uv).rgb, vec3(2.2));  // sRGB texels to linear
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  o_albedo = vec4(c, u_material / 255.0);
+  o_normal = vec4(n, u_gloss);
+  o_position = vec4(v_world, 1.0);
+}

@@ -1,0 +1,242 @@
+#include "mesh_common.hpp"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <numbers>
+
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/frame.hpp"
+#include "foveate_embedded/scenes_shaders.hpp"
+
+namespace foveate::detail {
+
+namespace {
+
+void bounds_of(const std::vector<Vertex>& v, glm::vec3& centre, float& radius) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const Vertex& x : v) {
+    lo = glm::min(lo, glm::vec3(x.px, x.py, x.pz));
+    hi = glm::max(hi, glm::vec3(x.px, x.py, x.pz));
+  }
+  centre = 0.5f * (lo + hi);
+  radius = 0.5f * glm::length(hi - lo);
+}
+
+GpuMesh make_gpu(const std::vector<Vertex>& vertices, const std::vector<unsigned>& indices,
+                 std::vector<GpuMesh::Lod> lods) {
+  GpuMesh m;
+  m.vertices = gpu::Buffer::create(static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
+  m.indices = gpu::Buffer::create(static_cast<GLsizeiptr>(indices.size() * sizeof(unsigned)), indices.data());
+  m.vao = gpu::VertexArray::create();
+  const GLuint vao = m.vao.id();
+  glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao, m.indices.id());
+  for (GLuint a = 0; a < 3; ++a) glEnableVertexArrayAttrib(vao, a);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, px));
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, nx));
+  glVertexArrayAttribFormat(vao, 2, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, u));
+  for (GLuint a = 0; a < 3; ++a) glVertexArrayAttribBinding(vao, a, 0);
+  m.lods = std::move(lods);
+  bounds_of(vertices, m.centre, m.radius);
+  return m;
+}
+
+}  // namespace
+
+GpuMesh upload_mesh(const MeshData& data, int lod_count) {
+  if (data.indices.size() < 3) throw Error("mesh has no triangles");
+  std::vector<unsigned> all = data.indices;
+  std::vector<GpuMesh::Lod> lods{{0, static_cast<GLsizei>(data.indices.size()), 0.0f}};
+  const float scale = meshopt_simplifyScale(&data.vertices[0].px, data.vertices.size(), sizeof(Vertex));
+  std::vector<unsigned> source = data.indices;
+  for (int l = 1; l < lod_count; ++l) {
+    // About a tenth of the previous level's triangles.
+    const size_t target = std::max<size_t>(3, (source.size() / 3 / 10) * 3);
+    std::vector<unsigned> out(source.size());
+    float error = 0.0f;
+    size_t n = meshopt_simplify(out.data(), source.data(), source.size(), &data.vertices[0].px, data.vertices.size(),
+                                sizeof(Vertex), target, 1.0f, 0, &error);
+    if (n > target * 2) {
+      // Topology kept the simplifier from getting there: drop connectivity.
+      n = meshopt_simplifySloppy(out.data(), source.data(), source.size(), &data.vertices[0].px,
+                                 data.vertices.size(), sizeof(Vertex), target, 1.0f, &error);
+    }
+    if (n < 3) {  // nothing left: keep the previous level
+      lods.push_back(lods.back());
+      continue;
+    }
+    out.resize(n);
+    lods.push_back({static_cast<GLsizei>(all.size()), static_cast<GLsizei>(n),
+                    std::max(lods.back().error, error * scale)});
+    all.insert(all.end(), out.begin(), out.end());
+    source = std::move(out);
+  }
+  return make_gpu(data.vertices, all, std::move(lods));
+}
+
+GpuMesh upload_levels(const std::vector<MeshData>& levels) {
+  std::vector<Vertex> vertices;
+  std::vector<unsigned> indices;
+  std::vector<GpuMesh::Lod> lods;
+  for (const MeshData& m : levels) {
+    const auto base = static_cast<unsigned>(vertices.size());
+    lods.push_back({static_cast<GLsizei>(indices.size()), static_cast<GLsizei>(m.indices.size()), 0.0f});
+    vertices.insert(vertices.end(), m.vertices.begin(), m.vertices.end());
+    for (unsigned i : m.indices) indices.push_back(base + i);
+  }
+  return make_gpu(vertices, indices, std::move(lods));
+}
+
+void GBuffer::ensure(int w, int h) {
+  if (fbo && width == w && height == h) return;
+  width = w;
+  height = h;
+  albedo = gpu::Texture::create_2d(GL_RGBA8, w, h);
+  normal = gpu::Texture::create_2d(GL_RGBA16F, w, h);
+  position = gpu::Texture::create_2d(GL_RGBA32F, w, h);
+  for (gpu::Texture* t : {&albedo, &normal, &position}) t->set_filter(GL_NEAREST, GL_NEAREST);
+  depth_stencil = gpu::Renderbuffer::create(GL_DEPTH24_STENCIL8, w, h);
+  fbo = gpu::Framebuffer::create();
+  fbo.attach(GL_COLOR_ATTACHMENT0, albedo);
+  fbo.attach(GL_COLOR_ATTACHMENT1, normal);
+  fbo.attach(GL_COLOR_ATTACHMENT2, position);
+  fbo.attach(GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil);
+  fbo.set_draw_buffers(3);
+  fbo.check("G-buffer");
+}
+
+gpu::Texture texture_from_image(const Image& image) { return gpu::upload_image(image, true); }
+
+MeshSceneBase::MeshSceneBase(std::string name, std::string description, CameraPath camera)
+    : name_(std::move(name)), description_(std::move(description)), camera_(std::move(camera)) {
+  gpu::ShaderCompiler c({embedded::scenes_shaders()});
+  prepass_program_ = c.build("gbuffer.vert", "gbuffer.frag");
+}
+
+SceneInfo MeshSceneBase::info() const { return {name_, description_, true, has_lods_, full_triangles_}; }
+
+void MeshSceneBase::update(const FrameInput& frame) {
+  frame_ = frame;
+  pose_ = camera_.at(frame.time_s);
+}
+
+double MeshSceneBase::focal_px() const {
+  return 0.5 * frame_.height / std::tan(0.5 * pose_.fov_deg * std::numbers::pi / 180.0);
+}
+
+glm::mat4 MeshSceneBase::view_projection(const View& v) const {
+  const double n = std::max(0.01, scene_radius_ * 0.002), f = scene_radius_ * 20.0;
+  return glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, v.x0, v.y0, v.x1, v.y1, n, f) *
+                   view_matrix(pose_));
+}
+
+bool MeshSceneBase::visible(const glm::mat4& m, glm::vec3 c, float r) const {
+  // Gribb-Hartmann planes of the view-projection matrix.
+  const glm::mat4 t = glm::transpose(m);
+  const glm::vec4 planes[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+  for (const glm::vec4& p : planes) {
+    const float len = glm::length(glm::vec3(p));
+    if (glm::dot(glm::vec3(p), c) + p.w < -r * len) return false;
+  }
+  return true;
+}
+
+void MeshSceneBase::prepass_begin(const View& view) {
+  last_view_ = view;
+  view_proj_ = view_projection(view);
+  gbuffer_.ensure(view.target_width, view.target_height);
+  gbuffer_.fbo.bind();
+  glViewport(0, 0, view.target_width, view.target_height);
+  const float zero[4] = {0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gbuffer_.fbo.id(), GL_COLOR, i, zero);
+  glClearNamedFramebufferfi(gbuffer_.fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);  // no face culling: files disagree on winding
+}
+
+void MeshSceneBase::prepass_draw(const View& view, int lod) {
+  const gpu::Program& p = prepass_program_;
+  p.use();
+  p.set_mat4("u_view_proj", glm::value_ptr(view_proj_));
+  p.set("u_albedo_tex", 0);
+  const double focal = focal_px();
+  const glm::vec3 eye(pose_.position);
+  for (DrawItem& item : items(view, lod)) {
+    const GpuMesh& m = *item.mesh;
+    const glm::vec3 c = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
+    const float scale = glm::length(glm::vec3(item.model[0]));
+    if (!visible(view_proj_, c, m.radius * scale)) continue;
+    int l = item.lod;
+    if (l < 0) {
+      // Coarsest LOD whose geometric error projects below one target pixel.
+      const double dist = std::max(1e-3, double(glm::length(c - eye)) - m.radius * scale);
+      l = 0;
+      for (int k = static_cast<int>(m.lods.size()) - 1; k > 0; --k) {
+        if (m.lods[static_cast<size_t>(k)].error * scale * focal / dist <= view.pixel_scale) {
+          l = k;
+          break;
+        }
+      }
+    }
+    const GpuMesh::Lod& lv = m.lods[static_cast<size_t>(std::min<int>(l, static_cast<int>(m.lods.size()) - 1))];
+    const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(item.model)));
+    p.set_mat4("u_model", glm::value_ptr(item.model));
+    p.set_mat3("u_normal_matrix", glm::value_ptr(nm));
+    p.set("u_base_color", item.material.base_color.r, item.material.base_color.g, item.material.base_color.b, 1.0f);
+    p.set("u_gloss", item.material.gloss);
+    p.set("u_material", item.material.id);
+    p.set("u_has_tex", item.material.texture ? 1 : 0);
+    if (item.material.texture) item.material.texture->bind(0);
+    glBindVertexArray(m.vao.id());
+    glDrawElements(GL_TRIANGLES, lv.count, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<uintptr_t>(lv.first) * sizeof(unsigned)));
+  }
+}
+
+void MeshSceneBase::prepass_end() {
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void MeshSceneBase::bind(const gpu::Program& p, const View& view) {
+  (void)view;
+  gbuffer_.albedo.bind(0);
+  gbuffer_.normal.bind(1);
+  gbuffer_.position.bind(2);
+  p.set("u_g_albedo", 0);
+  p.set("u_g_normal", 1);
+  p.set("u_g_position", 2);
+  const View& v = last_view_;
+  p.set("u_g_rect", float(v.x0), float(v.y0), float(v.x1 - v.x0), float(v.y1 - v.y0));
+  p.set("u_screen", float(frame_.width), float(frame_.height));
+  const glm::mat4 full = view_projection(View::full(frame_.width, frame_.height));
+  const glm::mat4 inv = glm::inverse(full);
+  p.set_mat4("u_inv_view_proj", glm::value_ptr(inv));
+  p.set("u_cam_pos", float(pose_.position.x), float(pose_.position.y), float(pose_.position.z));
+  p.set("u_time", float(frame_.time_s));
+  bind_extra(p);
+}
+
+std::vector<Vec2d> MeshSceneBase::object_positions() const {
+  const glm::mat4 full = glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, 0, 0, frame_.width,
+                                                       frame_.height, 0.1, 1000.0) *
+                                   view_matrix(pose_));
+  std::vector<std::pair<float, Vec2d>> found;
+  for (const glm::vec3& c : object_centres()) {
+    const glm::vec4 clip = full * glm::vec4(c, 1.0f);
+    if (clip.w <= 0.0f) continue;
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f) continue;
+    found.push_back({clip.w, {(ndc.x * 0.5 + 0.5) * frame_.width, (0.5 - ndc.y * 0.5) * frame_.height}});
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Vec2d> out;
+  for (const auto& f : found) out.push_back(f.second);
+  return out;
+}
+
+}  // namespace foveate::detail

@@ -1,0 +1,123 @@
+#pragma once
+// What the mesh scenes share: meshes with three discrete LODs on the GPU, the
+// G-buffer, per-view culling, and the deferred prepass. A MeshSceneBase
+// subclass supplies its draw items each frame and its shading function.
+#include <array>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "foveate/core/image.hpp"
+#include "foveate/gpu/gl.hpp"
+#include "foveate/gpu/shader.hpp"
+#include "foveate/scenes/camera_path.hpp"
+#include "foveate/scenes/scene.hpp"
+
+namespace foveate::detail {
+
+struct Vertex {
+  float px, py, pz;
+  float nx, ny, nz;
+  float u, v;
+};
+
+/// CPU geometry of one mesh.
+struct MeshData {
+  std::vector<Vertex> vertices;
+  std::vector<unsigned> indices;
+};
+
+/// One mesh on the GPU: a vertex buffer and the index ranges of its LODs
+/// (0 = full detail; 1 and 2 about 10 % and 1 % of the triangles).
+struct GpuMesh {
+  gpu::VertexArray vao;
+  gpu::Buffer vertices;
+  gpu::Buffer indices;
+  struct Lod {
+    GLsizei first = 0;     ///< first index
+    GLsizei count = 0;     ///< index count
+    float error = 0.0f;    ///< geometric error in the mesh's units
+  };
+  std::vector<Lod> lods;
+  glm::vec3 centre{0.0f};
+  float radius = 0.0f;
+  [[nodiscard]] size_t triangles(size_t lod = 0) const {
+    return lods.empty() ? 0 : static_cast<size_t>(lods[std::min(lod, lods.size() - 1)].count) / 3;
+  }
+};
+
+/// Uploads `data` with `lod_count` LODs made by meshoptimizer's simplifier,
+/// each about a tenth of the previous (Knapik and McGowen).
+GpuMesh upload_mesh(const MeshData& data, int lod_count = 3);
+/// Uploads several already-made LOD levels of one mesh (e.g. tessellations).
+GpuMesh upload_levels(const std::vector<MeshData>& levels);
+
+struct Material {
+  glm::vec3 base_color{0.8f};
+  float gloss = 0.2f;     ///< 0 diffuse .. 1 mirror-like
+  float id = 0.0f;        ///< material id the shading function understands
+  const gpu::Texture* texture = nullptr;
+};
+
+struct DrawItem {
+  const GpuMesh* mesh = nullptr;
+  glm::mat4 model{1.0f};
+  Material material;
+  int lod = 0;            ///< chosen for the current view by the subclass (or -1 = by error)
+};
+
+/// The scene's G-buffer: albedo + material, normal + gloss, world position,
+/// and a depth-stencil attachment the technique may write its masks into.
+struct GBuffer {
+  gpu::Texture albedo, normal, position;
+  gpu::Renderbuffer depth_stencil;
+  gpu::Framebuffer fbo;
+  int width = 0, height = 0;
+  void ensure(int w, int h);
+};
+
+class MeshSceneBase : public Scene {
+ public:
+  MeshSceneBase(std::string name, std::string description, CameraPath camera);
+
+  [[nodiscard]] SceneInfo info() const override;
+  void update(const FrameInput& frame) override;
+  void prepass_begin(const View& view) override;
+  void prepass_draw(const View& view, int lod) override;
+  void prepass_end() override;
+  void bind(const gpu::Program& program, const View& view) override;
+  [[nodiscard]] std::vector<Vec2d> object_positions() const override;
+
+ protected:
+  /// The items to draw for `view` with `lod` (0..2, or -1 = automatic).
+  virtual std::vector<DrawItem> items(const View& view, int lod) = 0;
+  /// Binds the subclass's own uniforms for shading.
+  virtual void bind_extra(const gpu::Program&) {}
+  /// Object centres (world) for object_positions(), any order.
+  [[nodiscard]] virtual std::vector<glm::vec3> object_centres() const { return {}; }
+
+  /// Focal length of the full frame in pixels (for screen-space LOD).
+  [[nodiscard]] double focal_px() const;
+  /// Whether a sphere is inside the view's sub-frustum.
+  [[nodiscard]] bool visible(const glm::mat4& view_proj, glm::vec3 centre, float radius) const;
+
+  std::string name_, description_;
+  CameraPath camera_;
+  CameraPose pose_{};
+  FrameInput frame_;
+  float scene_radius_ = 10.0f;
+  size_t full_triangles_ = 0;
+  bool has_lods_ = true;
+  glm::mat4 view_proj_{1.0f};  ///< of the last prepass view
+
+ private:
+  [[nodiscard]] glm::mat4 view_projection(const View& view) const;
+  GBuffer gbuffer_;
+  gpu::Program prepass_program_;
+  View last_view_;
+};
+
+/// Linear-ish colour of an image texture upload (mipmapped, repeat).
+gpu::Texture texture_from_image(const Image& image);
+
+}  // namespace foveate::detail
