@@ -62,7 +62,11 @@ class AssimpScene final : public MeshSceneBase {
         path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
                   aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
     if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
-      throw Error(path + ": cannot read the model: " + importer.GetErrorString());
+      const std::string why = importer.GetErrorString();
+      if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos) {
+        throw Error(path + ": the model has no triangles to render (" + why + ")");
+      }
+      throw Error(path + ": cannot read the model: " + why);
     }
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
@@ -113,7 +117,9 @@ class AssimpScene final : public MeshSceneBase {
  protected:
   std::vector<DrawItem> items(const View&, int lod) override {
     std::vector<DrawItem> out;
-    for (size_t i = 0; i < meshes_.size(); ++i) out.push_back({&meshes_[i], glm::mat4(1.0f), materials_[i], lod});
+    for (size_t i = 0; i < meshes_.size(); ++i) {
+      out.push_back({&meshes_[i], glm::mat4(1.0f), materials_[i], std::max(lod, 0), true});
+    }
     return out;
   }
   void bind_extra(const gpu::Program& p) override {

@@ -24,11 +24,11 @@ constexpr float kTerrainHalf = 70.0f;
 // rasterizer 8,192 keeps the same shape of curve at a workable cost.
 constexpr float kMaxTriCount = 8192.0f, kMinTriCount = 72.0f;
 constexpr float kMinDistSq = 16.0f, kMaxDistSq = 3600.0f;
-// Tessellations available (n x n parameter grid, 2 n^2 triangles); the
-// discrete LODs 0, 1, 2 use 64, 20 and 6 (8192, 800 and 72 triangles: about
-// 10 % and 1 %).
-constexpr int kLevels[] = {6, 8, 12, 16, 20, 24, 32, 48, 64};
-constexpr int kDiscrete[3] = {8, 4, 0};  // indices into kLevels
+// Tessellations available, finest first (n x n parameter grid, 2 n^2
+// triangles); the discrete LODs 0, 1, 2 are 64, 20 and 6 (8192, 800 and 72
+// triangles: about 10 % and 1 %).
+constexpr int kLevels[] = {64, 48, 32, 24, 20, 16, 12, 8, 6};
+constexpr int kDiscrete[3] = {0, 4, 8};  // indices into kLevels
 
 float terrain_height(float x, float z) {
   return 2.2f * std::sin(0.045f * x) * std::cos(0.06f * z) + 1.2f * std::sin(0.11f * x + 0.7f) * std::sin(0.09f * z) +
@@ -164,32 +164,30 @@ class GuenterScene final : public MeshSceneBase {
     tm.base_color = glm::vec3(1.0f);
     tm.id = 1.0f;
     tm.gloss = 0.05f;
-    out.push_back({&terrain_, glm::mat4(1.0f), tm, lod < 0 ? 0 : lod});
+    out.push_back({&terrain_, glm::mat4(1.0f), tm, std::clamp(lod, 0, 2), false});
     const glm::vec3 eye(pose_.position);
     const float t = static_cast<float>(frame_.time_s);
     for (const Object& o : objects_) {
       glm::mat4 m = glm::translate(glm::mat4(1.0f), o.centre);
       m = glm::rotate(m, o.spin * t, glm::vec3(0.0f, 1.0f, 0.0f));
+      // Continuous LOD by squared distance, coarsened by the view's pixel size:
+      // an object seen at s times coarser sampling is tessellated as if it
+      // were s times farther away. A requested discrete level (lodmask) only
+      // ever makes it coarser.
+      const float s = static_cast<float>(view.pixel_scale);
+      const glm::vec3 d = o.centre - eye;
+      const float dsq = glm::dot(d, d) * s * s;
+      const float f = std::clamp((dsq - kMinDistSq) / (kMaxDistSq - kMinDistSq), 0.0f, 1.0f);
+      const float tris = kMaxTriCount + (kMinTriCount - kMaxTriCount) * f;
+      // The finest level that does not exceed the triangle budget.
       int level = 0;
-      if (lod >= 0) {
-        level = kDiscrete[std::min(lod, 2)];
-      } else {
-        // Continuous LOD by squared distance, coarsened by the view's pixel
-        // size: an object seen at s times coarser sampling is tessellated as
-        // if it were s times farther away.
-        const float s = static_cast<float>(view.pixel_scale);
-        const glm::vec3 d = o.centre - eye;
-        const float dsq = glm::dot(d, d) * s * s;
-        const float f = std::clamp((dsq - kMinDistSq) / (kMaxDistSq - kMinDistSq), 0.0f, 1.0f);
-        const float tris = kMaxTriCount + (kMinTriCount - kMaxTriCount) * f;
-        level = 0;
-        while (level + 1 < int(std::size(kLevels)) && 2.0f * float(kLevels[level] * kLevels[level]) < tris) ++level;
-      }
+      while (level + 1 < int(std::size(kLevels)) && 2.0f * float(kLevels[level] * kLevels[level]) > tris) ++level;
+      if (lod > 0) level = std::max(level, kDiscrete[std::min(lod, 2)]);
       Material mat;
       mat.base_color = o.colour;
       mat.id = o.material;
       mat.gloss = o.gloss;
-      out.push_back({&shapes_[o.shape], m, mat, level});
+      out.push_back({&shapes_[o.shape], m, mat, level, false});
     }
     return out;
   }

@@ -171,16 +171,18 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     const float scale = glm::length(glm::vec3(item.model[0]));
     if (!visible(view_proj_, c, m.radius * scale)) continue;
     int l = item.lod;
-    if (l < 0) {
-      // Coarsest LOD whose geometric error projects below one target pixel.
+    if (item.automatic) {
+      // The coarsest LOD whose geometric error projects below one target
+      // pixel; the requested level only ever makes it coarser.
       const double dist = std::max(1e-3, double(glm::length(c - eye)) - m.radius * scale);
-      l = 0;
+      int a = 0;
       for (int k = static_cast<int>(m.lods.size()) - 1; k > 0; --k) {
         if (m.lods[static_cast<size_t>(k)].error * scale * focal / dist <= view.pixel_scale) {
-          l = k;
+          a = k;
           break;
         }
       }
+      l = std::max(a, item.lod);
     }
     const GpuMesh::Lod& lv = m.lods[static_cast<size_t>(std::min<int>(l, static_cast<int>(m.lods.size()) - 1))];
     const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(item.model)));

@@ -49,7 +49,8 @@ struct GpuMesh {
 /// Uploads `data` with `lod_count` LODs made by meshoptimizer's simplifier,
 /// each about a tenth of the previous (Knapik and McGowen).
 GpuMesh upload_mesh(const MeshData& data, int lod_count = 3);
-/// Uploads several already-made LOD levels of one mesh (e.g. tessellations).
+/// Uploads several already-made LOD levels of one mesh (e.g. tessellations),
+/// finest first.
 GpuMesh upload_levels(const std::vector<MeshData>& levels);
 
 struct Material {
@@ -63,7 +64,10 @@ struct DrawItem {
   const GpuMesh* mesh = nullptr;
   glm::mat4 model{1.0f};
   Material material;
-  int lod = 0;            ///< chosen for the current view by the subclass (or -1 = by error)
+  int lod = 0;            ///< index into mesh->lods (0 = full detail)
+  /// When set, the LOD is chosen by projected geometric error and `lod` is
+  /// only a floor (the result is never finer than `lod`).
+  bool automatic = true;
 };
 
 /// The scene's G-buffer: albedo + material, normal + gloss, world position,

@@ -60,6 +60,16 @@ TEST_F(Golden, EachTechniqueOnTheDetailScene) {
   }
 }
 
+TEST_F(Golden, MeshFileAndLodmask) {
+  auto cube = load_scene(kData + "/models/cube.obj");
+  std::string msg = check_golden(render(*cube, "native", 128, 96, {64, 48}), kGolden + "/mesh-cube.png", "mesh-cube");
+  EXPECT_EQ(msg, "") << msg;
+  auto guenter = load_scene("guenter");
+  msg = check_golden(render(*guenter, "lodmask", 320, 180, {200, 80}), kGolden + "/technique-lodmask.png",
+                     "technique-lodmask");
+  EXPECT_EQ(msg, "") << msg;
+}
+
 TEST_F(Golden, AnAlteredImageFailsTheComparison) {
   if (const char* u = std::getenv("FOVEATE_UPDATE_GOLDEN"); u && std::string(u) == "1") {
     GTEST_SKIP() << "references are being rewritten";

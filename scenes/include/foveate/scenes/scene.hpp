@@ -79,9 +79,11 @@ class Scene {
   virtual void prepass(const View& view);
   /// Fine-grained prepass for techniques that mask geometry (lodmask):
   /// begin binds the G-buffer framebuffer (with a depth-stencil attachment) at
-  /// the view's size and clears it; draw rasterises the geometry at `lod`
-  /// (0 = full detail, 1, 2 coarser; -1 = automatic by distance and
-  /// view.pixel_scale); end unbinds. No-ops for screen-space scenes.
+  /// the view's size and clears it; draw rasterises the geometry with the
+  /// scene's automatic LOD (by distance and view.pixel_scale) when `lod` is
+  /// -1 or 0, and at least as coarse as discrete level `lod` (1 about 10 %, 2
+  /// about 1 % of the triangles) otherwise; end unbinds. No-ops for
+  /// screen-space scenes.
   virtual void prepass_begin(const View& view);
   virtual void prepass_draw(const View& view, int lod);
   virtual void prepass_end();

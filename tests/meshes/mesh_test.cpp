@@ -1,0 +1,198 @@
+// Mesh scenes: real OBJ, glTF and PLY files, the guenter scene, LODs and
+// culling, sub-frustum rendering, and bad model files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/frame.hpp"
+#include "foveate/scenes/scene.hpp"
+#include "gl_fixture.hpp"
+#include "mesh_common.hpp"
+
+using namespace foveate;
+
+namespace {
+
+const std::string kModels = std::string(FOVEATE_TEST_DATA) + "/models";
+
+class Meshes : public test::GlTest {
+ protected:
+  // Renders `view` of `scene` (prepass, then one shading pass over the view's
+  // target, with the rect mapping every technique uses), returning the target.
+  Image shade(Scene& scene, const View& view, int width, int height, double time = 1.0) {
+    FrameInput f;
+    f.width = width;
+    f.height = height;
+    f.time_s = time;
+    scene.update(f);
+    scene.prepass(view);
+    gpu::ShaderCompiler c({scene_shader_files()});
+    std::vector<gpu::StageSource::Piece> pieces = {
+        {"map", "uniform vec4 u_rect; uniform vec2 u_target;\n"
+                "vec2 foveate_map(vec2 f) { return u_rect.xy + f * (u_rect.zw / u_target); }\n"}};
+    for (const auto& p : scene.shade_source()) pieces.push_back(p);
+    pieces.push_back({"main", "out vec4 o_color;\nvoid main() { o_color = scene_shade(foveate_map(gl_FragCoord.xy)); }\n"});
+    gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+                              gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
+                             "mesh test");
+    gpu::Texture color = gpu::Texture::create_2d(GL_RGBA8, view.target_width, view.target_height);
+    gpu::Framebuffer fbo = gpu::Framebuffer::create();
+    fbo.attach(GL_COLOR_ATTACHMENT0, color);
+    fbo.bind();
+    glViewport(0, 0, view.target_width, view.target_height);
+    scene.bind(p, view);
+    p.set("u_rect", float(view.x0), float(view.y0), float(view.x1 - view.x0), float(view.y1 - view.y0));
+    p.set("u_target", float(view.target_width), float(view.target_height));
+    gpu::VertexArray vao = gpu::VertexArray::create();
+    p.use();
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return gpu::read_texture(color);
+  }
+  // Triangles rasterised by a prepass of `view`.
+  double triangles(Scene& scene, const View& view, int width, int height, int lod = -1) {
+    FrameInput f;
+    f.width = width;
+    f.height = height;
+    f.time_s = 1.0;
+    scene.update(f);
+    gpu::Query q = gpu::Query::create(GL_PRIMITIVES_GENERATED);
+    scene.prepass_begin(view);
+    glBeginQuery(GL_PRIMITIVES_GENERATED, q.id());
+    scene.prepass_draw(view, lod);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    scene.prepass_end();
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(q.id(), GL_QUERY_RESULT, &n);
+    return static_cast<double>(n);
+  }
+  static bool sky_like(const uint8_t* p) { return p[2] > p[0] && p[2] > 120; }
+};
+
+std::string load_error(const std::string& path) {
+  try {
+    load_scene(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_F(Meshes, ObjWithMaterialAndTexture) {
+  auto scene = load_scene(kModels + "/cube.obj");
+  const SceneInfo info = scene->info();
+  EXPECT_TRUE(info.has_meshes);
+  EXPECT_TRUE(info.has_mesh_lods);
+  EXPECT_EQ(info.triangles, 12u);
+  const Image img = shade(*scene, View::full(128, 96), 128, 96);
+  // Framed automatically: the cube covers the centre, the corners show the sky.
+  EXPECT_FALSE(sky_like(img.at(64, 48)));
+  EXPECT_TRUE(sky_like(img.at(2, 2)));
+  // The texture's quadrant colours appear on the cube.
+  bool red = false, green = false;
+  for (int y = 20; y < 76; ++y) {
+    for (int x = 30; x < 98; ++x) {
+      const uint8_t* p = img.at(x, y);
+      red = red || (p[0] > 2 * p[1] + 20 && p[0] > 2 * p[2] + 20);
+      green = green || (p[1] > 2 * p[0] + 20 && p[1] > 2 * p[2] + 20);
+    }
+  }
+  EXPECT_TRUE(red);
+  EXPECT_TRUE(green);
+}
+
+TEST_F(Meshes, GltfBaseColour) {
+  auto scene = load_scene(kModels + "/quad.gltf");
+  EXPECT_EQ(scene->info().triangles, 2u);
+  const Image img = shade(*scene, View::full(96, 64), 96, 64);
+  const uint8_t* c = img.at(48, 32);
+  EXPECT_GT(c[0], c[1] + 40) << int(c[0]) << "," << int(c[1]) << "," << int(c[2]);
+  EXPECT_GT(c[0], c[2] + 40);
+}
+
+TEST_F(Meshes, ThreeLodsOfAboutTenAndOnePercent) {
+  auto scene = load_scene(kModels + "/sphere.ply");
+  // A large view, so that automatic LOD keeps full detail at level 0.
+  const double full = triangles(*scene, View::full(1024, 1024), 1024, 1024, 0);
+  const double mid = triangles(*scene, View::full(1024, 1024), 1024, 1024, 1);
+  const double low = triangles(*scene, View::full(1024, 1024), 1024, 1024, 2);
+  EXPECT_GT(full, 4000);
+  EXPECT_NEAR(mid / full, 0.10, 0.04);
+  EXPECT_NEAR(low / full, 0.01, 0.008);
+  EXPECT_GE(low, 3);
+}
+
+TEST_F(Meshes, AutomaticLodSeesThePixelPitch) {
+  auto scene = load_scene(kModels + "/sphere.ply");
+  View fine = View::full(256, 256);
+  View coarse = fine;
+  coarse.pixel_scale = 16.0;
+  EXPECT_LT(triangles(*scene, coarse, 256, 256), triangles(*scene, fine, 256, 256));
+  // The guenter scene: a layer at sampling factor 4 draws far fewer triangles
+  // than native, and a small inner layer culls most objects.
+  auto g = load_scene("guenter");
+  const double native = triangles(*g, View::full(320, 180), 320, 180);
+  View outer = View::full(320, 180);
+  outer.target_width = 80;
+  outer.target_height = 45;
+  outer.pixel_scale = 4.0;
+  View inner{140, 70, 180, 110, 40, 40, 1.0};
+  EXPECT_LT(triangles(*g, outer, 320, 180), 0.5 * native);
+  EXPECT_LT(triangles(*g, inner, 320, 180), 0.5 * native);
+  EXPECT_GT(native, 20000);
+}
+
+TEST_F(Meshes, SubFrustumEqualsTheCropOfTheFullFrame) {
+  for (const std::string& name : {kModels + "/cube.obj", std::string("guenter")}) {
+    auto scene = load_scene(name);
+    const Image full = shade(*scene, View::full(128, 96), 128, 96);
+    // Screen rect [32, 96] x [24, 72] (GL origin bottom-left) into a 64x48 target.
+    const Image part = shade(*scene, View{32, 24, 96, 72, 64, 48, 1.0}, 128, 96);
+    int off = 0;
+    for (int y = 0; y < 48; ++y) {
+      for (int x = 0; x < 64; ++x) {
+        const uint8_t* a = part.at(x, y);
+        const uint8_t* b = full.at(32 + x, (96 - 72) + y);
+        for (int c = 0; c < 3; ++c) off += std::abs(int(a[c]) - int(b[c])) > 24 ? 1 : 0;
+      }
+    }
+    // Rasterisation of a sub-frustum can differ on edge pixels only.
+    EXPECT_LT(off, 64 * 48 * 3 / 50) << name;
+  }
+}
+
+TEST_F(Meshes, ObjectPositionsNearestFirst) {
+  auto g = load_scene("guenter");
+  FrameInput f;
+  f.width = 320;
+  f.height = 180;
+  f.time_s = 2.0;
+  g->update(f);
+  const auto pos = g->object_positions();
+  ASSERT_GT(pos.size(), 10u);
+  for (const Vec2d& p : pos) {
+    EXPECT_GE(p.x, 0);
+    EXPECT_LE(p.x, 320);
+    EXPECT_GE(p.y, 0);
+    EXPECT_LE(p.y, 180);
+  }
+}
+
+TEST_F(Meshes, BadModelFiles) {
+  EXPECT_NE(load_error(kModels + "/nope.obj").find("nor an existing file"), std::string::npos);
+  const std::string empty = load_error(kModels + "/empty.obj");
+  EXPECT_NE(empty.find("empty.obj"), std::string::npos) << empty;
+  EXPECT_NE(empty.find("empty"), std::string::npos) << empty;
+  const std::string trunc = load_error(kModels + "/truncated.obj");
+  EXPECT_NE(trunc.find("truncated.obj"), std::string::npos) << trunc;
+  const std::string bad = load_error(kModels + "/malformed.glb");
+  EXPECT_NE(bad.find("malformed.glb"), std::string::npos) << bad;
+  const std::string none = load_error(kModels + "/no_triangles.obj");
+  EXPECT_NE(none.find("no triangles"), std::string::npos) << none;
+  const std::string tex = load_error(kModels + "/missing_texture.obj");
+  EXPECT_NE(tex.find("no-such-texture.png"), std::string::npos) << tex;
+  EXPECT_NE(load_error(kModels).find("directory"), std::string::npos);
+}
