@@ -7,12 +7,14 @@
 #include "deferred_common.glsl"
 
 vec3 terrain_material(vec3 p, inout vec3 n) {
-  float broad = fbm(p * 0.08, 5);
-  float fine = fbm(p * 1.3, 5);
+  // The paper's terrain shading dominated its frame time ("Cheap Terrain" in
+  // its Table 1 cut 23.6 ms to 6.6 ms): many octaves of noise per pixel.
+  float broad = fbm(p * 0.08, 6);
+  float fine = fbm(p * 1.3, 8);
   // Bump the normal with the gradient of the fine noise.
   const float e = 0.05;
-  vec3 g = vec3(fbm((p + vec3(e, 0, 0)) * 1.3, 4), fbm((p + vec3(0, e, 0)) * 1.3, 4), fbm((p + vec3(0, 0, e)) * 1.3, 4)) -
-           vec3(fbm(p * 1.3, 4));
+  vec3 g = vec3(fbm((p + vec3(e, 0, 0)) * 1.3, 7), fbm((p + vec3(0, e, 0)) * 1.3, 7), fbm((p + vec3(0, 0, e)) * 1.3, 7)) -
+           vec3(fbm(p * 1.3, 7));
   n = normalize(n - 1.5 * g);
   vec3 grass = mix(vec3(0.16, 0.3, 0.08), vec3(0.3, 0.42, 0.12), fine);
   vec3 rock = mix(vec3(0.35, 0.32, 0.28), vec3(0.55, 0.5, 0.45), fine);

@@ -20,15 +20,16 @@ constexpr float kSpacing = 4.5f;    // world units between objects
 constexpr float kTerrainHalf = 70.0f;
 // Continuous LOD (section 6): tessellation goes from MaxTriCount to
 // MinTriCount as the squared distance goes from MinDistSq to MaxDistSq. The
-// paper used 20,000 triangles per object on a GTX 580; on a software
-// rasterizer 8,192 keeps the same shape of curve at a workable cost.
-constexpr float kMaxTriCount = 8192.0f, kMinTriCount = 72.0f;
+// paper used 20,000 triangles per object on a GTX 580; a software rasterizer
+// pays per pixel more than per triangle, so 2,048 keeps the same curve at a
+// workable cost.
+constexpr float kMaxTriCount = 2048.0f, kMinTriCount = 32.0f;
 constexpr float kMinDistSq = 16.0f, kMaxDistSq = 3600.0f;
 // Tessellations available, finest first (n x n parameter grid, 2 n^2
-// triangles); the discrete LODs 0, 1, 2 are 64, 20 and 6 (8192, 800 and 72
-// triangles: about 10 % and 1 %).
-constexpr int kLevels[] = {64, 48, 32, 24, 20, 16, 12, 8, 6};
-constexpr int kDiscrete[3] = {0, 4, 8};  // indices into kLevels
+// triangles); the discrete LODs 0, 1, 2 are 32, 10 and 4 (2048, 200 and 32
+// triangles: about 10 % and 1.6 %).
+constexpr int kLevels[] = {32, 24, 20, 16, 12, 10, 8, 6, 4};
+constexpr int kDiscrete[3] = {0, 5, 8};  // indices into kLevels
 
 float terrain_height(float x, float z) {
   return 2.2f * std::sin(0.045f * x) * std::cos(0.06f * z) + 1.2f * std::sin(0.11f * x + 0.7f) * std::sin(0.09f * z) +
@@ -151,7 +152,7 @@ class GuenterScene final : public MeshSceneBase {
       }
     }
     scene_radius_ = kTerrainHalf;
-    full_triangles_ = terrain_.triangles(0) + objects_.size() * 2 * 64 * 64;
+    full_triangles_ = terrain_.triangles(0) + objects_.size() * 2 * 32 * 32;
   }
 
   std::string shade_key() const override { return "builtin:guenter"; }
