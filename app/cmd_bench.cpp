@@ -185,7 +185,7 @@ void register_demo(CLI::App& app) {
   sub->callback([a] {
     std::cout << "foveate demo: " << a->scene << " scene, techniques " << a->techniques
               << ", quality " << (a->quality.empty() ? "A" : a->quality) << ", display "
-              << a->display << " at " << a->size << "\n";
+              << a->display << " at " << a->size << std::endl;
     const BenchResult r = run_bench(to_options(*a, "foveate demo"));
     write_bench_outputs(r);
     print_summary(r);

@@ -214,12 +214,14 @@ std::string html(const BenchResult& b) {
       << quality_cell(r.quality, "flicker_ratio", 2) << "</td></tr>\n";
   }
   h << "</table>\n<h2>Speed</h2>\n";
-  std::vector<std::string> names;
+  std::vector<std::string> names, qnames;
   std::vector<double> speed, bound, ssim, acuity;
   for (const TechniqueResult& r : b.results) {
     names.push_back(label(b, r));
     speed.push_back(r.speedup);
     bound.push_back(1.0 / r.pixel_ratio);
+    if (r.technique == "native") continue;  // the quality reference itself
+    qnames.push_back(label(b, r));
     auto q = [&](const char* k) {
       return r.quality.is_object() && r.quality.contains(k) && !r.quality[k].is_null()
                  ? r.quality[k].get<double>()
@@ -234,10 +236,10 @@ std::string html(const BenchResult& b) {
     << "</div>\n<h2>Quality</h2>\n";
   if (b.options.quality) {
     h << "<div class=chart id=\"chart-quality\">"
-      << bar_chart(names, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity")
+      << bar_chart(qnames, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity")
       << "</div>\n"
       << "<div class=chart id=\"chart-acuity\">"
-      << bar_chart(names, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)", "",
+      << bar_chart(qnames, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)", "",
                    "Error the eye can resolve")
       << "</div>\n";
   } else {
@@ -279,7 +281,7 @@ std::string html(const BenchResult& b) {
   // Crops: at the fovea and in the periphery (the screen corner farthest from the gaze).
   const int gx = static_cast<int>(b.sample_gaze_px.x), gy = static_cast<int>(b.sample_gaze_px.y);
   const int px = gx < W / 2 ? W - 1 : 0, py = gy < H / 2 ? H - 1 : 0;
-  const int cs = std::max(16, std::min(W, H) / 4);
+  const int cs = std::clamp(std::min(W, H) / 4, 16, 160);
   h << "<h2>Native and foveated, side by side</h2>\n<p class=note>Last measured frame; crops of "
     << cs << "&times;" << cs
     << " pixels at the gaze and in the farthest corner, shown at 2&times;.</p>\n<div class=crops>";
