@@ -73,11 +73,35 @@ std::string sweep_svg(const std::vector<SweepRow>& rows) {
     }
   }
   ChartOptions o;
-  o.title = "Predicted speedup P*/P at display sharpness = foveal acuity (Guenter et al. eq. 9)";
+  o.title = "Figure 12: predicted speedup P*/P at display sharpness = foveal acuity (eq. 9)";
   o.x_label = "field of view (degrees)";
   o.y_label = "speedup (pixels), log scale";
   o.log_y = true;
-  return svg_line_chart(series, o);
+  // Figure 13: rendering cost (pixels) of native and foveated rendering.
+  std::vector<Series> cost;
+  Series native{"native P*", "#000000", {}, {}, false};
+  for (const SweepRow& r : rows) {
+    native.x.push_back(r.fov_deg);
+    native.y.push_back(r.native_pixels);
+  }
+  cost.push_back(native);
+  for (size_t v = 0; v < sweep_variants().size(); ++v) {
+    Series a{std::string("A, n=") + sweep_variants()[v].name, colors[v], {}, {}, false};
+    for (const SweepRow& r : rows) {
+      a.x.push_back(r.fov_deg);
+      a.y.push_back(r.pixels_a[v]);
+    }
+    cost.push_back(a);
+  }
+  ChartOptions c;
+  c.title = "Figure 13: pixels to render, native against foveated (quality A)";
+  c.x_label = "field of view (degrees)";
+  c.y_label = "pixels per frame, log scale";
+  c.log_y = true;
+  std::string top = svg_line_chart(series, o), bottom = svg_line_chart(cost, c);
+  bottom.replace(bottom.find("<svg "), 5, "<svg y=\"" + std::to_string(o.height) + "\" ");
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(o.width) + "\" height=\"" +
+         std::to_string(o.height + c.height) + "\">\n" + top + bottom + "</svg>\n";
 }
 
 void run_plan(const PlanArgs& a) {
