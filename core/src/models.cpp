@@ -27,8 +27,8 @@ void LatencyAwareFovea::validate() const {
   require(
       std::isfinite(saccade_deg_per_s) && saccade_deg_per_s >= 0.0 && saccade_deg_per_s <= 1000.0,
       "saccade_deg_per_s: expected 0..1000, got " + std::to_string(saccade_deg_per_s));
-  require(std::isfinite(fovea_deg) && fovea_deg > 0.0 && fovea_deg < 90.0,
-          "fovea_deg: expected (0, 90), got " + std::to_string(fovea_deg));
+  require(std::isfinite(fovea_deg) && fovea_deg > 0.0 && fovea_deg < 179.0,
+          "fovea_deg: expected (0, 179), got " + std::to_string(fovea_deg));
   require(std::isfinite(blend_border_px) && blend_border_px >= 0.0,
           "blend_border_px: must be >= 0, got " + std::to_string(blend_border_px));
   require(std::isfinite(error_px), "error_px: must be finite");

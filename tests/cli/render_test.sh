@@ -20,6 +20,18 @@ check "render a Shadertoy file with a channel and the mouse" '[[ -s "$tmp/s/fram
 "$FOVEATE" render --scene "$data/missing_texture.glsl" --channel "$data/quadrants.png" --size 32x32 --out "$tmp/c" >/dev/null
 check "render with --channel" '[[ -s "$tmp/c/frame-0000.png" ]]'
 
+# Every gaze source drives every technique (guenter has meshes, so lodmask runs too).
+"$FOVEATE" gaze synth --seed 4 --seconds 2 --out "$tmp/trace.csv" > /dev/null
+for src in "fixed:0.3,0.4" "synthetic:2" "trace:$tmp/trace.csv" "nearest" "700,-50"; do
+  for t in layered logpolar checkerboard lodmask inset; do
+    if "$FOVEATE" render --scene guenter --size 64x36 --frames 2 --technique "$t" --gaze "$src" \
+         --out "$tmp/g" > "$tmp/g.txt" 2>&1 && [[ -s "$tmp/g/frame-0001.png" ]]; then :; else
+      echo "FAIL: gaze $src with $t: $(cat "$tmp/g.txt")"; fail=1
+    fi
+  done
+done
+echo "ok: every gaze source drives every technique"
+
 expect_error() {  # name, expected text, args...
   local name=$1 text=$2; shift 2
   local err rc
@@ -42,6 +54,8 @@ expect_error "parameter out of range" "out of range" render --scene cheap --size
 expect_error "parameter not a number" "not a number" render --scene cheap --size 32x32 --technique layered --param layers=three --out "$tmp/x"
 expect_error "frames zero" "--frames" render --scene cheap --size 32x32 --frames 0 --out "$tmp/x"
 expect_error "bad gaze" "--gaze" render --scene cheap --size 32x32 --gaze left --out "$tmp/x"
+expect_error "missing gaze trace" "nope.csv" render --scene cheap --size 32x32 --gaze "trace:$tmp/nope.csv" --out "$tmp/x"
+expect_error "mouse without a window" "window" render --scene cheap --size 32x32 --gaze mouse --out "$tmp/x"
 expect_error "lodmask on a shader scene" "has no meshes" render --scene cheap --size 32x32 --technique lodmask --out "$tmp/x"
 expect_error "bad camera path" "channels.json" render --scene cheap --size 32x32 --camera-path "$data/channels.json" --out "$tmp/x"
 check "no partial files left" '[[ -z "$(find "$tmp" -name "*.tmp-*")" ]]'
