@@ -12,6 +12,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/core/stats.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "gaze_input.hpp"
 #include "quality.hpp"
@@ -20,22 +21,13 @@ namespace foveate::app {
 
 namespace {
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const double pos = q * static_cast<double>(v.size() - 1);
-  const size_t i = static_cast<size_t>(std::floor(pos));
-  const size_t j = std::min(i + 1, v.size() - 1);
-  return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
-}
-
 // 95 % bootstrap interval of median(native) / median(technique), resampling
 // frames in pairs (the same frames were rendered by both), fixed seed.
 std::pair<double, double> speedup_interval(const std::vector<double>& native,
                                            const std::vector<double>& tech) {
   const size_t n = std::min(native.size(), tech.size());
   if (n < 2) {
-    const double s = percentile(native, 0.5) / percentile(tech, 0.5);
+    const double s = quantile(native, 0.5) / quantile(tech, 0.5);
     return {s, s};
   }
   std::mt19937 rng(12345);
@@ -48,9 +40,9 @@ std::pair<double, double> speedup_interval(const std::vector<double>& native,
       a[k] = native[i];
       b[k] = tech[i];
     }
-    ratios.push_back(percentile(a, 0.5) / percentile(b, 0.5));
+    ratios.push_back(quantile(a, 0.5) / quantile(b, 0.5));
   }
-  return {percentile(ratios, 0.025), percentile(ratios, 0.975)};
+  return {quantile(ratios, 0.025), quantile(ratios, 0.975)};
 }
 
 class Progress {
@@ -215,13 +207,13 @@ BenchResult run_bench(const BenchOptions& o) {
   out.gaze_report = gaze.report();
   const std::vector<double> native_ms =
       runs[0].result.frame_ms;  // a copy: results are moved out below
-  const double native_median = percentile(native_ms, 0.5);
+  const double native_median = quantile(native_ms, 0.5);
   for (size_t i = 0; i < runs.size(); ++i) {
     Run& r = runs[i];
     TechniqueResult& res = r.result;
     if (i == 0 && !native_listed) continue;
-    res.median_ms = percentile(res.frame_ms, 0.5);
-    res.p90_ms = percentile(res.frame_ms, 0.9);
+    res.median_ms = quantile(res.frame_ms, 0.5);
+    res.p90_ms = quantile(res.frame_ms, 0.9);
     double sum = 0;
     for (double x : res.frame_ms) sum += x;
     res.mean_ms = sum / static_cast<double>(res.frame_ms.size());

@@ -4,21 +4,11 @@
 #include <cmath>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/stats.hpp"
 
 namespace foveate::gaze {
 
-namespace {
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const double pos = q * static_cast<double>(v.size() - 1);
-  const size_t i = static_cast<size_t>(pos);
-  const double f = pos - static_cast<double>(i);
-  return i + 1 < v.size() ? v[i] + f * (v[i + 1] - v[i]) : v[i];
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TraceStats analyze_trace(const Trace& trace, const Display& display, const IvtOptions& o) {
   if (!(o.velocity_deg_per_s > 0) || !(o.min_fixation_s >= 0) || !(o.dropout_intervals > 0)) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/stats.hpp"
 
 namespace foveate::gaze {
 
@@ -35,14 +36,8 @@ void LatencyEstimator::record(const FilteredGaze& gaze, double shown_time_s) {
 
 double LatencyEstimator::percentile_ms(double p) const {
   if (window_.empty()) return options_.extra_ms;
-  std::vector<double> v(window_.begin(), window_.end());
-  std::sort(v.begin(), v.end());
-  // Linear interpolation between closest ranks.
-  const double pos = std::clamp(p, 0.0, 100.0) / 100.0 * static_cast<double>(v.size() - 1);
-  const size_t i = static_cast<size_t>(pos);
-  const double f = pos - static_cast<double>(i);
-  const double x = i + 1 < v.size() ? v[i] + f * (v[i + 1] - v[i]) : v[i];
-  return x + options_.extra_ms;
+  return quantile(std::vector<double>(window_.begin(), window_.end()), p / 100.0) +
+         options_.extra_ms;
 }
 
 double LatencyEstimator::median_ms() const { return percentile_ms(50.0); }
