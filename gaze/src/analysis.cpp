@@ -8,8 +8,6 @@
 
 namespace foveate::gaze {
 
-namespace {}  // namespace
-
 TraceStats analyze_trace(const Trace& trace, const Display& display, const IvtOptions& o) {
   if (!(o.velocity_deg_per_s > 0) || !(o.min_fixation_s >= 0) || !(o.dropout_intervals > 0)) {
     throw Error("I-VT: the velocity threshold and dropout interval must be > 0");
