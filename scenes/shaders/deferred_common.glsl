@@ -39,3 +39,10 @@ Surface fetch_surface(vec2 screen_px) {
   s.position = p.xyz;
   return s;
 }
+
+// For temporal reprojection (Scene::view_projection): the world point seen at
+// a screen position; background is a far point along the view ray.
+vec3 scene_world_position(vec2 screen_px) {
+  Surface s = fetch_surface(screen_px);
+  return s.hit ? s.position : u_cam_pos + s.view_dir * 1.0e4;
+}

@@ -29,8 +29,10 @@ void bounds_of(const std::vector<Vertex>& v, glm::vec3& centre, float& radius) {
 GpuMesh make_gpu(const std::vector<Vertex>& vertices, const std::vector<unsigned>& indices,
                  std::vector<GpuMesh::Lod> lods) {
   GpuMesh m;
-  m.vertices = gpu::Buffer::create(static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
-  m.indices = gpu::Buffer::create(static_cast<GLsizeiptr>(indices.size() * sizeof(unsigned)), indices.data());
+  m.vertices = gpu::Buffer::create(static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                                   vertices.data());
+  m.indices = gpu::Buffer::create(static_cast<GLsizeiptr>(indices.size() * sizeof(unsigned)),
+                                  indices.data());
   m.vao = gpu::VertexArray::create();
   const GLuint vao = m.vao.id();
   glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, sizeof(Vertex));
@@ -51,15 +53,16 @@ GpuMesh upload_mesh(const MeshData& data, int lod_count) {
   if (data.indices.size() < 3) throw Error("mesh has no triangles");
   std::vector<unsigned> all = data.indices;
   std::vector<GpuMesh::Lod> lods{{0, static_cast<GLsizei>(data.indices.size()), 0.0f}};
-  const float scale = meshopt_simplifyScale(&data.vertices[0].px, data.vertices.size(), sizeof(Vertex));
+  const float scale =
+      meshopt_simplifyScale(&data.vertices[0].px, data.vertices.size(), sizeof(Vertex));
   std::vector<unsigned> source = data.indices;
   for (int l = 1; l < lod_count; ++l) {
     // About a tenth of the previous level's triangles.
     const size_t target = std::max<size_t>(3, (source.size() / 3 / 10) * 3);
     std::vector<unsigned> out(source.size());
     float error = 0.0f;
-    size_t n = meshopt_simplify(out.data(), source.data(), source.size(), &data.vertices[0].px, data.vertices.size(),
-                                sizeof(Vertex), target, 1.0f, 0, &error);
+    size_t n = meshopt_simplify(out.data(), source.data(), source.size(), &data.vertices[0].px,
+                                data.vertices.size(), sizeof(Vertex), target, 1.0f, 0, &error);
     if (n > target * 2) {
       // Topology kept the simplifier from getting there: drop connectivity.
       n = meshopt_simplifySloppy(out.data(), source.data(), source.size(), &data.vertices[0].px,
@@ -84,7 +87,8 @@ GpuMesh upload_levels(const std::vector<MeshData>& levels) {
   std::vector<GpuMesh::Lod> lods;
   for (const MeshData& m : levels) {
     const auto base = static_cast<unsigned>(vertices.size());
-    lods.push_back({static_cast<GLsizei>(indices.size()), static_cast<GLsizei>(m.indices.size()), 0.0f});
+    lods.push_back(
+        {static_cast<GLsizei>(indices.size()), static_cast<GLsizei>(m.indices.size()), 0.0f});
     vertices.insert(vertices.end(), m.vertices.begin(), m.vertices.end());
     for (unsigned i : m.indices) indices.push_back(base + i);
   }
@@ -117,7 +121,9 @@ MeshSceneBase::MeshSceneBase(std::string name, std::string description, CameraPa
   prepass_program_ = c.build("gbuffer.vert", "gbuffer.frag");
 }
 
-SceneInfo MeshSceneBase::info() const { return {name_, description_, true, has_lods_, full_triangles_}; }
+SceneInfo MeshSceneBase::info() const {
+  return {name_, description_, true, has_lods_, full_triangles_};
+}
 
 void MeshSceneBase::update(const FrameInput& frame) {
   frame_ = frame;
@@ -130,14 +136,16 @@ double MeshSceneBase::focal_px() const {
 
 glm::mat4 MeshSceneBase::view_projection(const View& v) const {
   const double n = std::max(0.01, scene_radius_ * 0.002), f = scene_radius_ * 20.0;
-  return glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, v.x0, v.y0, v.x1, v.y1, n, f) *
-                   view_matrix(pose_));
+  return glm::mat4(
+      projection_for_rect(pose_, frame_.width, frame_.height, v.x0, v.y0, v.x1, v.y1, n, f) *
+      view_matrix(pose_));
 }
 
 bool MeshSceneBase::visible(const glm::mat4& m, glm::vec3 c, float r) const {
   // Gribb-Hartmann planes of the view-projection matrix.
   const glm::mat4 t = glm::transpose(m);
-  const glm::vec4 planes[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+  const glm::vec4 planes[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1],
+                               t[3] - t[1], t[3] + t[2], t[3] - t[2]};
   for (const glm::vec4& p : planes) {
     const float len = glm::length(glm::vec3(p));
     if (glm::dot(glm::vec3(p), c) + p.w < -r * len) return false;
@@ -184,18 +192,21 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
       }
       l = std::max(a, item.lod);
     }
-    const GpuMesh::Lod& lv = m.lods[static_cast<size_t>(std::min<int>(l, static_cast<int>(m.lods.size()) - 1))];
+    const GpuMesh::Lod& lv =
+        m.lods[static_cast<size_t>(std::min<int>(l, static_cast<int>(m.lods.size()) - 1))];
     const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(item.model)));
     p.set_mat4("u_model", glm::value_ptr(item.model));
     p.set_mat3("u_normal_matrix", glm::value_ptr(nm));
-    p.set("u_base_color", item.material.base_color.r, item.material.base_color.g, item.material.base_color.b, 1.0f);
+    p.set("u_base_color", item.material.base_color.r, item.material.base_color.g,
+          item.material.base_color.b, 1.0f);
     p.set("u_gloss", item.material.gloss);
     p.set("u_material", item.material.id);
     p.set("u_has_tex", item.material.texture ? 1 : 0);
     if (item.material.texture) item.material.texture->bind(0);
     glBindVertexArray(m.vao.id());
-    glDrawElements(GL_TRIANGLES, lv.count, GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<uintptr_t>(lv.first) * sizeof(unsigned)));
+    glDrawElements(
+        GL_TRIANGLES, lv.count, GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(static_cast<uintptr_t>(lv.first) * sizeof(unsigned)));
   }
 }
 
@@ -223,9 +234,16 @@ void MeshSceneBase::bind(const gpu::Program& p, const View& view) {
   bind_extra(p);
 }
 
+std::optional<std::array<float, 16>> MeshSceneBase::view_projection() const {
+  const glm::mat4 m = view_projection(View::full(frame_.width, frame_.height));
+  std::array<float, 16> out{};
+  std::copy_n(glm::value_ptr(m), 16, out.begin());
+  return out;
+}
+
 std::vector<Vec2d> MeshSceneBase::object_positions() const {
-  const glm::mat4 full = glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, 0, 0, frame_.width,
-                                                       frame_.height, 0.1, 1000.0) *
+  const glm::mat4 full = glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, 0, 0,
+                                                       frame_.width, frame_.height, 0.1, 1000.0) *
                                    view_matrix(pose_));
   std::vector<std::pair<float, Vec2d>> found;
   for (const glm::vec3& c : object_centres()) {
@@ -233,9 +251,11 @@ std::vector<Vec2d> MeshSceneBase::object_positions() const {
     if (clip.w <= 0.0f) continue;
     const glm::vec3 ndc = glm::vec3(clip) / clip.w;
     if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f) continue;
-    found.push_back({clip.w, {(ndc.x * 0.5 + 0.5) * frame_.width, (0.5 - ndc.y * 0.5) * frame_.height}});
+    found.push_back(
+        {clip.w, {(ndc.x * 0.5 + 0.5) * frame_.width, (0.5 - ndc.y * 0.5) * frame_.height}});
   }
-  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Vec2d> out;
   for (const auto& f : found) out.push_back(f.second);
   return out;

@@ -34,9 +34,9 @@ struct GpuMesh {
   gpu::Buffer vertices;
   gpu::Buffer indices;
   struct Lod {
-    GLsizei first = 0;     ///< first index
-    GLsizei count = 0;     ///< index count
-    float error = 0.0f;    ///< geometric error in the mesh's units
+    GLsizei first = 0;   ///< first index
+    GLsizei count = 0;   ///< index count
+    float error = 0.0f;  ///< geometric error in the mesh's units
   };
   std::vector<Lod> lods;
   glm::vec3 centre{0.0f};
@@ -55,8 +55,8 @@ GpuMesh upload_levels(const std::vector<MeshData>& levels);
 
 struct Material {
   glm::vec3 base_color{0.8f};
-  float gloss = 0.2f;     ///< 0 diffuse .. 1 mirror-like
-  float id = 0.0f;        ///< material id the shading function understands
+  float gloss = 0.2f;  ///< 0 diffuse .. 1 mirror-like
+  float id = 0.0f;     ///< material id the shading function understands
   const gpu::Texture* texture = nullptr;
 };
 
@@ -64,7 +64,7 @@ struct DrawItem {
   const GpuMesh* mesh = nullptr;
   glm::mat4 model{1.0f};
   Material material;
-  int lod = 0;            ///< index into mesh->lods (0 = full detail)
+  int lod = 0;  ///< index into mesh->lods (0 = full detail)
   /// When set, the LOD is chosen by projected geometric error and `lod` is
   /// only a floor (the result is never finer than `lod`).
   bool automatic = true;
@@ -91,6 +91,7 @@ class MeshSceneBase : public Scene {
   void prepass_end() override;
   void bind(const gpu::Program& program, const View& view) override;
   [[nodiscard]] std::vector<Vec2d> object_positions() const override;
+  [[nodiscard]] std::optional<std::array<float, 16>> view_projection() const override;
 
  protected:
   /// The items to draw for `view` with `lod` (0..2, or -1 = automatic).

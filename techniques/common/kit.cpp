@@ -54,27 +54,29 @@ const gpu::Program& Kit::fullscreen(const std::string& fragment) {
 }
 
 const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early) {
-  const std::string main = early ? "common/shade_main_early.frag" : "common/shade_main.frag";
-  const std::string key = scene.shade_key() + "|" + mapping + "|" + main;
+  return scene_program_with(scene, mapping,
+                            early ? "common/shade_main_early.frag" : "common/shade_main.frag");
+}
+
+const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& main) {
+  return scene_program_with(scene, "", main);
+}
+
+const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::string& before,
+                                            const std::string& main) {
+  const std::string key = scene.shade_key() + "|" + before + "|" + main;
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   std::vector<gpu::StageSource::Piece> pieces = scene.shade_source();
-  pieces.insert(pieces.begin(), {mapping, {}});
+  if (!before.empty()) pieces.insert(pieces.begin(), {before, {}});
   pieces.push_back({main, {}});
   auto tables = scene.shader_files();
-  gpu::Program p;
-  if (tables.empty()) {
-    p = compiler_.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
-                         gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
-                        "scene '" + scene.info().name + "'");
-  } else {
-    tables.push_back(embedded::techniques_shaders());
-    tables.push_back(scene_shader_files());
-    gpu::ShaderCompiler c(tables);
-    p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
-                 gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
-                "scene '" + scene.info().name + "'");
-  }
+  tables.push_back(embedded::techniques_shaders());
+  tables.push_back(scene_shader_files());
+  const gpu::ShaderCompiler c(tables);
+  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+                            gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
+                           "scene '" + scene.info().name + "'");
   return programs_.emplace(key, std::move(p)).first->second;
 }
 

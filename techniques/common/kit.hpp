@@ -55,6 +55,9 @@ class Kit {
   /// With `early`, depth and stencil tests run before shading (stencil masks
   /// really save the work) and there is no off-screen discard.
   const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false);
+  /// A program of the scene's shading GLSL followed by `main` (an embedded
+  /// file with main() that may call the scene's functions), cached per scene.
+  const gpu::Program& scene_program(const Scene& scene, const std::string& main);
   /// Draws the full-screen triangle with `program` into the bound framebuffer.
   void draw_fullscreen(const gpu::Program& program) const;
   /// Runs a shading pass over the bound framebuffer's viewport and returns the
@@ -64,6 +67,8 @@ class Kit {
                const std::function<void(const gpu::Program&)>& set_uniforms, bool early = false);
 
  private:
+  const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
+                                         const std::string& main);
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
   gpu::Query query_;

@@ -25,6 +25,7 @@ struct LayeredParams {
   bool half_rate = true;
   bool jitter = true;
   double history = 0.5;
+  bool reproject = true;
   double grid_step = 0.05;
 };
 
@@ -35,6 +36,7 @@ LayeredParams derive(const TechniqueConfig&, Params& p) {
   o.half_rate = p.get("half_rate", 1) != 0.0;
   o.jitter = p.get("jitter", 1) != 0.0;
   o.history = p.get("history", 0.5);
+  o.reproject = p.get("reproject", 1) != 0.0;
   o.grid_step = p.get("grid_step", 0.05);
   return o;
 }
@@ -134,7 +136,7 @@ class Layered final : public Technique {
       });
       stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
       stats.shaded_pixels += shaded;
-      accumulate(st, v);
+      accumulate(scene, st, v);
     }
     composite(W, H, target);
     ++frames_;
@@ -170,14 +172,16 @@ class Layered final : public Technique {
     bool valid = false;
     std::array<double, 4> rect{};  // x0, y0, w, h of the newest history
     std::array<double, 4> prev_rect{};
-    Vec2d centre{};     // unjittered gaze of the newest render
-    double radius = 0;  // blend radius (half side), native pixels
+    Vec2d centre{};  // unjittered gaze of the newest render
+    bool has_view_proj = false;
+    std::array<float, 16> view_proj{};  // the scene camera of the newest render
+    double radius = 0;                  // blend radius (half side), native pixels
   };
 
   // Temporal reverse reprojection in screen space: the previous result is
   // resampled at this frame's sample positions and clamped to the current
   // 3x3 neighbourhood (rejecting disoccluded or changed samples), then blended.
-  void accumulate(LayerState& st, const View& v) {
+  void accumulate(Scene& scene, LayerState& st, const View& v) {
     const std::array<double, 4> rect{v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0};
     const int next = 1 - st.latest;
     Target& out = st.history[static_cast<size_t>(next)];
@@ -186,7 +190,18 @@ class Layered final : public Technique {
     // The inner layer samples at native resolution and is not jittered:
     // blending its history would only add lag, so only subsampled layers blend.
     const bool blend = opt_.history > 0.0 && st.valid && v.pixel_scale > 1.0;
-    const gpu::Program& p = kit_.fullscreen("layered/temporal.frag");
+    // With scene depth and a camera, reverse reprojection through the
+    // previous camera; otherwise in screen space.
+    const auto vp = scene.view_projection();
+    const bool reproject = blend && opt_.reproject && vp && st.has_view_proj;
+    const gpu::Program& p = reproject ? kit_.scene_program(scene, "layered/temporal_reproject.frag")
+                                      : kit_.fullscreen("layered/temporal.frag");
+    if (reproject) {
+      scene.bind(p, v);
+      glProgramUniformMatrix4fv(p.id(), p.uniform("u_prev_view_proj"), 1, GL_FALSE,
+                                st.view_proj.data());
+      p.set("u_frame_size", float(display_.width_px), float(display_.height_px));
+    }
     st.current.color.bind(Scene::kFirstTechniqueUnit);
     p.set("u_current", Scene::kFirstTechniqueUnit);
     if (blend) {
@@ -199,6 +214,8 @@ class Layered final : public Technique {
     const auto& pr = blend ? st.rect : rect;
     p.set("u_prev_rect", float(pr[0]), float(pr[1]), float(pr[2]), float(pr[3]));
     p.set("u_history_weight", blend ? float(opt_.history) : 0.0f);
+    st.has_view_proj = vp.has_value();
+    if (vp) st.view_proj = *vp;
     kit_.draw_fullscreen(p);
     st.latest = next;
     st.prev_rect = st.rect;
@@ -259,6 +276,10 @@ TechniqueInfo layered_info() {
            {"jitter", "jitter each layer by up to half its pixel per frame (0 or 1)", 0, 1, true},
            {"history", "weight of the reprojected history in the temporal blend (0 = off)", 0.0,
             0.95, false},
+           {"reproject",
+            "reverse-reproject history through the scene camera and depth when the scene has them "
+            "(0 = screen space)",
+            0, 1, true},
            {"grid_step", "planner search step in degrees", 0.01, 1.0, false}},
           [](const TechniqueConfig& c) { return std::make_unique<Layered>(c); },
           [](const TechniqueConfig& c) {

@@ -335,6 +335,23 @@ TEST_F(Techniques, EveryTechniqueOnAMeshFile) {
   }
 }
 
+TEST_F(Techniques, ReverseReprojectionFollowsTheCamera) {
+  // Under camera motion, history reprojected through the scene's depth and the
+  // previous camera stays closer to native than history taken from the same
+  // screen position, which smears (ghosts) the periphery.
+  auto scene = load_scene("guenter");
+  auto error_after_motion = [&](double reproject) {
+    auto t = make_technique(
+        "layered",
+        config({{"history", 0.9}, {"jitter", 0}, {"half_rate", 0}, {"reproject", reproject}}));
+    Image img;
+    for (int k = 0; k < 8; ++k) img = run(*t, *scene, {320, 180}, nullptr, 10 * k);  // fast motion
+    return compare_all(native(*scene, 70), img).mean;
+  };
+  const double reprojected = error_after_motion(1), screen_space = error_after_motion(0);
+  EXPECT_LT(reprojected, 0.8 * screen_space) << reprojected << " vs " << screen_space;
+}
+
 TEST_F(Techniques, LodmaskSaysItNeedsMeshes) {
   auto scene = load_scene("raymarch");
   auto t = make_technique("lodmask", config());

@@ -11,6 +11,7 @@
 // `vec2 foveate_map(vec2 frag_coord)` that turns its own fragment coordinate
 // into a screen position. That split is what lets any technique run on any
 // scene, and what a user implements to foveate their own renderer.
+#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -95,6 +96,15 @@ class Scene {
   /// Screen positions (pixels, origin top-left) of the scene's objects at the
   /// current frame, nearest first; empty when the scene has no objects.
   [[nodiscard]] virtual std::vector<Vec2d> object_positions() const { return {}; }
+
+  /// For temporal reverse reprojection: the full frame's view-projection
+  /// matrix at the current frame (column-major), when the scene has a 3D
+  /// camera and depth. A scene that returns one also defines, in its shading
+  /// GLSL, `vec3 scene_world_position(vec2 screen_px)`: the world point seen
+  /// there in the last prepass (a far point along the ray for background).
+  [[nodiscard]] virtual std::optional<std::array<float, 16>> view_projection() const {
+    return std::nullopt;
+  }
 
   /// Texture units below this are the scene's; techniques use units from here.
   static constexpr int kFirstTechniqueUnit = 8;
