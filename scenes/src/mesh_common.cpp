@@ -95,15 +95,22 @@ GpuMesh upload_levels(const std::vector<MeshData>& levels) {
   return make_gpu(vertices, indices, std::move(lods));
 }
 
-void GBuffer::ensure(int w, int h) {
-  if (fbo && width == w && height == h) return;
+void GBuffer::ensure(int w, int h, int n) {
+  if (fbo && width == w && height == h && samples == n) return;
   width = w;
   height = h;
-  albedo = gpu::Texture::create_2d(GL_RGBA8, w, h);
-  normal = gpu::Texture::create_2d(GL_RGBA16F, w, h);
-  position = gpu::Texture::create_2d(GL_RGBA32F, w, h);
-  for (gpu::Texture* t : {&albedo, &normal, &position}) t->set_filter(GL_NEAREST, GL_NEAREST);
-  depth_stencil = gpu::Renderbuffer::create(GL_DEPTH24_STENCIL8, w, h);
+  samples = n;
+  if (n > 1) {
+    albedo = gpu::Texture::create_2d_multisample(GL_RGBA8, w, h, n);
+    normal = gpu::Texture::create_2d_multisample(GL_RGBA16F, w, h, n);
+    position = gpu::Texture::create_2d_multisample(GL_RGBA32F, w, h, n);
+  } else {
+    albedo = gpu::Texture::create_2d(GL_RGBA8, w, h);
+    normal = gpu::Texture::create_2d(GL_RGBA16F, w, h);
+    position = gpu::Texture::create_2d(GL_RGBA32F, w, h);
+    for (gpu::Texture* t : {&albedo, &normal, &position}) t->set_filter(GL_NEAREST, GL_NEAREST);
+  }
+  depth_stencil = gpu::Renderbuffer::create(GL_DEPTH24_STENCIL8, w, h, n > 1 ? n : 0);
   fbo = gpu::Framebuffer::create();
   fbo.attach(GL_COLOR_ATTACHMENT0, albedo);
   fbo.attach(GL_COLOR_ATTACHMENT1, normal);
@@ -156,7 +163,7 @@ bool MeshSceneBase::visible(const glm::mat4& m, glm::vec3 c, float r) const {
 void MeshSceneBase::prepass_begin(const View& view) {
   last_view_ = view;
   view_proj_ = view_projection(view);
-  gbuffer_.ensure(view.target_width, view.target_height);
+  gbuffer_.ensure(view.target_width, view.target_height, std::max(1, view.samples));
   gbuffer_.fbo.bind();
   glViewport(0, 0, view.target_width, view.target_height);
   const float zero[4] = {0, 0, 0, 0};

@@ -77,7 +77,8 @@ struct GBuffer {
   gpu::Renderbuffer depth_stencil;
   gpu::Framebuffer fbo;
   int width = 0, height = 0;
-  void ensure(int w, int h);
+  int samples = 1;
+  void ensure(int w, int h, int samples);
 };
 
 class MeshSceneBase : public Scene {

@@ -53,22 +53,30 @@ const gpu::Program& Kit::fullscreen(const std::string& fragment) {
   return programs_.emplace(fragment, compiler_.build("fullscreen.vert", fragment)).first->second;
 }
 
-const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early) {
+const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early,
+                                 int samples) {
+  if (samples > 1)
+    return scene_program_with(scene, mapping, "common/shade_main_msaa.frag", samples);
   return scene_program_with(scene, mapping,
                             early ? "common/shade_main_early.frag" : "common/shade_main.frag");
 }
 
-const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& main) {
-  return scene_program_with(scene, "", main);
+const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& main, int samples) {
+  return scene_program_with(scene, "", main, samples);
 }
 
 const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::string& before,
-                                            const std::string& main) {
-  const std::string key = scene.shade_key() + "|" + before + "|" + main;
+                                            const std::string& main, int samples) {
+  const std::string key =
+      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples);
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   std::vector<gpu::StageSource::Piece> pieces = scene.shade_source();
   if (!before.empty()) pieces.insert(pieces.begin(), {before, {}});
+  if (samples > 1) {
+    pieces.insert(pieces.begin(),
+                  {"msaa", "#define FOVEATE_GBUFFER_SAMPLES " + std::to_string(samples) + "\n"});
+  }
   pieces.push_back({main, {}});
   auto tables = scene.shader_files();
   tables.push_back(embedded::techniques_shaders());
@@ -88,7 +96,7 @@ void Kit::draw_fullscreen(const gpu::Program& program) const {
 
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
                   const std::function<void(const gpu::Program&)>& set_uniforms, bool early) {
-  const gpu::Program& p = shading(scene, mapping, early);
+  const gpu::Program& p = shading(scene, mapping, early, view.samples);
   scene.bind(p, view);
   if (set_uniforms) set_uniforms(p);
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());

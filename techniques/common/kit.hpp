@@ -54,10 +54,11 @@ class Kit {
   /// file defining vec2 foveate_map(vec2 frag_coord)), cached per scene.
   /// With `early`, depth and stencil tests run before shading (stencil masks
   /// really save the work) and there is no off-screen discard.
-  const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false);
+  const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false,
+                              int samples = 1);
   /// A program of the scene's shading GLSL followed by `main` (an embedded
   /// file with main() that may call the scene's functions), cached per scene.
-  const gpu::Program& scene_program(const Scene& scene, const std::string& main);
+  const gpu::Program& scene_program(const Scene& scene, const std::string& main, int samples = 1);
   /// Draws the full-screen triangle with `program` into the bound framebuffer.
   void draw_fullscreen(const gpu::Program& program) const;
   /// Runs a shading pass over the bound framebuffer's viewport and returns the
@@ -68,7 +69,7 @@ class Kit {
 
  private:
   const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
-                                         const std::string& main);
+                                         const std::string& main, int samples = 1);
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
   gpu::Query query_;

@@ -352,6 +352,45 @@ TEST_F(Techniques, ReverseReprojectionFollowsTheCamera) {
   EXPECT_LT(reprojected, 0.8 * screen_space) << reprojected << " vs " << screen_space;
 }
 
+TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
+  // A supersampled truth: native at twice the resolution, box-filtered 2x2.
+  auto scene = load_scene("guenter");
+  Image truth(kW, kH);
+  {
+    gpu::Texture big = gpu::Texture::create_2d(GL_RGBA8, 2 * kW, 2 * kH);
+    gpu::Framebuffer fb = gpu::Framebuffer::create();
+    fb.attach(GL_COLOR_ATTACHMENT0, big);
+    TechniqueConfig c = config();
+    c.display = Display::load("desktop-1080p").resized(2 * kW, 2 * kH);
+    auto n = make_technique("native", c);
+    FrameInput f = frame(0);
+    f.width = 2 * kW;
+    f.height = 2 * kH;
+    scene->update(f);
+    n->render(*scene, f, GazeState{{kW, kH}}, fb.id());
+    const Image hi = gpu::read_texture(big);
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        for (int ch = 0; ch < 4; ++ch) {
+          truth.at(x, y)[ch] = static_cast<uint8_t>(
+              (hi.at(2 * x, 2 * y)[ch] + hi.at(2 * x + 1, 2 * y)[ch] + hi.at(2 * x, 2 * y + 1)[ch] +
+               hi.at(2 * x + 1, 2 * y + 1)[ch] + 2) /
+              4);
+        }
+      }
+    }
+  }
+  auto layered = [&](double msaa) {
+    auto t = make_technique("layered", config({{"msaa", msaa}, {"jitter", 0}, {"history", 0}}));
+    return run(*t, *scene, {320, 180});
+  };
+  const Image with = layered(4), without = layered(1);
+  const double e_with = compare_all(truth, with).mean, e_without = compare_all(truth, without).mean;
+  EXPECT_LT(e_with, e_without) << e_with << " vs " << e_without;
+  // Only edges change: most pixels are shaded once either way.
+  EXPECT_LT(compare_all(with, without).off, 0.2);
+}
+
 TEST_F(Techniques, LodmaskSaysItNeedsMeshes) {
   auto scene = load_scene("raymarch");
   auto t = make_technique("lodmask", config());

@@ -44,6 +44,12 @@ struct View {
   /// Size of one target pixel in native pixels (a layer's sampling factor s):
   /// geometric LOD sees it.
   double pixel_scale = 1.0;
+  /// Multisample antialiasing of the prepass (mesh scenes): 1 = off. With
+  /// more, the scene's shading GLSL is compiled with FOVEATE_GBUFFER_SAMPLES
+  /// defined, reads sample `foveate_sample`, and defines
+  /// `bool scene_samples_differ(vec2 screen_px)` (true on edges, where each
+  /// sample is shaded).
+  int samples = 1;
   [[nodiscard]] static View full(int w, int h) {
     return View{0, 0, double(w), double(h), w, h, 1.0};
   }
