@@ -93,11 +93,7 @@ class Checkerboard final : public Technique {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, W, H);
     kit_.draw_fullscreen(rec);
-    FrameStats s;
-    s.parts.push_back({"kept quads", shaded});
-    s.shaded_pixels = shaded;
-    s.native_pixels = double(W) * H;
-    return s;
+    return one_pass_stats("kept quads", shaded, W, H);
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {

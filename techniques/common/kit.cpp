@@ -135,6 +135,14 @@ void set_rect_mapping(const gpu::Program& p, const View& v) {
   p.set("u_map_target", float(v.target_width), float(v.target_height));
 }
 
+FrameStats one_pass_stats(const char* name, double shaded, int width, int height) {
+  FrameStats s;
+  s.parts.push_back({name, shaded});
+  s.shaded_pixels = shaded;
+  s.native_pixels = double(width) * height;
+  return s;
+}
+
 double latency_margin_deg(const GazeState& g) {
   return std::max(0.0, g.latency_ms) * std::max(0.0, g.saccade_deg_per_s) / 1000.0;
 }

@@ -94,6 +94,9 @@ inline Vec2d to_gl(Vec2d p, int height) { return {p.x, height - p.y}; }
 inline constexpr const char* kMapRect = "common/map_rect.glsl";
 void set_rect_mapping(const gpu::Program& p, const View& view);
 
+/// Stats of a technique whose shading is one pass (`name`: what it shaded).
+FrameStats one_pass_stats(const char* name, double shaded, int width, int height);
+
 /// Extra eccentricity (degrees) that the eye can travel during the gaze latency.
 double latency_margin_deg(const GazeState& gaze);
 

@@ -126,11 +126,7 @@ class LogPolar final : public Technique {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, W, H);
     kit_.draw_fullscreen(inv);
-    FrameStats s;
-    s.parts.push_back({"log-polar buffer", shaded});
-    s.shaded_pixels = shaded;
-    s.native_pixels = double(W) * H;
-    return s;
+    return one_pass_stats("log-polar buffer", shaded, W, H);
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {

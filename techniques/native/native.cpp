@@ -23,11 +23,7 @@ class Native final : public Technique {
     glViewport(0, 0, frame.width, frame.height);
     const double n = kit_.shade(scene, view, kMapRect,
                                 [&](const gpu::Program& p) { set_rect_mapping(p, view); });
-    FrameStats s;
-    s.parts.push_back({"screen", n});
-    s.shaded_pixels = n;
-    s.native_pixels = double(frame.width) * frame.height;
-    return s;
+    return one_pass_stats("screen", n, frame.width, frame.height);
   }
 
   std::vector<OverlayShape> overlay(const GazeState& g) const override {
