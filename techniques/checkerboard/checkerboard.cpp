@@ -70,20 +70,31 @@ class Checkerboard final : public Technique {
     glClearColor(0, 0, 0, 0);  // alpha 0 = not covered
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    // 1. Stencil mask: 1 where a pixel is kept.
+    // 1. Stencil mask: region k + 1 where a pixel of region k is kept, 0 where dropped.
     glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_ALWAYS, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     const gpu::Program& mask = kit_.fullscreen("checkerboard/mask.frag");
     set_pattern(mask, gaze, t, H);
-    kit_.draw_fullscreen(mask);
+    for (int k = 0; k < 4; ++k) {
+      glStencilFunc(GL_ALWAYS, k + 1, 0xFF);
+      mask.set("u_region", k);
+      kit_.draw_fullscreen(mask);
+    }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    // 2. Shading where the stencil says so: dropped quads never reach the shader.
-    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    // 2. Shading where the stencil says so, one pass per region so that each
+    //    region's fragments are counted: dropped quads never reach the shader.
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const double shaded = kit_.shade(
-        scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
+    FrameStats stats;
+    stats.native_pixels = double(W) * H;
+    for (int k = 0; k < 4; ++k) {
+      glStencilFunc(GL_EQUAL, k + 1, 0xFF);
+      const double n = kit_.shade(
+          scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
+      stats.parts.push_back(
+          {"region " + std::to_string(k) + " (drops " + std::to_string(k) + " of 4)", n});
+      stats.shaded_pixels += n;
+    }
     glDisable(GL_STENCIL_TEST);
     // 3. Reconstruction into the target.
     const gpu::Program& rec = kit_.fullscreen("checkerboard/reconstruct.frag");
@@ -93,7 +104,7 @@ class Checkerboard final : public Technique {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, W, H);
     kit_.draw_fullscreen(rec);
-    return one_pass_stats("kept quads", shaded, W, H);
+    return stats;
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {

@@ -29,6 +29,20 @@ LodParams derive(const TechniqueConfig& c, Params& p) {
   return o;
 }
 
+// Pixel centres (x + 0.5, y + 0.5) of a W x H screen within `r` of `c`, row by row.
+double pixels_in_disc(Vec2d c, double r, int W, int H) {
+  double n = 0;
+  for (int y = 0; y < H; ++y) {
+    const double dy = y + 0.5 - c.y;
+    if (std::abs(dy) > r) continue;
+    const double half = std::sqrt(r * r - dy * dy);
+    const double x0 = std::max(0.0, std::ceil(c.x - half - 0.5)),
+                 x1 = std::min(double(W) - 1, std::floor(c.x + half - 0.5));
+    if (x1 >= x0) n += x1 - x0 + 1;
+  }
+  return n;
+}
+
 class LodMask final : public Technique {
  public:
   explicit LodMask(const TechniqueConfig& c) : display_(c.display) {
@@ -75,13 +89,13 @@ class LodMask final : public Technique {
     glViewport(0, 0, W, H);
     const double shaded = kit_.shade(
         scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
+    // Every pixel is lit (deferred); the parts say how many pixels got their
+    // geometry from each LOD: pixel centres inside each stencil circle.
+    const double in = pixels_in_disc(g, r_in, W, H), out = pixels_in_disc(g, r_out, W, H);
     FrameStats s;
-    const double pi = 3.14159265358979;
-    const double a_in = std::min(pi * r_in * r_in, double(W) * H);
-    const double a_out = std::min(pi * r_out * r_out, double(W) * H);
-    s.parts = {{"full detail (approx. area)", a_in},
-               {"mid detail (approx. area)", a_out - a_in},
-               {"low detail (approx. area)", double(W) * H - a_out}};
+    s.parts = {{"lod 0 (full detail)", in},
+               {"lod 1 (about 10 %)", out - in},
+               {"lod 2 (about 1 %)", double(W) * H - out}};
     s.shaded_pixels = shaded;
     s.native_pixels = double(W) * H;
     return s;

@@ -170,11 +170,19 @@ TEST_F(Techniques, CheckerboardCountsMatchThePatternAndFoveaIsExact) {
   // The CPU model of the same pattern.
   CheckerboardPattern p =
       CheckerboardPattern::from_acuity(4, config().display, AcuityModel::quality("A"));
-  double kept = 0;
+  double kept = 0, per_region[4] = {0, 0, 0, 0};
   for (int y = 0; y < kH; ++y) {
-    for (int x = 0; x < kW; ++x) kept += p.kept({x + 0.5, y + 0.5}, gaze) ? 1 : 0;
+    for (int x = 0; x < kW; ++x) {
+      if (p.kept({x + 0.5, y + 0.5}, gaze)) {
+        kept += 1;
+        per_region[p.region({x + 0.5, y + 0.5}, gaze)] += 1;
+      }
+    }
   }
   EXPECT_EQ(s.shaded_pixels, kept);
+  ASSERT_EQ(s.parts.size(), 4u);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(s.parts[static_cast<size_t>(k)].pixels, per_region[k]) << "region " << k;
   EXPECT_LT(s.shaded_pixels, 0.5 * kW * kH);
   // Region 0 (no quad dropped) is native's. Tiles are snapped to 2n, so stay a tile inside.
   EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, p.thresholds_px[0] - 8.0 * std::sqrt(2.0)));
@@ -473,4 +481,33 @@ TEST_F(Techniques, LatencyGrowsEveryFovea) {
   f.latency_ms = 50;
   f.fovea_deg = fovea_deg;
   EXPECT_NEAR(radius(inset->overlay(g)), 0.5 * f.diameter_px(d), 1e-6);
+}
+
+TEST_F(Techniques, LodmaskCountsPixelsPerLod) {
+  auto scene = load_scene("guenter");
+  auto t = make_technique("lodmask", config());
+  const Vec2d gaze{600, 20};  // near a corner: the circles are clipped by the screen
+  FrameStats s;
+  run(*t, *scene, gaze, &s);
+  ASSERT_EQ(s.parts.size(), 3u);
+  double inner_deg = 0, outer_deg = 0;
+  for (const auto& [k, v] : t->parameters()) {
+    if (k == "inner_deg") inner_deg = v;
+    if (k == "outer_deg") outer_deg = v;
+  }
+  // Brute force over every pixel centre (gaze in top-left pixels; the stencil is in GL
+  // coordinates, so flip y).
+  const Display d = config().display;
+  const double ri = d.radius_px_at(inner_deg), ro = d.radius_px_at(outer_deg);
+  double in = 0, ring = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const double r = std::hypot(x + 0.5 - gaze.x, (kH - y - 0.5) - (kH - gaze.y));
+      in += r <= ri ? 1 : 0;
+      ring += r > ri && r <= ro ? 1 : 0;
+    }
+  }
+  EXPECT_NEAR(s.parts[0].pixels, in, 0.002 * in + 2);
+  EXPECT_NEAR(s.parts[1].pixels, ring, 0.002 * ring + 2);
+  EXPECT_EQ(s.parts[0].pixels + s.parts[1].pixels + s.parts[2].pixels, double(kW) * kH);
 }
