@@ -16,6 +16,7 @@ namespace {
 
 struct CheckerParams {
   int block = 4;
+  bool export_stencil = true;
   bool fractions = false;
   std::array<double, 3> thresholds_px{};
 };
@@ -24,6 +25,7 @@ CheckerParams derive(const TechniqueConfig& c, Params& p) {
   CheckerParams o;
   o.block = static_cast<int>(p.get("block", 4));
   o.fractions = p.get("fractions", 0) != 0.0;
+  o.export_stencil = p.get("export_stencil", 1) != 0.0;
   const CheckerboardPattern pat =
       o.fractions
           ? CheckerboardPattern::from_fractions(o.block, c.display.width_px, c.display.height_px)
@@ -42,6 +44,7 @@ class Checkerboard final : public Technique {
     pat.block = opt_.block;
     pat.thresholds_px = opt_.thresholds_px;
     pat.validate();
+    stencil_export_ = opt_.export_stencil && epoxy_has_gl_extension("GL_ARB_shader_stencil_export");
   }
   std::string name() const override { return "checkerboard"; }
   std::vector<std::pair<std::string, double>> parameters() const override { return values_; }
@@ -74,12 +77,20 @@ class Checkerboard final : public Technique {
     glEnable(GL_STENCIL_TEST);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    const gpu::Program& mask = kit_.fullscreen("checkerboard/mask.frag");
-    set_pattern(mask, gaze, t, H);
-    for (int k = 0; k < 4; ++k) {
-      glStencilFunc(GL_ALWAYS, k + 1, 0xFF);
-      mask.set("u_region", k);
+    if (stencil_export_) {
+      // One pass: the shader exports each pixel's stencil value.
+      const gpu::Program& mask = kit_.fullscreen("checkerboard/mask_export.frag");
+      set_pattern(mask, gaze, t, H);
+      glStencilFunc(GL_ALWAYS, 0, 0xFF);
       kit_.draw_fullscreen(mask);
+    } else {
+      const gpu::Program& mask = kit_.fullscreen("checkerboard/mask.frag");
+      set_pattern(mask, gaze, t, H);
+      for (int k = 0; k < 4; ++k) {
+        glStencilFunc(GL_ALWAYS, k + 1, 0xFF);
+        mask.set("u_region", k);
+        kit_.draw_fullscreen(mask);
+      }
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // 2. Shading where the stencil says so, one pass per region so that each
@@ -134,6 +145,7 @@ class Checkerboard final : public Technique {
   std::vector<std::pair<std::string, double>> values_;
   Kit kit_;
   Target frame_;
+  bool stencil_export_ = false;
 };
 
 }  // namespace
@@ -148,6 +160,10 @@ TechniqueInfo checkerboard_info() {
         256, true},
        {"fractions",
         "1 = Silvera's fixed thresholds (10/25/40 % of the diagonal) instead of the acuity model",
+        0, 1, true},
+       {"export_stencil",
+        "write the region mask in one pass with ARB_shader_stencil_export where the driver has "
+        "it (0 = four passes)",
         0, 1, true},
        {"r1", "radius (px) where region 1 (drop 1 of 4) begins", 0, 1e6, false},
        {"r2", "radius (px) where region 2 (drop 2 of 4) begins", 0, 1e6, false},
