@@ -52,5 +52,7 @@ Map acuity_difference_with_sigma(const Image& reference, const Image& test, cons
 
 /// Throws foveate::Error unless both images are non-empty and have the same size.
 void check_same_size(const Image& a, const Image& b, const std::string& what);
+/// Throws foveate::Error unless the options are valid for compare().
+void check_options(const QualityOptions& options);
 
 }  // namespace foveate::metrics::detail

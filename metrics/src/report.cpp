@@ -1,4 +1,4 @@
-// The whole-frame comparison, its JSON form and the heatmaps.
+// The whole-frame comparison, the JSON form of reports and summaries, and the heatmaps.
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -10,7 +10,11 @@ namespace foveate::metrics {
 
 namespace {
 
-void check_options(const QualityOptions& o) {
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+void detail::check_options(const QualityOptions& o) {
   const auto& e = o.band_edges_deg;
   for (size_t i = 0; i < e.size(); ++i) {
     if (!std::isfinite(e[i]) || e[i] < 0.0) {
@@ -24,10 +28,6 @@ void check_options(const QualityOptions& o) {
     throw Error("quality options: the acuity model needs slope > 0 and w0 > 0");
   }
 }
-
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-
-}  // namespace
 
 std::vector<std::uint8_t> band_indices(const Map& ecc, const std::vector<double>& edges) {
   std::vector<std::uint8_t> out(ecc.values.size(), 255);
@@ -43,7 +43,7 @@ std::vector<std::uint8_t> band_indices(const Map& ecc, const std::vector<double>
 QualityReport compare(const Image& reference, const Image& test, const Display& display, Vec2d gaze,
                       const QualityOptions& options) {
   detail::check_same_size(reference, test, "compare");
-  check_options(options);
+  detail::check_options(options);
   if (display.width_px != reference.width || display.height_px != reference.height) {
     throw Error("compare: display '" + display.name + "' is " + std::to_string(display.width_px) +
                 "x" + std::to_string(display.height_px) + " but the images are " +
@@ -150,6 +150,16 @@ nlohmann::json to_json(const QualityReport& r) {
                      {"flip_mean", number(b.flip_mean)}});
   }
   j["bands"] = bands;
+  return j;
+}
+
+nlohmann::json to_json(const QualitySummary& s) {
+  nlohmann::json j = to_json(s.mean);
+  j["frames"] = s.frames;
+  j["identical_frames"] = s.identical_frames;
+  j["flicker_ratio"] = number(s.flicker.ratio);
+  j["flicker_reference_change"] = number(s.flicker.reference_change);
+  j["flicker_test_change"] = number(s.flicker.test_change);
   return j;
 }
 

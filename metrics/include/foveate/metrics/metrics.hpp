@@ -167,6 +167,61 @@ class FlickerTracker {
   int pairs_ = 0;
 };
 
+// ---- Over a sequence of frames -----------------------------------------------
+
+/// Peripheral flicker over a sequence (the figures of FlickerTracker).
+struct FlickerSummary {
+  double ratio = kNaN;             ///< test_change / reference_change (FlickerTracker::ratio)
+  double reference_change = kNaN;  ///< native's mean |frame-to-frame change| (luminance codes)
+  double test_change = kNaN;       ///< the same for the test frames
+  int frame_pairs = 0;             ///< consecutive frame pairs measured
+};
+
+/// Quality of a sequence of test frames against their reference frames.
+struct QualitySummary {
+  int frames = 0;            ///< frames compared
+  int identical_frames = 0;  ///< frames identical to their reference (infinite PSNR)
+  /// Every number of QualityReport, over the image and per band, averaged over
+  /// the frames: the mean of the finite per-frame values, +inf when there were
+  /// none but some were +inf (PSNR of frames all identical, in the image or in
+  /// the band), NaN when none was defined. PSNR is thereby averaged in dB over
+  /// the frames that differ. width, height, acuity_threshold and the band
+  /// edges are the frames' own (the same in every frame).
+  QualityReport mean;
+  FlickerSummary flicker;
+};
+
+/// The quality of a sequence: every frame is compared with compare() and fed
+/// to a FlickerTracker; summary() averages the reports over the frames.
+class QualitySeries {
+ public:
+  /// `display` must have the frames' size (Display::resized). Throws
+  /// foveate::Error when the options are invalid.
+  explicit QualitySeries(Display display, QualityOptions options = {},
+                         double flicker_min_ecc_deg = 10.0);
+  /// One frame: the reference image and the test image, rendered with the same
+  /// inputs, and the gaze in pixels. Throws like compare().
+  void add(const Image& reference, const Image& test, Vec2d gaze_px);
+  [[nodiscard]] QualitySummary summary() const;
+  /// The per-frame reports, in the order added.
+  [[nodiscard]] const std::vector<QualityReport>& reports() const { return reports_; }
+  [[nodiscard]] int frames() const { return static_cast<int>(reports_.size()); }
+  [[nodiscard]] const Display& display() const { return display_; }
+  [[nodiscard]] const QualityOptions& options() const { return options_; }
+
+ private:
+  Display display_;
+  QualityOptions options_;
+  std::vector<QualityReport> reports_;
+  FlickerTracker flicker_;
+};
+
+/// The summary as JSON: to_json(summary.mean) (same keys and conventions as a
+/// single report; "identical" is true when every frame was identical) plus
+/// "frames", "identical_frames", "flicker_ratio", "flicker_reference_change"
+/// and "flicker_test_change". Non-finite numbers are null.
+nlohmann::json to_json(const QualitySummary& summary);
+
 // ---- Pictures for reports ----------------------------------------------------
 
 /// Colour for t in [0, 1] on the heat scale (black, purple, red, orange, pale yellow).

@@ -1,0 +1,112 @@
+// Quality over a sequence of frames: the per-frame reports averaged field by
+// field, and peripheral flicker.
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "internal.hpp"
+
+namespace foveate::metrics {
+
+namespace {
+
+// The numbers of a report that are averaged over frames. A number added to
+// QualityReport or BandStats goes into one of these lists (or, when it is the
+// same in every frame, is copied in mean_report); the static_asserts count the
+// fields so that none is left out. to_json then writes it.
+constexpr std::array kReportMeans{
+    &QualityReport::psnr_db,     &QualityReport::ssim,
+    &QualityReport::acuity_rmse, &QualityReport::acuity_visible_fraction,
+    &QualityReport::flip_mean,   &QualityReport::flip_ppd};
+constexpr std::array kBandMeans{&BandStats::psnr_db, &BandStats::ssim, &BandStats::pixels_fraction,
+                                &BandStats::flip_mean, &BandStats::acuity_rmse};
+
+// Besides the averaged numbers: from_deg and to_deg.
+static_assert(sizeof(BandStats) == (kBandMeans.size() + 2) * sizeof(double),
+              "a field was added to BandStats: average it in kBandMeans (series.cpp)");
+// Besides the averaged numbers: acuity_threshold, width, height and the bands.
+static_assert(sizeof(QualityReport) == (kReportMeans.size() + 1) * sizeof(double) +
+                                           2 * sizeof(int) + sizeof(std::vector<BandStats>),
+              "a field was added to QualityReport: average it in kReportMeans (series.cpp)");
+
+// Mean of the finite values; +inf when there were none but some were +inf
+// (identical frames' PSNR); NaN when no value was defined.
+class Mean {
+ public:
+  void add(double v) {
+    if (std::isfinite(v)) {
+      sum_ += v;
+      ++finite_;
+    } else if (v > 0.0) {  // false for NaN
+      infinite_ = true;
+    }
+  }
+  [[nodiscard]] double value() const {
+    if (finite_ > 0) return sum_ / finite_;
+    return infinite_ ? kInf : kNaN;
+  }
+
+ private:
+  double sum_ = 0;
+  int finite_ = 0;
+  bool infinite_ = false;
+};
+
+// out.*field = the Mean of item->*field over the items, for every field.
+template <class T, size_t N>
+void average(const std::vector<const T*>& items, const std::array<double T::*, N>& fields, T& out) {
+  for (double T::*field : fields) {
+    Mean m;
+    for (const T* item : items) m.add(item->*field);
+    out.*field = m.value();
+  }
+}
+
+// The reports of one series share their size, options and hence bands.
+QualityReport mean_report(const std::vector<QualityReport>& reports) {
+  QualityReport out;
+  if (reports.empty()) return out;
+  const QualityReport& first = reports.front();
+  out.width = first.width;
+  out.height = first.height;
+  out.acuity_threshold = first.acuity_threshold;
+  out.bands = first.bands;  // the edges; the numbers are replaced below
+  std::vector<const QualityReport*> all;
+  for (const QualityReport& r : reports) all.push_back(&r);
+  average(all, kReportMeans, out);
+  for (size_t b = 0; b < out.bands.size(); ++b) {
+    std::vector<const BandStats*> band;
+    for (const QualityReport& r : reports) band.push_back(&r.bands[b]);
+    average(band, kBandMeans, out.bands[b]);
+  }
+  return out;
+}
+
+}  // namespace
+
+QualitySeries::QualitySeries(Display display, QualityOptions options, double flicker_min_ecc_deg)
+    : display_(std::move(display)),
+      options_(std::move(options)),
+      flicker_(display_, flicker_min_ecc_deg) {
+  detail::check_options(options_);
+}
+
+void QualitySeries::add(const Image& reference, const Image& test, Vec2d gaze_px) {
+  QualityReport r = compare(reference, test, display_, gaze_px, options_);
+  flicker_.add(reference, test, gaze_px);
+  reports_.push_back(std::move(r));
+}
+
+QualitySummary QualitySeries::summary() const {
+  QualitySummary s;
+  s.frames = frames();
+  for (const QualityReport& r : reports_) s.identical_frames += std::isinf(r.psnr_db) ? 1 : 0;
+  s.mean = mean_report(reports_);
+  s.flicker.ratio = flicker_.ratio();
+  s.flicker.reference_change = flicker_.reference_change();
+  s.flicker.test_change = flicker_.test_change();
+  s.flicker.frame_pairs = flicker_.frame_pairs();
+  return s;
+}
+
+}  // namespace foveate::metrics

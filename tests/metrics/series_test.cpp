@@ -1,0 +1,284 @@
+// QualitySeries: means over frames, computed against compare() frame by frame.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "foveate/core/error.hpp"
+#include "foveate/metrics/metrics.hpp"
+
+namespace foveate::metrics {
+namespace {
+
+constexpr int kW = 320, kH = 180;
+
+Display display() { return Display{}.resized(kW, kH); }
+
+// Grey noise in [20, 230], so that the offsets below never clip.
+Image noise(std::uint64_t seed) {
+  Image img(kW, kH);
+  std::uint64_t s = seed * 2862933555777941757ULL + 3037000493ULL;
+  for (size_t i = 0; i < img.rgba.size(); i += 4) {
+    s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+    const auto v = static_cast<std::uint8_t>(20 + (s >> 33) % 211);
+    img.rgba[i] = img.rgba[i + 1] = img.rgba[i + 2] = v;
+    img.rgba[i + 3] = 255;
+  }
+  return img;
+}
+
+// `ref` with `offset` codes added to R, G and B of the pixels 10 to 20 degrees
+// from the image centre (band 2 of the default bands for a gaze at the centre).
+Image offset_in_annulus(const Image& ref, int offset) {
+  const Display d = display();
+  Image out = ref;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const double e = d.eccentricity_deg({x + 0.5, y + 0.5}, {kW / 2.0, kH / 2.0});
+      if (e < 10.0 || e >= 20.0) continue;
+      for (int c = 0; c < 3; ++c)
+        out.at(x, y)[c] = static_cast<std::uint8_t>(ref.at(x, y)[c] + offset);
+    }
+  }
+  return out;
+}
+
+// The expected mean, written out independently of the library: the mean of the
+// finite values; +inf if there were none but some were +inf; else NaN.
+double expected_mean(const std::vector<double>& values) {
+  double sum = 0;
+  int n = 0;
+  bool inf = false;
+  for (double v : values) {
+    if (std::isfinite(v)) {
+      sum += v;
+      ++n;
+    } else if (std::isinf(v) && v > 0) {
+      inf = true;
+    }
+  }
+  if (n > 0) return sum / n;
+  return inf ? kInf : kNaN;
+}
+
+void expect_same(double actual, double expected, const std::string& what) {
+  if (std::isnan(expected)) {
+    EXPECT_TRUE(std::isnan(actual)) << what << ": " << actual;
+  } else if (std::isinf(expected)) {
+    EXPECT_EQ(actual, expected) << what;
+  } else {
+    EXPECT_NEAR(actual, expected, 1e-9 * std::max(1.0, std::fabs(expected))) << what;
+  }
+}
+
+// Three frames: +4 codes in the annulus, identical, +8 codes in the annulus;
+// the reference changes every frame; the gaze moves in the identical frame.
+struct Frames {
+  std::vector<Image> reference, test;
+  std::vector<Vec2d> gaze;
+  Frames() {
+    const int offsets[] = {4, 0, 8};
+    const Vec2d gazes[] = {{160, 90}, {150, 96}, {160, 90}};
+    for (int k = 0; k < 3; ++k) {
+      reference.push_back(noise(100 + static_cast<std::uint64_t>(k)));
+      test.push_back(offsets[k] ? offset_in_annulus(reference.back(), offsets[k])
+                                : reference.back());
+      gaze.push_back(gazes[k]);
+    }
+  }
+};
+
+TEST(Series, MeansOverFramesOfEveryField) {
+  const Frames f;
+  const Display d = display();
+  QualityOptions o;
+  o.acuity = AcuityModel::quality("A");
+  QualitySeries series(d, o);
+  std::vector<QualityReport> single;
+  FlickerTracker flicker(d, 10.0);
+  for (size_t k = 0; k < f.test.size(); ++k) {
+    series.add(f.reference[k], f.test[k], f.gaze[k]);
+    single.push_back(compare(f.reference[k], f.test[k], d, f.gaze[k], o));
+    flicker.add(f.reference[k], f.test[k], f.gaze[k]);
+  }
+  const QualitySummary s = series.summary();
+  EXPECT_EQ(s.frames, 3);
+  EXPECT_EQ(series.frames(), 3);
+  EXPECT_EQ(s.identical_frames, 1);
+  EXPECT_EQ(s.mean.width, kW);
+  EXPECT_EQ(s.mean.height, kH);
+  EXPECT_EQ(s.mean.acuity_threshold, o.visible_threshold);
+
+  // Over the image.
+  auto overall = [&](double QualityReport::*field) {
+    std::vector<double> v;
+    for (const QualityReport& r : single) v.push_back(r.*field);
+    return expected_mean(v);
+  };
+  expect_same(s.mean.psnr_db, overall(&QualityReport::psnr_db), "psnr_db");
+  expect_same(s.mean.ssim, overall(&QualityReport::ssim), "ssim");
+  expect_same(s.mean.acuity_rmse, overall(&QualityReport::acuity_rmse), "acuity_rmse");
+  expect_same(s.mean.acuity_visible_fraction, overall(&QualityReport::acuity_visible_fraction),
+              "acuity_visible_fraction");
+  expect_same(s.mean.flip_mean, overall(&QualityReport::flip_mean), "flip_mean");
+  expect_same(s.mean.flip_ppd, overall(&QualityReport::flip_ppd), "flip_ppd");
+  // PSNR in dB over the two frames that differ, not over all three.
+  EXPECT_NEAR(s.mean.psnr_db, 0.5 * (single[0].psnr_db + single[2].psnr_db), 1e-9);
+
+  // Per band, every field.
+  ASSERT_EQ(s.mean.bands.size(), 4u);
+  for (size_t b = 0; b < 4; ++b) {
+    auto band = [&](double BandStats::*field) {
+      std::vector<double> v;
+      for (const QualityReport& r : single) v.push_back(r.bands[b].*field);
+      return expected_mean(v);
+    };
+    const std::string at = " of band " + std::to_string(b);
+    EXPECT_EQ(s.mean.bands[b].from_deg, single[0].bands[b].from_deg);
+    EXPECT_EQ(s.mean.bands[b].to_deg, single[0].bands[b].to_deg);
+    expect_same(s.mean.bands[b].psnr_db, band(&BandStats::psnr_db), "psnr_db" + at);
+    expect_same(s.mean.bands[b].ssim, band(&BandStats::ssim), "ssim" + at);
+    expect_same(s.mean.bands[b].acuity_rmse, band(&BandStats::acuity_rmse), "acuity_rmse" + at);
+    expect_same(s.mean.bands[b].flip_mean, band(&BandStats::flip_mean), "flip_mean" + at);
+    expect_same(s.mean.bands[b].pixels_fraction, band(&BandStats::pixels_fraction),
+                "pixels_fraction" + at);
+  }
+
+  // The band with the offsets: known PSNR per frame (a uniform +4 is 16 squared
+  // codes per channel, +8 is 64), and the means differ from the last frame's.
+  const BandStats& b2 = s.mean.bands[2];
+  const BandStats& last = single.back().bands[2];
+  const double psnr4 = 10 * std::log10(255.0 * 255.0 / 16.0);
+  const double psnr8 = 10 * std::log10(255.0 * 255.0 / 64.0);
+  EXPECT_NEAR(single[0].bands[2].psnr_db, psnr4, 0.01);
+  EXPECT_NEAR(last.psnr_db, psnr8, 0.01);
+  EXPECT_NEAR(b2.psnr_db, 0.5 * (single[0].bands[2].psnr_db + last.psnr_db), 1e-9);
+  EXPECT_GT(std::fabs(b2.psnr_db - last.psnr_db), 2.0);
+  EXPECT_NEAR(
+      b2.acuity_rmse,
+      (single[0].bands[2].acuity_rmse + single[1].bands[2].acuity_rmse + last.acuity_rmse) / 3.0,
+      1e-9);
+  EXPECT_GT(last.acuity_rmse, 1.0);
+  EXPECT_LT(b2.acuity_rmse, 0.8 * last.acuity_rmse);
+  EXPECT_GT(last.flip_mean, 0.0);
+  EXPECT_LT(b2.flip_mean, 0.8 * last.flip_mean);
+  EXPECT_NE(b2.pixels_fraction, last.pixels_fraction);  // the gaze moved in frame 1
+
+  // The band around the gaze was identical in every frame.
+  EXPECT_TRUE(std::isinf(s.mean.bands[0].psnr_db));
+  EXPECT_EQ(s.mean.bands[0].ssim, 1.0);
+
+  // Flicker: the tracker's figures, once.
+  EXPECT_EQ(s.flicker.ratio, flicker.ratio());
+  EXPECT_EQ(s.flicker.reference_change, flicker.reference_change());
+  EXPECT_EQ(s.flicker.test_change, flicker.test_change());
+  EXPECT_EQ(s.flicker.frame_pairs, 2);
+  EXPECT_TRUE(std::isfinite(s.flicker.ratio));
+  EXPECT_GT(s.flicker.reference_change, 10.0);  // the reference noise changes every frame
+
+  // The per-frame reports are compare()'s.
+  ASSERT_EQ(series.reports().size(), 3u);
+  EXPECT_EQ(series.reports()[2].bands[2].acuity_rmse, last.acuity_rmse);
+}
+
+TEST(Series, JsonKeysAndNulls) {
+  const Frames f;
+  const Display d = display();
+  QualitySeries series(d);
+  for (size_t k = 0; k < f.test.size(); ++k) series.add(f.reference[k], f.test[k], f.gaze[k]);
+  const QualitySummary s = series.summary();
+  const nlohmann::json j = to_json(s);
+
+  std::set<std::string> keys;
+  for (const auto& [k, v] : j.items()) keys.insert(k);
+  const std::set<std::string> expect_keys{
+      "width",     "height",   "frames",        "identical_frames",         "identical",
+      "psnr_db",   "ssim",     "acuity_rmse",   "acuity_visible_fraction",  "acuity_threshold",
+      "flip_mean", "flip_ppd", "flicker_ratio", "flicker_reference_change", "flicker_test_change",
+      "bands"};
+  EXPECT_EQ(keys, expect_keys);
+  ASSERT_EQ(j["bands"].size(), 4u);
+  const std::set<std::string> expect_band_keys{"from_deg",    "to_deg",   "pixels_fraction",
+                                               "identical",   "psnr_db",  "ssim",
+                                               "acuity_rmse", "flip_mean"};
+  for (const auto& band : j["bands"]) {
+    std::set<std::string> band_keys;
+    for (const auto& [k, v] : band.items()) band_keys.insert(k);
+    EXPECT_EQ(band_keys, expect_band_keys);
+  }
+
+  EXPECT_EQ(j["frames"].get<int>(), 3);
+  EXPECT_EQ(j["identical_frames"].get<int>(), 1);
+  EXPECT_FALSE(j["identical"].get<bool>());
+  EXPECT_EQ(j["psnr_db"].get<double>(), s.mean.psnr_db);
+  EXPECT_EQ(j["bands"][2]["acuity_rmse"].get<double>(), s.mean.bands[2].acuity_rmse);
+  EXPECT_EQ(j["bands"][2]["flip_mean"].get<double>(), s.mean.bands[2].flip_mean);
+  EXPECT_EQ(j["flicker_ratio"].get<double>(), s.flicker.ratio);
+  EXPECT_EQ(j["flicker_test_change"].get<double>(), s.flicker.test_change);
+  // Non-finite numbers are null: the band identical in every frame (+inf PSNR)
+  // and the outermost band's upper edge.
+  EXPECT_TRUE(j["bands"][0]["psnr_db"].is_null());
+  EXPECT_TRUE(j["bands"][0]["identical"].get<bool>());
+  EXPECT_FALSE(j["bands"][2]["identical"].get<bool>());
+  EXPECT_TRUE(j["bands"][3]["to_deg"].is_null());
+  EXPECT_TRUE(nlohmann::json::accept(j.dump()));
+
+  // A static reference and a test that changes: infinite flicker ratio -> null.
+  QualitySeries twinkle(d);
+  const Image ref = noise(7);
+  twinkle.add(ref, offset_in_annulus(ref, 4), {160, 90});
+  twinkle.add(ref, offset_in_annulus(ref, 8), {160, 90});
+  const QualitySummary t = twinkle.summary();
+  EXPECT_TRUE(std::isinf(t.flicker.ratio));
+  const nlohmann::json tj = to_json(t);
+  EXPECT_TRUE(tj["flicker_ratio"].is_null());
+  EXPECT_EQ(tj["flicker_reference_change"].get<double>(), 0.0);
+  EXPECT_GT(tj["flicker_test_change"].get<double>(), 0.0);
+}
+
+TEST(Series, AllIdenticalAndEmpty) {
+  const Display d = display();
+  QualitySeries empty(d);
+  const QualitySummary e = empty.summary();
+  EXPECT_EQ(e.frames, 0);
+  EXPECT_TRUE(std::isnan(e.mean.psnr_db));
+  EXPECT_TRUE(std::isnan(e.flicker.ratio));
+  const nlohmann::json ej = to_json(e);
+  EXPECT_EQ(ej["frames"].get<int>(), 0);
+  EXPECT_TRUE(ej["psnr_db"].is_null());
+  EXPECT_FALSE(ej["identical"].get<bool>());  // undefined, not identical
+  EXPECT_TRUE(ej["flicker_ratio"].is_null());
+  EXPECT_TRUE(nlohmann::json::accept(ej.dump()));
+
+  QualitySeries same(d);
+  for (int k = 0; k < 2; ++k) same.add(noise(200), noise(200), {160, 90});
+  const QualitySummary s = same.summary();
+  EXPECT_EQ(s.frames, 2);
+  EXPECT_EQ(s.identical_frames, 2);
+  EXPECT_TRUE(std::isinf(s.mean.psnr_db));
+  EXPECT_EQ(s.mean.ssim, 1.0);
+  EXPECT_EQ(s.mean.acuity_rmse, 0.0);
+  EXPECT_EQ(s.flicker.ratio, 1.0);  // neither changed
+  const nlohmann::json sj = to_json(s);
+  EXPECT_TRUE(sj["identical"].get<bool>());
+  EXPECT_TRUE(sj["psnr_db"].is_null());
+  EXPECT_EQ(sj["identical_frames"].get<int>(), 2);
+}
+
+TEST(Series, ClearErrors) {
+  const Display d = display();
+  QualityOptions bad;
+  bad.band_edges_deg = {0, 10, 5};
+  EXPECT_THROW((void)QualitySeries(d, bad), Error);
+  QualitySeries series(d);
+  EXPECT_THROW(series.add(noise(1), Image(kW + 1, kH), {0, 0}), Error);
+  EXPECT_THROW(series.add(Image(2 * kW, 2 * kH), Image(2 * kW, 2 * kH), {0, 0}), Error);
+  EXPECT_EQ(series.frames(), 0);  // nothing was added
+}
+
+}  // namespace
+}  // namespace foveate::metrics
