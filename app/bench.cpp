@@ -14,8 +14,8 @@
 #include "foveate/core/file.hpp"
 #include "foveate/core/stats.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/metrics/metrics.hpp"
 #include "gaze_input.hpp"
-#include "quality.hpp"
 
 namespace foveate::app {
 
@@ -101,7 +101,7 @@ BenchResult run_bench(const BenchOptions& o) {
     AcuityModel acuity;
     std::unique_ptr<Technique> impl;
     TechniqueResult result;
-    std::unique_ptr<QualityAccumulator> quality;
+    std::unique_ptr<metrics::QualitySeries> quality;
   };
   std::vector<Run> runs;
   auto add_run = [&](const std::string& t, double value, bool swept) {
@@ -127,7 +127,11 @@ BenchResult run_bench(const BenchOptions& o) {
     r.result.technique = t;
     r.result.sweep_value = value;
     r.result.parameters = r.impl->parameters();
-    if (o.quality) r.quality = std::make_unique<QualityAccumulator>(session.display(), r.acuity);
+    if (o.quality) {
+      metrics::QualityOptions qo;
+      qo.acuity = r.acuity;
+      r.quality = std::make_unique<metrics::QualitySeries>(session.display(), qo);
+    }
     runs.push_back(std::move(r));
   };
   // Native is the reference for speed and quality: always run, once.
@@ -194,8 +198,9 @@ BenchResult run_bench(const BenchOptions& o) {
       if (o.quality && idx != 0) r.quality->add(native_image, img, g.gaze_px);
       if (k + 1 == o.frames) {
         if (o.quality && idx != 0) {
-          r.result.heatmap = QualityAccumulator::heatmap(native_image, img);
-          r.result.acuity_heatmap = r.quality->acuity_heatmap(native_image, img, g.gaze_px);
+          r.result.heatmap = metrics::error_heatmap(native_image, img, 64.0);
+          r.result.acuity_heatmap = metrics::acuity_error_heatmap(
+              native_image, img, r.quality->display(), g.gaze_px, r.quality->options());
         }
         r.result.sample = std::move(img);
         out.sample_gaze_px = g.gaze_px;
@@ -224,10 +229,7 @@ BenchResult run_bench(const BenchOptions& o) {
     for (PixelPart& p : res.parts) p.pixels /= o.frames;
     res.pixel_ratio = res.shaded_pixels / res.native_pixels;
     res.bound_share = res.speedup * res.pixel_ratio;
-    if (r.quality) {
-      res.quality = r.quality->summary();
-      res.flicker_ratio = r.quality->flicker_ratio();
-    }
+    if (r.quality && r.quality->frames() > 0) res.quality = r.quality->summary();
     out.results.push_back(std::move(res));
   }
   return out;

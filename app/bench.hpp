@@ -2,11 +2,12 @@
 // The benchmark: the same frames (camera, time, gaze) rendered with each
 // technique in one process, interleaved frame by frame, timed with a steady
 // clock around glFinish, and compared with native for quality.
-#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "foveate/core/image.hpp"
+#include "foveate/metrics/metrics.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -38,9 +39,10 @@ struct TechniqueResult {
   std::vector<PixelPart> parts;  ///< mean per frame
   double pixel_ratio = 1;        ///< shaded / native
   double bound_share = 1;        ///< speedup / (native / shaded)
-  nlohmann::json quality;        ///< metrics over the measured frames (means)
-  double flicker_ratio = 0;      ///< peripheral flicker relative to native (NaN without motion)
-  Image sample;                  ///< last frame, for the report
+  /// Quality against native over the measured frames; empty for native itself
+  /// and with --no-quality.
+  std::optional<metrics::QualitySummary> quality;
+  Image sample;  ///< last frame, for the report
   Image heatmap;
   Image acuity_heatmap;
 };

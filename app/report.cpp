@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "bench.hpp"
@@ -14,9 +15,41 @@ namespace foveate::app {
 
 namespace {
 
-std::string quality_cell(const nlohmann::json& q, const char* key, int digits) {
-  if (!q.is_object() || !q.contains(key) || q[key].is_null()) return "-";
-  return fmt(q[key].get<double>(), digits);
+// The quality columns of the CSV, Markdown and HTML tables, read from the
+// typed summary (the JSON writes all of it through metrics::to_json).
+struct QualityColumn {
+  const char* csv;    ///< CSV header
+  const char* title;  ///< Markdown and HTML header
+  int digits;
+  double (*get)(const metrics::QualitySummary&);
+};
+constexpr QualityColumn kQualityColumns[] = {
+    {"psnr_db", "PSNR dB", 2, [](const metrics::QualitySummary& q) { return q.mean.psnr_db; }},
+    {"ssim", "SSIM", 4, [](const metrics::QualitySummary& q) { return q.mean.ssim; }},
+    {"acuity_rmse", "acuity RMSE", 3,
+     [](const metrics::QualitySummary& q) { return q.mean.acuity_rmse; }},
+    {"flicker_ratio", "flicker", 2,
+     [](const metrics::QualitySummary& q) { return q.flicker.ratio; }},
+};
+
+/// A quality figure, or NaN where not measured (native itself, --no-quality).
+double quality_value(const TechniqueResult& r, double (*get)(const metrics::QualitySummary&)) {
+  return r.quality ? get(*r.quality) : std::nan("");
+}
+double quality_value(const TechniqueResult& r, const QualityColumn& c) {
+  return quality_value(r, c.get);
+}
+double mean_ssim(const metrics::QualitySummary& q) { return q.mean.ssim; }
+double mean_acuity_rmse(const metrics::QualitySummary& q) { return q.mean.acuity_rmse; }
+
+// `{}` where quality was not measured (native itself, --no-quality).
+nlohmann::json quality_json(const TechniqueResult& r) {
+  return r.quality ? metrics::to_json(*r.quality) : nlohmann::json::object();
+}
+
+std::string quality_cell(const TechniqueResult& r, const QualityColumn& c) {
+  const double v = quality_value(r, c);
+  return std::isfinite(v) ? fmt(v, c.digits) : "-";
 }
 
 std::string label(const BenchResult& b, const TechniqueResult& r) {
@@ -45,7 +78,7 @@ nlohmann::json to_json(const BenchResult& b) {
                         {"pixel_speedup_bound", 1.0 / r.pixel_ratio},
                         {"bound_share", r.bound_share},
                         {"parts", parts},
-                        {"quality", r.quality.is_null() ? nlohmann::json::object() : r.quality},
+                        {"quality", quality_json(r)},
                         {"frame_ms", r.frame_ms}};
     if (!b.options.sweep_key.empty()) j["sweep_value"] = r.sweep_value;
     // GPU timer queries only where the renderer reports meaningful ones.
@@ -80,18 +113,19 @@ nlohmann::json to_json(const BenchResult& b) {
 std::string csv(const BenchResult& b) {
   std::ostringstream s;
   s << "technique,label,sweep_value,median_ms,p90_ms,speedup,speedup_lo,speedup_hi,shaded_pixels,"
-       "native_pixels,pixel_ratio,bound_share,psnr_db,ssim,acuity_rmse,flicker_ratio\n";
+       "native_pixels,pixel_ratio,bound_share";
+  for (const QualityColumn& c : kQualityColumns) s << ',' << c.csv;
+  s << '\n';
   for (const TechniqueResult& r : b.results) {
-    auto q = [&](const char* k) {
-      return r.quality.is_object() && r.quality.contains(k) && !r.quality[k].is_null()
-                 ? std::to_string(r.quality[k].get<double>())
-                 : std::string();
-    };
     s << r.technique << ',' << '"' << label(b, r) << '"' << ',' << r.sweep_value << ','
       << r.median_ms << ',' << r.p90_ms << ',' << r.speedup << ',' << r.speedup_lo << ','
       << r.speedup_hi << ',' << r.shaded_pixels << ',' << r.native_pixels << ',' << r.pixel_ratio
-      << ',' << r.bound_share << ',' << q("psnr_db") << ',' << q("ssim") << ',' << q("acuity_rmse")
-      << ',' << q("flicker_ratio") << '\n';
+      << ',' << r.bound_share;
+    for (const QualityColumn& c : kQualityColumns) {
+      const double v = quality_value(r, c);
+      s << ',' << (std::isfinite(v) ? std::to_string(v) : std::string());
+    }
+    s << '\n';
   }
   return s.str();
 }
@@ -200,18 +234,17 @@ std::string html(const BenchResult& b) {
        "interval); the pixel bound is native pixels / shaded pixels.</p>\n";
   h << "<table id=\"results\"><tr><th>technique</th><th>median ms</th><th>p90 "
        "ms</th><th>speedup</th><th>95 % CI</th>"
-       "<th>shaded px</th><th>pixel ratio</th><th>share of bound</th><th>PSNR "
-       "dB</th><th>SSIM</th><th>acuity RMSE</th>"
-       "<th>flicker</th></tr>\n";
+       "<th>shaded px</th><th>pixel ratio</th><th>share of bound</th>";
+  for (const QualityColumn& c : kQualityColumns) h << "<th>" << c.title << "</th>";
+  h << "</tr>\n";
   for (const TechniqueResult& r : b.results) {
     h << "<tr><td>" << label(b, r) << "</td><td>" << fmt(r.median_ms, 2) << "</td><td>"
       << fmt(r.p90_ms, 2) << "</td><td>" << fmt(r.speedup, 2) << "x</td><td>"
       << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2) << "</td><td>"
       << fmt(r.shaded_pixels, 0) << "</td><td>" << fmt(r.pixel_ratio, 3) << "</td><td>"
-      << fmt(100 * r.bound_share, 0) << " %</td><td>" << quality_cell(r.quality, "psnr_db", 2)
-      << "</td><td>" << quality_cell(r.quality, "ssim", 4) << "</td><td>"
-      << quality_cell(r.quality, "acuity_rmse", 3) << "</td><td>"
-      << quality_cell(r.quality, "flicker_ratio", 2) << "</td></tr>\n";
+      << fmt(100 * r.bound_share, 0) << " %</td>";
+    for (const QualityColumn& c : kQualityColumns) h << "<td>" << quality_cell(r, c) << "</td>";
+    h << "</tr>\n";
   }
   h << "</table>\n<h2>Speed</h2>\n";
   std::vector<std::string> names, qnames;
@@ -222,13 +255,8 @@ std::string html(const BenchResult& b) {
     bound.push_back(1.0 / r.pixel_ratio);
     if (r.technique == "native") continue;  // the quality reference itself
     qnames.push_back(label(b, r));
-    auto q = [&](const char* k) {
-      return r.quality.is_object() && r.quality.contains(k) && !r.quality[k].is_null()
-                 ? r.quality[k].get<double>()
-                 : std::nan("");
-    };
-    ssim.push_back(q("ssim"));
-    acuity.push_back(q("acuity_rmse"));
+    ssim.push_back(quality_value(r, mean_ssim));
+    acuity.push_back(quality_value(r, mean_acuity_rmse));
   }
   h << "<div class=chart id=\"chart-speed\">"
     << bar_chart(names, speed, bound, "measured speedup", "pixel bound (native / shaded pixels)",
@@ -239,8 +267,8 @@ std::string html(const BenchResult& b) {
       << bar_chart(qnames, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity")
       << "</div>\n"
       << "<div class=chart id=\"chart-acuity\">"
-      << bar_chart(qnames, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)", "",
-                   "Error the eye can resolve")
+      << bar_chart(qnames, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)",
+                   "", "Error the eye can resolve")
       << "</div>\n";
   } else {
     h << "<p class=note>Not measured (--no-quality).</p>\n";
@@ -261,10 +289,7 @@ std::string html(const BenchResult& b) {
       it->second.x.push_back(r.sweep_value);
       it->second.y.push_back(r.speedup);
       quality_series[r.technique].x.push_back(r.speedup);
-      quality_series[r.technique].y.push_back(r.quality.is_object() && r.quality.contains("ssim") &&
-                                                      !r.quality["ssim"].is_null()
-                                                  ? r.quality["ssim"].get<double>()
-                                                  : std::nan(""));
+      quality_series[r.technique].y.push_back(quality_value(r, mean_ssim));
     }
     std::vector<Series> s1, s2;
     for (auto& [k, v] : speed_series) s1.push_back(v);
@@ -337,15 +362,18 @@ std::string html(const BenchResult& b) {
 std::string bench_markdown(const BenchResult& b) {
   std::ostringstream s;
   s << "| technique | median ms | p90 ms | speedup (95 % CI) | shaded px | pixel ratio | share of "
-       "bound | PSNR dB | SSIM | acuity RMSE | flicker |\n"
-    << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+       "bound |";
+  for (const QualityColumn& c : kQualityColumns) s << ' ' << c.title << " |";
+  s << "\n|---|---:|---:|---:|---:|---:|---:|";
+  for (size_t i = 0; i < std::size(kQualityColumns); ++i) s << "---:|";
+  s << '\n';
   for (const TechniqueResult& r : b.results) {
     s << "| " << label(b, r) << " | " << fmt(r.median_ms, 2) << " | " << fmt(r.p90_ms, 2) << " | "
       << fmt(r.speedup, 2) << "x (" << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2) << ") | "
       << fmt(r.shaded_pixels, 0) << " | " << fmt(r.pixel_ratio, 3) << " | "
-      << fmt(100 * r.bound_share, 0) << " % | " << quality_cell(r.quality, "psnr_db", 2) << " | "
-      << quality_cell(r.quality, "ssim", 4) << " | " << quality_cell(r.quality, "acuity_rmse", 3)
-      << " | " << quality_cell(r.quality, "flicker_ratio", 2) << " |\n";
+      << fmt(100 * r.bound_share, 0) << " % |";
+    for (const QualityColumn& c : kQualityColumns) s << ' ' << quality_cell(r, c) << " |";
+    s << '\n';
   }
   return s.str();
 }
