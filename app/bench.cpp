@@ -15,7 +15,6 @@
 #include "foveate/core/stats.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/metrics/metrics.hpp"
-#include "gaze_input.hpp"
 
 namespace foveate::app {
 
@@ -77,6 +76,53 @@ class Progress {
 
 }  // namespace
 
+Sweep Sweep::parse(const std::string& text) {
+  const auto eq = text.find('=');
+  std::vector<std::string> parts;
+  if (eq != std::string::npos) {
+    std::stringstream in(text.substr(eq + 1));
+    for (std::string item; std::getline(in, item, ':');) parts.push_back(item);
+  }
+  if (eq == std::string::npos || eq == 0 || parts.size() != 3) {
+    throw Error(
+        "--sweep: expected KEY=FROM:TO:STEP (e.g. slope=0.015:0.035:0.005 or "
+        "layered.layers=2:5:1), got '" +
+        text + "'");
+  }
+  double v[3];
+  for (size_t i = 0; i < 3; ++i) {
+    if (!parse_number(parts[i], v[i]) || !std::isfinite(v[i]))
+      throw Error("--sweep: '" + parts[i] + "' is not a number");
+  }
+  if (!(v[2] > 0) || v[1] < v[0]) throw Error("--sweep: need FROM <= TO and STEP > 0");
+  // Counted, not accumulated: a step too small to change the value cannot loop.
+  const double count = std::floor((v[1] - v[0]) / v[2] + 1e-9) + 1;
+  if (!(count <= 50)) throw Error("--sweep: at most 50 values");
+  Sweep s;
+  s.key = text.substr(0, eq);
+  for (int i = 0; i < static_cast<int>(count); ++i) s.values.push_back(v[0] + i * v[2]);
+  if (s.key == "slope") return s;
+  const auto dot = s.key.find('.');
+  s.technique = dot == std::string::npos ? "" : s.key.substr(0, dot);
+  s.param = dot == std::string::npos ? s.key : s.key.substr(dot + 1);
+  bool known = false;
+  for (const TechniqueInfo& t : techniques()) known = known || s.applies_to(t.name);
+  if (!known) {
+    throw Error("--sweep: no technique has a parameter '" + s.key + "' (see 'foveate techniques')");
+  }
+  return s;
+}
+
+bool Sweep::applies_to(const std::string& name) const {
+  if (empty()) return false;
+  if (param.empty()) return true;  // the slope changes every technique
+  if (!technique.empty() && technique != name) return false;
+  for (const ParamDecl& p : technique_info(name).params) {
+    if (p.key == param) return true;
+  }
+  return false;
+}
+
 BenchResult run_bench(const BenchOptions& o) {
   if (o.frames < 1 || o.frames > 100000) throw Error("--frames: expected 1..100000");
   if (o.warmup < 0 || o.warmup > 1000) throw Error("--warmup: expected 0..1000");
@@ -85,14 +131,15 @@ BenchResult run_bench(const BenchOptions& o) {
 
   BenchResult out;
   out.options = o;
-  Session session(o.session);
+  Session session(o.session, o.gaze);
   out.display = session.display();
   out.scene = session.scene().info().name;
   {
     const auto* r = glGetString(GL_RENDERER);
     out.renderer = r ? reinterpret_cast<const char*>(r) : "";
   }
-  GazeInput gaze(o.gaze, session);
+  Renderer& renderer = session.renderer();
+  gaze::GazeTracker& gaze = session.gaze();
 
   // The runs: each technique once, or once per swept value.
   struct Run {
@@ -108,22 +155,14 @@ BenchResult run_bench(const BenchOptions& o) {
     Run r;
     r.technique = t;
     r.sweep_value = value;
-    SessionOptions so = o.session;
     ParamArgs params = o.params;
-    r.acuity = so.acuity;
-    if (swept && o.sweep_key == "slope") {
-      r.acuity = AcuityModel::with_slope(value);
+    r.acuity = o.session.acuity;
+    if (swept && o.sweep.param.empty()) {
+      r.acuity = with_flag("--sweep", [&] { return AcuityModel::with_slope(value); });
     } else if (swept) {
-      const auto dot = o.sweep_key.find('.');
-      const std::string tech = dot == std::string::npos ? "" : o.sweep_key.substr(0, dot);
-      const std::string key = dot == std::string::npos ? o.sweep_key : o.sweep_key.substr(dot + 1);
-      params.per_technique[tech][key] = value;
+      params.per_technique[t][o.sweep.param] = value;
     }
-    TechniqueConfig c;
-    c.display = session.display();
-    c.acuity = r.acuity;
-    c.params = params_for(params, t);
-    r.impl = make_technique(t, c);
+    r.impl = session.make(t, params, r.acuity);
     r.result.technique = t;
     r.result.sweep_value = value;
     r.result.parameters = r.impl->parameters();
@@ -138,12 +177,8 @@ BenchResult run_bench(const BenchOptions& o) {
   add_run("native", 0.0, false);
   for (const std::string& t : o.techniques) {
     if (t == "native") continue;
-    const bool swept_here =
-        !o.sweep_key.empty() &&
-        (o.sweep_key == "slope" || o.sweep_key.rfind(t + ".", 0) == 0 ||
-         (o.sweep_key.find('.') == std::string::npos && o.sweep_key != "slope"));
-    if (swept_here) {
-      for (double v : o.sweep_values) add_run(t, v, true);
+    if (o.sweep.applies_to(t)) {
+      for (double v : o.sweep.values) add_run(t, v, true);
     } else {
       add_run(t, 0.0, false);
     }
@@ -156,10 +191,10 @@ BenchResult run_bench(const BenchOptions& o) {
   gpu::FrameTimer timer;
   // Warm-up: compile shaders, allocate targets, fill temporal history.
   for (int k = 0; k < o.warmup; ++k) {
-    const double t = session.frame_input(k).time_s;
+    const double t = renderer.frame_input(k).time_s;
     const GazeState g = gaze.at(t);
     for (Run& r : runs) {
-      session.render(*r.impl, k, g);
+      renderer.render(*r.impl, k, g);
       progress.step("warm-up " + r.technique);
     }
   }
@@ -168,14 +203,14 @@ BenchResult run_bench(const BenchOptions& o) {
   // renders k + 1, and the order rotates so that no technique is always first.
   for (int k = 0; k < o.frames; ++k) {
     const int frame = o.warmup + k;
-    const double t = session.frame_input(frame).time_s;
+    const double t = renderer.frame_input(frame).time_s;
     const GazeState g = gaze.at(t);
     Image native_image;
     std::vector<std::pair<size_t, Image>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
       timer.start();
-      const FrameStats s = session.render(*r.impl, frame, g);
+      const FrameStats s = renderer.render(*r.impl, frame, g);
       const double ms = timer.stop();
       r.result.frame_ms.push_back(ms);
       if (std::isfinite(timer.gpu_ms())) r.result.gpu_ms.push_back(timer.gpu_ms());
@@ -187,11 +222,11 @@ BenchResult run_bench(const BenchOptions& o) {
         for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p)
           r.result.parts[p].pixels += s.parts[p].pixels;
       if (o.quality || k + 1 == o.frames) {
-        Image img = session.read_output();
+        Image img = renderer.read_output();
         if (&r == &runs[0]) native_image = img;
         images.emplace_back(static_cast<size_t>(&r - &runs[0]), std::move(img));
       }
-      progress.step(r.technique + (o.sweep_key.empty() ? "" : " @" + fmt(r.sweep_value, 4)));
+      progress.step(r.technique + (o.sweep.empty() ? "" : " @" + fmt(r.sweep_value, 4)));
     }
     for (auto& [idx, img] : images) {
       Run& r = runs[idx];

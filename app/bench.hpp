@@ -12,6 +12,20 @@
 
 namespace foveate::app {
 
+/// --sweep KEY=FROM:TO:STEP: the MAR slope, a parameter of every technique
+/// that declares it, or one technique's (TECHNIQUE.KEY).
+struct Sweep {
+  std::string key;        ///< as given ("slope", "KEY", "TECHNIQUE.KEY"); empty = no sweep
+  std::string technique;  ///< empty = every technique that declares `param`
+  std::string param;      ///< empty when the slope is swept
+  std::vector<double> values;
+  /// Parses and checks the text (at most 50 values; the key must exist).
+  static Sweep parse(const std::string& text);
+  [[nodiscard]] bool empty() const { return key.empty(); }
+  /// Whether the run of `technique` is repeated for every value.
+  [[nodiscard]] bool applies_to(const std::string& technique) const;
+};
+
 struct BenchOptions {
   SessionOptions session;
   std::vector<std::string> techniques{"native", "layered", "logpolar", "checkerboard", "inset"};
@@ -22,8 +36,7 @@ struct BenchOptions {
   bool quality = true;
   std::string out;  ///< output directory
   bool progress = true;
-  std::string sweep_key;  ///< "" or the swept key ("slope" or TECHNIQUE.KEY)
-  std::vector<double> sweep_values;
+  Sweep sweep;
   std::string command_line;
 };
 

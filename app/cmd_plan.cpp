@@ -100,8 +100,8 @@ std::string sweep_svg(const std::vector<SweepRow>& rows) {
   c.log_y = true;
   std::string top = svg_line_chart(series, o), bottom = svg_line_chart(cost, c);
   bottom.replace(bottom.find("<svg "), 5, "<svg y=\"" + std::to_string(o.height) + "\" ");
-  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(o.width) + "\" height=\"" +
-         std::to_string(o.height + c.height) + "\">\n" + top + bottom + "</svg>\n";
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(o.width) +
+         "\" height=\"" + std::to_string(o.height + c.height) + "\">\n" + top + bottom + "</svg>\n";
 }
 
 void run_plan(const PlanArgs& a) {

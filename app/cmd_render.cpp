@@ -10,7 +10,6 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
-#include "gaze_input.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -18,64 +17,47 @@ namespace foveate::app {
 namespace {
 
 struct RenderArgs {
-  std::string scene;
-  std::string size = "640x360";
+  SessionArgs session;
   int frames = 1;
-  double time = 0.0;
-  double fps = 60.0;
-  std::string camera_path;
-  std::vector<std::string> channels;
   std::string out;
   std::string technique = "native";
-  std::string quality;
-  std::optional<double> slope;
-  std::vector<std::string> params;
-  std::string gaze;
-  std::string display = "desktop-1080p";
   std::string mouse;
   bool overlay = false;
+  RenderArgs() { session.size = "640x360"; }
 };
 
 void run_render(const RenderArgs& a) {
   if (a.frames < 1 || a.frames > 100000)
     throw Error("--frames: expected 1..100000, got " + std::to_string(a.frames));
-  if (!(a.fps > 0.0 && a.fps <= 10000.0)) throw Error("--fps: expected a positive rate");
-  if (!std::isfinite(a.time)) throw Error("--time: must be finite");
-  SessionOptions o;
-  o.scene = a.scene;
-  o.channels = a.channels;
-  o.camera_path = a.camera_path;
-  o.size = parse_size(a.size, "--size");
-  o.display = a.display;
-  o.acuity = acuity_from_options(a.quality, a.slope);
-  o.fps = a.fps;
-  o.start_time = a.time;
+  SessionOptions o = to_session_options(a.session);
   if (!a.mouse.empty()) {
     o.mouse_px = parse_point(a.mouse, o.size.width, o.size.height, "--mouse");
     o.mouse_down = true;
   }
-  const ParamArgs params = parse_params(a.params);
+  with_flag("--technique", [&] { return technique_info(a.technique); });
+  const ParamArgs params = parse_params(a.session.params);
   validate_params(params, {a.technique});
   std::filesystem::create_directories(a.out);
-  Session session(o);
-  GazeInput gaze_input(a.gaze, session);
+  Session session(o, a.session.gaze);
+  Renderer& renderer = session.renderer();
+  renderer.set_overlay(a.overlay);
   auto technique = session.make(a.technique, params);
   double shaded = 0, native = 0;
   for (int k = 0; k < a.frames; ++k) {
-    const GazeState gaze = gaze_input.at(session.frame_input(k).time_s);
-    const FrameStats s = session.render(*technique, k, gaze, a.overlay);
+    const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
+    const FrameStats s = renderer.render(*technique, k, gaze);
     shaded += s.shaded_pixels;
     native += s.native_pixels;
     char name[64];
     std::snprintf(name, sizeof name, "frame-%04d.png", k);
-    write_png((std::filesystem::path(a.out) / name).string(), session.read_output());
+    write_png((std::filesystem::path(a.out) / name).string(), renderer.read_output());
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
             << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out
             << "/\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
             << fmt(100.0 * shaded / native, 1) << " % of native)\n"
-            << gaze_input.report() << "\n";
+            << session.gaze().report() << "\n";
 }
 
 }  // namespace
@@ -84,31 +66,12 @@ void register_render(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* sub =
       app.add_subcommand("render", "Render frames of a scene with a technique to PNG files");
-  sub->add_option("--scene", a->scene,
-                  "Built-in scene name (see 'foveate scenes'), Shadertoy .glsl file or mesh file")
-      ->required();
-  sub->add_option("--size", a->size, "Output size WxH in pixels")->capture_default_str();
+  add_session_options(sub, a->session, true);
   sub->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
-  sub->add_option("--time", a->time, "Scene time of the first frame in seconds")
-      ->capture_default_str();
-  sub->add_option("--fps", a->fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")
-      ->capture_default_str();
-  sub->add_option("--camera-path", a->camera_path,
-                  "Camera keyframes JSON (built-in and mesh scenes)");
-  sub->add_option("--channel", a->channels,
-                  "Image for iChannel0..3 of a Shadertoy shader (repeat, in order)");
   sub->add_option("--mouse", a->mouse,
                   "Shadertoy iMouse position X,Y (pixels or normalized), button down");
   sub->add_option("--out", a->out, "Output directory (frame-0000.png, ...)")->required();
   sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
-      ->capture_default_str();
-  sub->add_option("--quality", a->quality, "Acuity preset A or B (default A)");
-  sub->add_option("--slope", a->slope, "Custom MAR slope m");
-  sub->add_option("--param", a->params, "Technique parameter KEY=VALUE (repeatable)");
-  sub->add_option("--gaze", a->gaze,
-                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
-  sub->add_option("--display", a->display,
-                  "Display preset or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
   sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");
   sub->callback([a] { run_render(*a); });
@@ -139,20 +102,21 @@ void register_techniques(CLI::App& app) {
   sub->callback([=] {
     const Size sz = parse_size(*size, "--size");
     TechniqueConfig c;
-    c.display = Display::load(*display).resized(sz.width, sz.height);
+    c.display = with_flag("--display", [&] {
+                  return Display::load(*display);
+                }).resized(sz.width, sz.height);
     c.acuity = acuity_from_options(*quality, *slope);
     std::printf("defaults derived for %s at %dx%d, MAR slope %.4f\n\n", c.display.name.c_str(),
                 sz.width, sz.height, c.acuity.slope);
     for (const TechniqueInfo& t : techniques()) {
       std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
-      const auto values = default_parameters(t.name, c);
-      for (const ParamSpec& p : t.params) {
-        double v = 0;
-        for (const auto& [k, x] : values) {
-          if (k == p.key) v = x;
-        }
-        std::printf("  %-18s = %-10s %s [%g..%g]\n", p.key.c_str(),
-                    fmt(v, p.integer ? 0 : 3).c_str(), p.help.c_str(), p.min, p.max);
+      if (t.needs.meshes) std::printf("  needs: a scene with meshes\n");
+      const ParamValues values = resolve_parameters(t, c);
+      for (const ParamDecl& p : t.params) {
+        const std::string value = fmt(values.real(p.key), p.type == ParamType::Real ? 3 : 0) +
+                                  (p.unit.empty() ? "" : " " + p.unit);
+        std::printf("  %-22s = %-14s %s [%g..%g]\n", p.key.c_str(), value.c_str(), p.help.c_str(),
+                    p.min, p.max);
       }
       std::printf("\n");
     }

@@ -53,8 +53,8 @@ std::string quality_cell(const TechniqueResult& r, const QualityColumn& c) {
 }
 
 std::string label(const BenchResult& b, const TechniqueResult& r) {
-  if (b.options.sweep_key.empty() || r.technique == "native") return r.technique;
-  return r.technique + " @ " + b.options.sweep_key + "=" + fmt(r.sweep_value, 4);
+  if (b.options.sweep.key.empty() || r.technique == "native") return r.technique;
+  return r.technique + " @ " + b.options.sweep.key + "=" + fmt(r.sweep_value, 4);
 }
 
 nlohmann::json to_json(const BenchResult& b) {
@@ -80,7 +80,7 @@ nlohmann::json to_json(const BenchResult& b) {
                         {"parts", parts},
                         {"quality", quality_json(r)},
                         {"frame_ms", r.frame_ms}};
-    if (!b.options.sweep_key.empty()) j["sweep_value"] = r.sweep_value;
+    if (!b.options.sweep.key.empty()) j["sweep_value"] = r.sweep_value;
     // GPU timer queries only where the renderer reports meaningful ones.
     j["gpu_median_ms"] = nullptr;
     if (!r.gpu_ms.empty()) {
@@ -91,8 +91,8 @@ nlohmann::json to_json(const BenchResult& b) {
     results.push_back(j);
   }
   nlohmann::json sweep = nullptr;
-  if (!b.options.sweep_key.empty())
-    sweep = {{"key", b.options.sweep_key}, {"values", b.options.sweep_values}};
+  if (!b.options.sweep.key.empty())
+    sweep = {{"key", b.options.sweep.key}, {"values", b.options.sweep.values}};
   return {
       {"schema", "foveate-bench/1"},
       {"command", b.options.command_line},
@@ -273,7 +273,7 @@ std::string html(const BenchResult& b) {
   } else {
     h << "<p class=note>Not measured (--no-quality).</p>\n";
   }
-  if (!b.options.sweep_key.empty()) {
+  if (!b.options.sweep.key.empty()) {
     std::map<std::string, Series> speed_series, quality_series;
     const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
     int c = 0;
@@ -294,11 +294,11 @@ std::string html(const BenchResult& b) {
     std::vector<Series> s1, s2;
     for (auto& [k, v] : speed_series) s1.push_back(v);
     for (auto& [k, v] : quality_series) s2.push_back(v);
-    ChartOptions o1{"Speedup against " + b.options.sweep_key, b.options.sweep_key,
+    ChartOptions o1{"Speedup against " + b.options.sweep.key, b.options.sweep.key,
                     "speedup over native", false};
-    ChartOptions o2{"Quality against speed (sweep of " + b.options.sweep_key + ")",
+    ChartOptions o2{"Quality against speed (sweep of " + b.options.sweep.key + ")",
                     "speedup over native", "SSIM", false};
-    h << "<h2>Sweep of " << b.options.sweep_key
+    h << "<h2>Sweep of " << b.options.sweep.key
       << "</h2>\n<div class=chart id=\"chart-sweep-speed\">" << svg_line_chart(s1, o1)
       << "</div>\n<div class=chart id=\"chart-sweep-quality\">" << svg_line_chart(s2, o2)
       << "</div>\n";

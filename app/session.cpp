@@ -1,9 +1,9 @@
 #include "session.hpp"
 
+#include <cmath>
 #include <cstdlib>
 
-#include "foveate/core/error.hpp"
-#include "foveate/gpu/frame.hpp"
+#include "foveate/gaze/gaze.hpp"
 
 namespace foveate::app {
 
@@ -25,12 +25,23 @@ ParamArgs parse_params(const std::vector<std::string>& items) {
     if (dot != std::string::npos) {
       tech = key.substr(0, dot);
       key = key.substr(dot + 1);
-      (void)technique_info(tech);  // unknown technique names are errors
+      with_flag("--param " + item, [&] { return technique_info(tech); });
     }
     out.per_technique[tech][key] = v;
   }
   return out;
 }
+
+namespace {
+
+bool declares(const TechniqueInfo& info, const std::string& key) {
+  for (const ParamDecl& p : info.params) {
+    if (p.key == key) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 void validate_params(const ParamArgs& p, const std::vector<std::string>& techs) {
   auto all = p.per_technique.find("");
@@ -40,7 +51,7 @@ void validate_params(const ParamArgs& p, const std::vector<std::string>& techs) 
     std::string names;
     for (const std::string& t : techs) {
       names += (names.empty() ? "" : ", ") + t;
-      for (const ParamSpec& s : technique_info(t).params) known = known || s.key == key;
+      known = known || declares(technique_info(t), key);
     }
     if (!known) {
       throw Error("--param " + key + ": no such parameter in " + names +
@@ -55,9 +66,7 @@ std::map<std::string, double> params_for(const ParamArgs& p, const std::string& 
   auto all = p.per_technique.find("");
   if (all != p.per_technique.end()) {
     for (const auto& [k, v] : all->second) {
-      for (const ParamSpec& s : info.params) {
-        if (s.key == k) out[k] = v;
-      }
+      if (declares(info, k)) out[k] = v;
     }
   }
   auto mine = p.per_technique.find(technique);
@@ -67,8 +76,58 @@ std::map<std::string, double> params_for(const ParamArgs& p, const std::string& 
   return out;
 }
 
-Session::Session(const SessionOptions& o) : options_(o) {
-  display_ = Display::load(o.display).resized(o.size.width, o.size.height);
+void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required) {
+  auto* scene = sub->add_option(
+      "--scene", a.scene,
+      "Built-in scene name (see 'foveate scenes'), Shadertoy .glsl file or mesh file");
+  if (scene_required) {
+    scene->required();
+  } else {
+    scene->capture_default_str();
+  }
+  sub->add_option("--size", a.size, "Output size WxH in pixels")->capture_default_str();
+  sub->add_option("--display", a.display,
+                  "Display preset or JSON file (its field of view is kept at --size)")
+      ->capture_default_str();
+  sub->add_option("--quality", a.quality, "Acuity preset A or B (default A)");
+  sub->add_option("--slope", a.slope, "Custom MAR slope m (instead of --quality)");
+  sub->add_option("--param", a.params,
+                  "Technique parameter KEY=VALUE or TECHNIQUE.KEY=VALUE (repeatable; see "
+                  "'foveate techniques')");
+  sub->add_option("--gaze", a.gaze,
+                  std::string("Gaze source; default the screen centre. ") + gaze::gaze_spec_help());
+  sub->add_option("--camera-path", a.camera_path,
+                  "Camera keyframes JSON (built-in and mesh scenes)");
+  sub->add_option("--channel", a.channels,
+                  "Image for iChannel0..3 of a Shadertoy shader (repeat, in order)");
+  sub->add_option("--fps", a.fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")
+      ->capture_default_str();
+  sub->add_option("--time", a.time, "Scene time of the first frame in seconds")
+      ->capture_default_str();
+}
+
+SessionOptions to_session_options(const SessionArgs& a) {
+  SessionOptions o;
+  o.scene = a.scene;
+  o.channels = a.channels;
+  o.camera_path = a.camera_path;
+  o.size = parse_size(a.size, "--size");
+  o.display = a.display;
+  o.acuity = acuity_from_options(a.quality, a.slope);
+  if (!(a.fps > 0.0 && a.fps <= 10000.0))
+    throw Error("--fps: expected a rate in (0, 10000] frames per second");
+  if (!std::isfinite(a.time)) throw Error("--time: must be finite");
+  o.fps = a.fps;
+  o.start_time = a.time;
+  return o;
+}
+
+Session::Session(const SessionOptions& o, const std::string& gaze_spec,
+                 std::function<std::optional<Vec2d>()> mouse)
+    : options_(o) {
+  display_ = with_flag("--display", [&] {
+               return Display::load(o.display);
+             }).resized(o.size.width, o.size.height);
   if (o.window) {
     auto w = gpu::create_window(o.size.width, o.size.height, "foveate");
     window_ = w.get();
@@ -76,62 +135,50 @@ Session::Session(const SessionOptions& o) : options_(o) {
   } else {
     context_ = gpu::create_headless_context();
   }
-  GLint max = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
-  if (o.size.width > max || o.size.height > max) {
-    throw Error("--size " + std::to_string(o.size.width) + "x" + std::to_string(o.size.height) +
-                ": larger than this GL's maximum texture size " + std::to_string(max));
-  }
   SceneOptions so;
   so.channels = o.channels;
   so.camera_path = o.camera_path;
   scene_ = load_scene(o.scene, so);
-  color_ = gpu::Texture::create_2d(GL_RGBA8, o.size.width, o.size.height);
-  fbo_ = gpu::Framebuffer::create();
-  fbo_.attach(GL_COLOR_ATTACHMENT0, color_);
-  fbo_.check("output");
+  RendererOptions ro;
+  ro.width = o.size.width;
+  ro.height = o.size.height;
+  ro.fps = o.fps;
+  ro.start_time_s = o.start_time;
+  ro.mouse_px = o.mouse_px;
+  ro.mouse_down = o.mouse_down;
+  renderer_ = with_flag("--size", [&] { return std::make_unique<Renderer>(*scene_, ro); });
+  gaze::GazeContext ctx;
+  ctx.display = display_;
+  ctx.mouse = std::move(mouse);
+  Scene* scene = scene_.get();
+  const double w = o.size.width, h = o.size.height;
+  ctx.objects = [scene, w, h](double) {
+    std::vector<Vec2d> out;
+    for (const Vec2d& p : scene->object_positions()) out.push_back({p.x / w, p.y / h});
+    return out;
+  };
+  gaze_ = with_flag("--gaze", [&] { return std::make_unique<gaze::GazeTracker>(gaze_spec, ctx); });
 }
 
-std::unique_ptr<Technique> Session::make(const std::string& technique,
-                                         const ParamArgs& params) const {
+Session::~Session() = default;
+
+std::unique_ptr<Technique> Session::make(const std::string& technique, const ParamArgs& params,
+                                         std::optional<AcuityModel> acuity) const {
+  const TechniqueInfo& info = technique_info(technique);
+  check_scene(info, scene_->info());
   TechniqueConfig c;
   c.display = display_;
-  c.acuity = options_.acuity;
+  c.acuity = acuity.value_or(options_.acuity);
   c.params = params_for(params, technique);
-  return make_technique(technique, c);
-}
-
-FrameInput Session::frame_input(int frame) const {
-  FrameInput f;
-  f.frame = frame;
-  f.delta_s = 1.0 / options_.fps;
-  f.time_s = options_.start_time + frame / options_.fps;
-  f.width = options_.size.width;
-  f.height = options_.size.height;
-  f.mouse_px = {options_.mouse_px.x, options_.size.height - options_.mouse_px.y};
-  f.mouse_down = options_.mouse_down;
-  return f;
-}
-
-FrameStats Session::render(Technique& technique, int frame, const GazeState& gaze, bool overlay) {
-  const FrameInput f = frame_input(frame);
-  scene_->update(f);
-  FrameStats s = technique.render(*scene_, f, gaze, fbo_.id());
-  if (overlay) {
-    if (!overlay_) overlay_ = std::make_unique<OverlayRenderer>();
-    overlay_->draw(technique.overlay(gaze), f.width, f.height, fbo_.id());
-  }
-  return s;
+  return with_flag("--param", [&] { return make_technique(technique, c); });
 }
 
 void Session::present() {
   if (!window_) return;
   const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
-  glBlitNamedFramebuffer(fbo_.id(), 0, 0, 0, options_.size.width, options_.size.height, 0, 0, w, h,
-                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  glBlitNamedFramebuffer(renderer_->output().framebuffer(), 0, 0, 0, options_.size.width,
+                         options_.size.height, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
   window_->swap_buffers();
 }
-
-Image Session::read_output() const { return gpu::read_texture(color_); }
 
 }  // namespace foveate::app

@@ -1,15 +1,22 @@
 #pragma once
-// What render, bench, demo and view share: a GL context, a scene, techniques
-// configured from one acuity model, a fixed frame clock and a gaze.
+// What render, bench, demo and view share: a GL context, a scene, the frame
+// runner (foveate::Renderer), the gaze tracker, techniques configured from one
+// acuity model, and the command-line options that set them up (one set,
+// registered by each command).
+#include <CLI/CLI.hpp>
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli_util.hpp"
+#include "foveate/core/error.hpp"
 #include "foveate/core/image.hpp"
+#include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
-#include "foveate/techniques/technique.hpp"
+#include "foveate/techniques/renderer.hpp"
 
 namespace foveate::app {
 
@@ -33,24 +40,60 @@ struct SessionOptions {
   AcuityModel acuity;
   double fps = 60.0;  ///< the fixed clock: frame k is at time start + k / fps
   double start_time = 0.0;
-  Vec2d mouse_px{0, 0};
+  Vec2d mouse_px{0, 0};  ///< Shadertoy's mouse, pixels, origin top-left
   bool mouse_down = false;
   /// Open a window (GLFW) instead of a headless context; the output is shown in it.
   bool window = false;
 };
 
+/// The options every rendering command has, as typed on the command line.
+struct SessionArgs {
+  std::string scene = "raymarch";
+  std::string size;
+  std::string display = "desktop-1080p";
+  std::string quality;
+  std::optional<double> slope;
+  std::vector<std::string> params;
+  std::string gaze;
+  std::string camera_path;
+  std::vector<std::string> channels;
+  double fps = 60.0;
+  double time = 0.0;
+};
+/// Registers --scene --size --display --quality --slope --param --gaze
+/// --camera-path --channel --fps --time on `sub`. `scene_required` makes
+/// --scene mandatory (render).
+void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false);
+/// Checks the values and names the flag of any bad one.
+SessionOptions to_session_options(const SessionArgs& args);
+
+/// Runs `fn`, prefixing any foveate::Error it throws with `flag` ("--gaze: ...").
+template <class Fn>
+auto with_flag(const std::string& flag, Fn&& fn) -> decltype(fn()) {
+  try {
+    return fn();
+  } catch (const Error& e) {
+    throw Error(flag + ": " + e.what());
+  }
+}
+
 class Session {
  public:
-  explicit Session(const SessionOptions& options);
+  /// Creates the context, loads the scene, the renderer and the gaze tracker
+  /// for `gaze` (a spec; empty = the screen centre). `mouse` gives the
+  /// window's mouse (normalized, top-left) for the `mouse` gaze source.
+  Session(const SessionOptions& options, const std::string& gaze,
+          std::function<std::optional<Vec2d>()> mouse = {});
+  ~Session();
   [[nodiscard]] Scene& scene() { return *scene_; }
   [[nodiscard]] const Display& display() const { return display_; }
   [[nodiscard]] const SessionOptions& options() const { return options_; }
-  std::unique_ptr<Technique> make(const std::string& technique, const ParamArgs& params) const;
-  [[nodiscard]] FrameInput frame_input(int frame) const;
-  /// Renders frame `frame` with `technique` into the output target; returns stats.
-  FrameStats render(Technique& technique, int frame, const GazeState& gaze, bool overlay = false);
-  [[nodiscard]] Image read_output() const;
-  [[nodiscard]] GLuint output_framebuffer() const { return fbo_.id(); }
+  [[nodiscard]] Renderer& renderer() { return *renderer_; }
+  [[nodiscard]] gaze::GazeTracker& gaze() { return *gaze_; }
+  /// A technique for this session's display (`acuity` overrides the session's),
+  /// refused with a clear error when it cannot render this scene.
+  std::unique_ptr<Technique> make(const std::string& technique, const ParamArgs& params,
+                                  std::optional<AcuityModel> acuity = std::nullopt) const;
   /// The window, when SessionOptions::window was set.
   [[nodiscard]] gpu::Window* window() const { return window_; }
   /// Copies the output to the window and swaps.
@@ -62,9 +105,8 @@ class Session {
   gpu::Window* window_ = nullptr;
   std::unique_ptr<Scene> scene_;
   Display display_;
-  gpu::Texture color_;
-  gpu::Framebuffer fbo_;
-  std::unique_ptr<OverlayRenderer> overlay_;
+  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<gaze::GazeTracker> gaze_;
 };
 
 }  // namespace foveate::app

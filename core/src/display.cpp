@@ -17,7 +17,7 @@ constexpr double kRad = std::numbers::pi / 180.0;
 constexpr int kMaxPixels = 65536;
 }  // namespace
 
-double Display::focal_px() const {
+double Display::eye_distance_px() const {
   if (head_mounted()) return 0.5 * width_px / std::tan(0.5 * fov_h_deg * kRad);
   return distance_mm * width_px / width_mm;
 }
@@ -30,12 +30,14 @@ double Display::aspect() const {
   return static_cast<double>(std::min(width_px, height_px)) / long_axis_px();
 }
 
-double Display::half_fov_deg() const { return std::atan(0.5 * long_axis_px() / focal_px()) * kDeg; }
+double Display::half_fov_deg() const {
+  return std::atan(0.5 * long_axis_px() / eye_distance_px()) * kDeg;
+}
 
-double Display::sharpness_deg() const { return std::atan(2.0 / focal_px()) * kDeg; }
+double Display::sharpness_deg() const { return std::atan(2.0 / eye_distance_px()) * kDeg; }
 
 double Display::eccentricity_deg(Vec2d pixel, Vec2d gaze) const {
-  const double f = focal_px();
+  const double f = eye_distance_px();
   const double cx = 0.5 * width_px, cy = 0.5 * height_px;
   const double ax = pixel.x - cx, ay = pixel.y - cy, az = f;
   const double bx = gaze.x - cx, by = gaze.y - cy, bz = f;
@@ -62,7 +64,7 @@ double Display::pixels_per_degree(Vec2d pixel, Vec2d gaze) const {
 }
 
 double Display::radius_px_at(double eccentricity) const {
-  return focal_px() * std::tan(std::min(eccentricity, 89.9) * kRad);
+  return eye_distance_px() * std::tan(std::min(eccentricity, 89.9) * kRad);
 }
 
 Display Display::resized(int width, int height) const {

@@ -24,9 +24,9 @@ void require(bool ok, const std::string& what) {
 void LatencyAwareFovea::validate() const {
   require(std::isfinite(latency_ms) && latency_ms >= 0.0 && latency_ms <= 1000.0,
           "latency_ms: expected 0..1000 ms, got " + std::to_string(latency_ms));
-  require(
-      std::isfinite(saccade_deg_per_s) && saccade_deg_per_s >= 0.0 && saccade_deg_per_s <= 1000.0,
-      "saccade_deg_per_s: expected 0..1000, got " + std::to_string(saccade_deg_per_s));
+  require(std::isfinite(max_saccade_deg_per_s) && max_saccade_deg_per_s >= 0.0 &&
+              max_saccade_deg_per_s <= 1000.0,
+          "max_saccade_deg_per_s: expected 0..1000, got " + std::to_string(max_saccade_deg_per_s));
   require(std::isfinite(fovea_deg) && fovea_deg > 0.0 && fovea_deg < 179.0,
           "fovea_deg: expected (0, 179), got " + std::to_string(fovea_deg));
   require(std::isfinite(blend_border_px) && blend_border_px >= 0.0,
@@ -37,12 +37,12 @@ void LatencyAwareFovea::validate() const {
 double LatencyAwareFovea::diameter_px(const Display& display) const {
   validate();
   // L_tot * S_max in degrees: ms * (deg/s) / 1000. The half-angle cannot reach 90 degrees.
-  const double half = std::min(latency_ms * saccade_deg_per_s / 1000.0 + 0.5 * fovea_deg, 89.0);
-  return 2.0 * display.focal_px() * std::tan(half * kRad) + 2.0 * blend_border_px + error_px;
+  const double half = std::min(latency_ms * max_saccade_deg_per_s / 1000.0 + 0.5 * fovea_deg, 89.0);
+  return 2.0 * display.eye_distance_px() * std::tan(half * kRad) + 2.0 * blend_border_px + error_px;
 }
 
 double LatencyAwareFovea::diameter_deg(const Display& display) const {
-  return 2.0 * std::atan(0.5 * diameter_px(display) / display.focal_px()) * kDeg;
+  return 2.0 * std::atan(0.5 * diameter_px(display) / display.eye_distance_px()) * kDeg;
 }
 
 // ---------------------------------------------------------------- Meng et al.

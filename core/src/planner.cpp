@@ -61,7 +61,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   }
 
   Geometry g;
-  g.focal = display.focal_px();
+  g.focal = display.eye_distance_px();
   g.long_axis = display.long_axis_px();
   g.aspect = display.aspect();
   g.sharp = display.sharpness_deg();
@@ -167,7 +167,7 @@ void to_json(nlohmann::json& j, const LayerPlan& p) {
   nlohmann::json disp = p.display;
   disp["half_fov_deg"] = p.display.half_fov_deg();
   disp["sharpness_deg"] = p.display.sharpness_deg();
-  disp["focal_px"] = p.display.focal_px();
+  disp["eye_distance_px"] = p.display.eye_distance_px();
   nlohmann::json layers = nlohmann::json::array();
   for (const Layer& L : p.layers) {
     layers.push_back({{"radius_deg", L.radius_deg},

@@ -28,8 +28,8 @@ GazeFilter::GazeFilter(FilterOptions options, Display display)
     bad("fallback_fovea_scale must be in 1..10");
   }
   if (!(o.deadband_deg >= 0 && o.deadband_deg <= 10)) bad("deadband_deg must be in 0..10");
-  if (!(o.saccade_deg_per_s > 0 && std::isfinite(o.saccade_deg_per_s))) {
-    bad("saccade_deg_per_s must be > 0");
+  if (!(o.saccade_threshold_deg_per_s > 0 && std::isfinite(o.saccade_threshold_deg_per_s))) {
+    bad("saccade_threshold_deg_per_s must be > 0");
   }
   if (!(std::isfinite(o.fallback_pos.x) && std::isfinite(o.fallback_pos.y))) {
     bad("fallback_pos must be finite");
@@ -67,7 +67,7 @@ FilteredGaze GazeFilter::update(const GazeSample& s, double now_s) {
         }
       }
       const bool was_saccade = in_saccade_;
-      in_saccade_ = !after_gap && velocity > o.saccade_deg_per_s;
+      in_saccade_ = !after_gap && velocity > o.saccade_threshold_deg_per_s;
       if (in_saccade_ && !was_saccade) {
         ++counters_.saccades;
         sac_start_ = last_valid_.pos;
@@ -93,7 +93,7 @@ FilteredGaze GazeFilter::update(const GazeSample& s, double now_s) {
                  angle_between_deg(display_, out_, s.pos) >= o.deadband_deg) {
         // After a saccade the eye decelerates below the threshold before it
         // lands: follow it without the deadband until it has settled.
-        settling_ = (was_saccade || settling_) && velocity > 0.25 * o.saccade_deg_per_s;
+        settling_ = (was_saccade || settling_) && velocity > 0.25 * o.saccade_threshold_deg_per_s;
         out_ = s.pos;
       } else {
         ++counters_.deadband_suppressed;

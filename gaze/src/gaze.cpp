@@ -142,7 +142,7 @@ class MouseSource final : public GazeSource {
 };
 
 Vec2d parse_fixed(const std::string& text, const Display& d) {
-  const Vec2d px = parse_point(text, d.width_px, d.height_px, "--gaze fixed");
+  const Vec2d px = parse_point(text, d.width_px, d.height_px, "fixed gaze point");
   return {px.x / d.width_px, px.y / d.height_px};
 }
 
@@ -159,17 +159,19 @@ std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const Gaze
   const std::string kind = spec.substr(0, colon);
   const bool has_arg = colon != std::string::npos;
   const std::string arg = has_arg ? spec.substr(colon + 1) : std::string();
-  if (spec.empty()) throw Error("--gaze: empty spec; expected " + std::string(gaze_spec_help()));
+  if (spec.empty())
+    throw Error("gaze source: empty spec; expected " + std::string(gaze_spec_help()));
 
   if (kind == "fixed") {
-    if (!has_arg) throw Error("--gaze fixed: give the point, e.g. fixed:960,540 or fixed:0.5,0.5");
+    if (!has_arg)
+      throw Error("gaze source fixed: give the point, e.g. fixed:960,540 or fixed:0.5,0.5");
     return std::make_unique<FixedSource>(parse_fixed(arg, ctx.display));
   }
   if (!has_arg && spec.find(',') != std::string::npos) {
     return std::make_unique<FixedSource>(parse_fixed(spec, ctx.display));
   }
   if (kind == "trace") {
-    if (arg.empty()) throw Error("--gaze trace: give the file, e.g. trace:gaze.csv");
+    if (arg.empty()) throw Error("gaze source trace: give the file, e.g. trace:gaze.csv");
     TraceOptions o;
     o.width_px = ctx.display.width_px;
     o.height_px = ctx.display.height_px;
@@ -181,7 +183,8 @@ std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const Gaze
       char* end = nullptr;
       const unsigned long long seed = std::strtoull(arg.c_str(), &end, 10);
       if (arg.empty() || arg[0] == '-' || end != arg.c_str() + arg.size()) {
-        throw Error("--gaze synthetic: the seed must be a non-negative integer, got '" + arg + "'");
+        throw Error("gaze source synthetic: the seed must be a non-negative integer, got '" + arg +
+                    "'");
       }
       o.seed = seed;
     }
@@ -191,16 +194,16 @@ std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const Gaze
     return std::make_unique<PupilSource>(parse_pupil_address(arg));
   }
   if (kind == "mouse") {
-    if (has_arg) throw Error("--gaze mouse takes no argument");
-    if (!ctx.mouse) throw Error("--gaze mouse needs a window (foveate view)");
+    if (has_arg) throw Error("gaze source mouse takes no argument");
+    if (!ctx.mouse) throw Error("gaze source mouse needs a window (foveate view)");
     return std::make_unique<MouseSource>(ctx.mouse);
   }
   if (kind == "nearest") {
-    if (has_arg) throw Error("--gaze nearest takes no argument");
-    if (!ctx.objects) throw Error("--gaze nearest needs a scene that knows its objects");
+    if (has_arg) throw Error("gaze source nearest takes no argument");
+    if (!ctx.objects) throw Error("gaze source nearest needs a scene that knows its objects");
     return std::make_unique<NearestObjectViewer>(ctx.display, ctx.objects);
   }
-  throw Error("--gaze: unknown source '" + kind + "'; expected " + gaze_spec_help());
+  throw Error("gaze source: unknown source '" + kind + "'; expected " + gaze_spec_help());
 }
 
 }  // namespace foveate::gaze

@@ -97,15 +97,16 @@ PupilOptions parse_pupil_address(const std::string& address) {
     port = address.substr(c + 1);
   }
   if (host.empty() || host.find_first_of(" /") != std::string::npos) {
-    throw Error("--gaze pupil: expected pupil:HOST:PORT (e.g. pupil:127.0.0.1:50020), got 'pupil:" +
-                address + "'");
+    throw Error(
+        "gaze source pupil: expected pupil:HOST:PORT (e.g. pupil:127.0.0.1:50020), got 'pupil:" +
+        address + "'");
   }
   o.host = host;
   if (c != std::string::npos) {
     char* end = nullptr;
     const long p = std::strtol(port.c_str(), &end, 10);
     if (port.empty() || *end != '\0' || p < 1 || p > 65535) {
-      throw Error("--gaze pupil: the port must be 1..65535, got '" + port + "'");
+      throw Error("gaze source pupil: the port must be 1..65535, got '" + port + "'");
     }
     o.port = static_cast<int>(p);
   }

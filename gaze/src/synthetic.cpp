@@ -163,7 +163,7 @@ struct SyntheticViewer::Impl {
           o.screen_margin < 0.5)) {
       throw Error("synthetic viewer: inconsistent options");
     }
-    px_per_deg = display.focal_px() * std::tan(std::numbers::pi / 180.0);
+    px_per_deg = display.eye_distance_px() * std::tan(std::numbers::pi / 180.0);
   }
 
   double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }

@@ -32,7 +32,6 @@ void Context::debug_callback(unsigned source, unsigned type, unsigned, unsigned 
 }
 
 void Context::install_debug_callback(const ContextOptions& options) {
-  throw_on_error_ = options.throw_on_error;
   if (!options.debug) return;
   GLint flags = 0;
   glGetIntegerv(GL_CONTEXT_FLAGS, &flags);

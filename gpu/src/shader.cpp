@@ -9,11 +9,27 @@
 
 namespace foveate::gpu {
 
-GLint Program::uniform(const char* name) const {
+GLint Program::uniform_if_present(const char* name) const {
   auto it = locations_.find(std::string_view(name));
   if (it != locations_.end()) return it->second;
   const GLint loc = glGetUniformLocation(id(), name);
   locations_.emplace(name, loc);
+  return loc;
+}
+
+void Program::allow_missing(std::initializer_list<const char*> names) const {
+  for (const char* n : names) (void)uniform_if_present(n);
+}
+
+GLint Program::uniform(const char* name) const {
+  const bool known = locations_.find(std::string_view(name)) != locations_.end();
+  const GLint loc = uniform_if_present(name);
+  if (loc < 0 && !known) {
+    // Only reaches anyone where KHR_debug output is on (debug contexts).
+    const std::string msg = "program '" + label_ + "' has no active uniform '" + name + "'";
+    glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_ERROR, 1,
+                         GL_DEBUG_SEVERITY_HIGH, -1, msg.c_str());
+  }
   return loc;
 }
 
@@ -133,7 +149,7 @@ Program ShaderCompiler::build(const std::vector<StageSource>& stages,
                               const std::string& what) const {
   std::vector<Handle<detail::delete_shader>> shaders;
   GLuint program = glCreateProgram();
-  Program p(program);
+  Program p(program, what);
   for (const StageSource& st : stages) {
     std::vector<std::string> names;
     Assembler a(*this, names);

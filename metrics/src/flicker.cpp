@@ -29,7 +29,7 @@ void FlickerTracker::add(const Image& ref, const Image& test, Vec2d gaze_px) {
   if (prev_ref_.width == r.width && prev_ref_.height == r.height) {
     // Compare cosines instead of angles: e > min  <=>  cos e < cos min, with
     // cos e = a.b / (|a| |b|) for the rays a (pixel) and b (gaze) of Display.
-    const double f = display_.focal_px();
+    const double f = display_.eye_distance_px();
     const double cx = 0.5 * r.width, cy = 0.5 * r.height;
     const double bx = gaze_px.x - cx, by = gaze_px.y - cy;
     const double bn = std::sqrt(bx * bx + by * by + f * f);

@@ -4,9 +4,10 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wshadow"
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
 #pragma GCC diagnostic pop
 
 #include <stb/stb_image.h>
@@ -33,7 +34,9 @@ Image decode_embedded(const aiTexture* t, const std::string& where) {
     int w = 0, h = 0, n = 0;
     unsigned char* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(t->pcData),
                                               static_cast<int>(t->mWidth), &w, &h, &n, 4);
-    if (!px) throw Error(where + ": an embedded texture cannot be decoded (" + stbi_failure_reason() + ")");
+    if (!px)
+      throw Error(where + ": an embedded texture cannot be decoded (" + stbi_failure_reason() +
+                  ")");
     Image img(w, h);
     std::memcpy(img.rgba.data(), px, img.rgba.size());
     stbi_image_free(px);
@@ -57,10 +60,12 @@ class AssimpScene final : public MeshSceneBase {
     if (fs::is_directory(path, ec)) throw Error(path + ": is a directory, not a model file");
     if (fs::file_size(path, ec) == 0) throw Error(path + ": the model file is empty");
     Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const aiScene* s = importer.ReadFile(
         path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                  aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+                  aiProcess_PreTransformVertices | aiProcess_SortByPType |
+                  aiProcess_ValidateDataStructure);
     if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
       const std::string why = importer.GetErrorString();
       if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos) {
@@ -77,10 +82,14 @@ class AssimpScene final : public MeshSceneBase {
       for (unsigned v = 0; v < am->mNumVertices; ++v) {
         Vertex& x = d.vertices[v];
         x.px = am->mVertices[v].x, x.py = am->mVertices[v].y, x.pz = am->mVertices[v].z;
-        if (am->mNormals) x.nx = am->mNormals[v].x, x.ny = am->mNormals[v].y, x.nz = am->mNormals[v].z;
-        else x.nx = 0, x.ny = 1, x.nz = 0;
-        if (am->mTextureCoords[0]) x.u = am->mTextureCoords[0][v].x, x.v = am->mTextureCoords[0][v].y;
-        else x.u = x.v = 0;
+        if (am->mNormals)
+          x.nx = am->mNormals[v].x, x.ny = am->mNormals[v].y, x.nz = am->mNormals[v].z;
+        else
+          x.nx = 0, x.ny = 1, x.nz = 0;
+        if (am->mTextureCoords[0])
+          x.u = am->mTextureCoords[0][v].x, x.v = am->mTextureCoords[0][v].y;
+        else
+          x.u = x.v = 0;
         lo = glm::min(lo, glm::vec3(x.px, x.py, x.pz));
         hi = glm::max(hi, glm::vec3(x.px, x.py, x.pz));
       }
@@ -104,15 +113,21 @@ class AssimpScene final : public MeshSceneBase {
                   : CameraPath::load(o.camera_path);
     for (int i = 0; i < 6; ++i) {
       const float a = static_cast<float>(i) * 1.0472f;
-      lights_[i] = glm::vec4(centre + scene_radius_ * glm::vec3(1.6f * std::cos(a), 0.8f + 0.4f * static_cast<float>(i % 2), 1.6f * std::sin(a)),
-                             scene_radius_ * 2.0f);
-      light_colors_[i] = 0.35f * glm::vec3(i % 3 == 0 ? 1.0f : 0.5f, i % 3 == 1 ? 1.0f : 0.5f, i % 3 == 2 ? 1.0f : 0.5f);
+      lights_[i] =
+          glm::vec4(centre + scene_radius_ * glm::vec3(1.6f * std::cos(a),
+                                                       0.8f + 0.4f * static_cast<float>(i % 2),
+                                                       1.6f * std::sin(a)),
+                    scene_radius_ * 2.0f);
+      light_colors_[i] = 0.35f * glm::vec3(i % 3 == 0 ? 1.0f : 0.5f, i % 3 == 1 ? 1.0f : 0.5f,
+                                           i % 3 == 2 ? 1.0f : 0.5f);
     }
     centre_ = centre;
   }
 
   std::string shade_key() const override { return "builtin:mesh"; }
-  std::vector<gpu::StageSource::Piece> shade_source() const override { return {{"mesh_shade.glsl", {}}}; }
+  std::vector<gpu::StageSource::Piece> shade_source() const override {
+    return {{"mesh_shade.glsl", {}}};
+  }
 
  protected:
   std::vector<DrawItem> items(const View&, int lod) override {
@@ -124,7 +139,8 @@ class AssimpScene final : public MeshSceneBase {
   }
   void bind_extra(const gpu::Program& p) override {
     glProgramUniform4fv(p.id(), p.uniform("u_lights[0]"), 6, glm::value_ptr(lights_[0]));
-    glProgramUniform3fv(p.id(), p.uniform("u_light_colors[0]"), 6, glm::value_ptr(light_colors_[0]));
+    glProgramUniform3fv(p.id(), p.uniform("u_light_colors[0]"), 6,
+                        glm::value_ptr(light_colors_[0]));
   }
   std::vector<glm::vec3> object_centres() const override {
     std::vector<glm::vec3> out;

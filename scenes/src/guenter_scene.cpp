@@ -15,8 +15,8 @@ namespace foveate::detail {
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
-constexpr int kGrid = 20;           // objects per side
-constexpr float kSpacing = 4.5f;    // world units between objects
+constexpr int kGrid = 20;         // objects per side
+constexpr float kSpacing = 4.5f;  // world units between objects
 constexpr float kTerrainHalf = 70.0f;
 // Continuous LOD (section 6): tessellation goes from MaxTriCount to
 // MinTriCount as the squared distance goes from MinDistSq to MaxDistSq. The
@@ -32,7 +32,8 @@ constexpr int kLevels[] = {32, 24, 20, 16, 12, 10, 8, 6, 4};
 constexpr int kDiscrete[3] = {0, 5, 8};  // indices into kLevels
 
 float terrain_height(float x, float z) {
-  return 2.2f * std::sin(0.045f * x) * std::cos(0.06f * z) + 1.2f * std::sin(0.11f * x + 0.7f) * std::sin(0.09f * z) +
+  return 2.2f * std::sin(0.045f * x) * std::cos(0.06f * z) +
+         1.2f * std::sin(0.11f * x + 0.7f) * std::sin(0.09f * z) +
          0.35f * std::sin(0.31f * x + 0.2f * z);
 }
 
@@ -54,7 +55,8 @@ glm::vec3 surface(int shape, float u, float v, glm::vec3& n) {
     case 2: {  // superquadric: a rounded cube
       auto sp = [](float x, float e) { return std::copysign(std::pow(std::abs(x), e), x); };
       const float e = 0.35f;
-      const glm::vec3 p(sp(std::sin(ph), e) * sp(std::cos(th), e), sp(std::cos(ph), e), sp(std::sin(ph), e) * sp(std::sin(th), e));
+      const glm::vec3 p(sp(std::sin(ph), e) * sp(std::cos(th), e), sp(std::cos(ph), e),
+                        sp(std::sin(ph), e) * sp(std::sin(th), e));
       n = glm::vec3(sp(std::sin(ph), 2 - e) * sp(std::cos(th), 2 - e), sp(std::cos(ph), 2 - e),
                     sp(std::sin(ph), 2 - e) * sp(std::sin(th), 2 - e));
       return 0.85f * p;
@@ -82,7 +84,8 @@ MeshData tessellate(int shape, int seg) {
   }
   for (int j = 0; j < seg; ++j) {
     for (int i = 0; i < seg; ++i) {
-      const unsigned a = unsigned(j * (seg + 1) + i), b = a + 1, c = a + unsigned(seg + 1), d = c + 1;
+      const unsigned a = unsigned(j * (seg + 1) + i), b = a + 1, c = a + unsigned(seg + 1),
+                     d = c + 1;
       m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
     }
   }
@@ -104,7 +107,8 @@ MeshData terrain(int cells) {
   }
   for (int j = 0; j < cells; ++j) {
     for (int i = 0; i < cells; ++i) {
-      const unsigned a = unsigned(j * (cells + 1) + i), b = a + 1, c = a + unsigned(cells + 1), d = c + 1;
+      const unsigned a = unsigned(j * (cells + 1) + i), b = a + 1, c = a + unsigned(cells + 1),
+                     d = c + 1;
       m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
     }
   }
@@ -126,10 +130,11 @@ CameraPath fly_through() {
 class GuenterScene final : public MeshSceneBase {
  public:
   GuenterScene(const SceneOptions& o)
-      : MeshSceneBase("guenter",
-                      "the test scene of Guenter et al.: 20k-triangle terrain, 20x20 parametric objects, "
-                      "procedural materials, environment map, continuous LOD",
-                      o.camera_path.empty() ? fly_through() : CameraPath::load(o.camera_path)) {
+      : MeshSceneBase(
+            "guenter",
+            "the test scene of Guenter et al.: 20k-triangle terrain, 20x20 parametric objects, "
+            "procedural materials, environment map, continuous LOD",
+            o.camera_path.empty() ? fly_through() : CameraPath::load(o.camera_path)) {
     terrain_ = upload_levels({terrain(99), terrain(31), terrain(9)});
     for (int shape = 0; shape < 4; ++shape) {
       std::vector<MeshData> levels;
@@ -145,7 +150,8 @@ class GuenterScene final : public MeshSceneBase {
         obj.shape = (i + 3 * j) % 4;
         obj.material = 2.0f + float((i * 7 + j * 3) % 7);
         obj.gloss = std::fmod(0.15f * float(i + j), 1.0f);
-        obj.colour = glm::vec3(0.5f + 0.5f * std::sin(0.7f * float(i)), 0.5f + 0.5f * std::sin(0.9f * float(j) + 1.0f),
+        obj.colour = glm::vec3(0.5f + 0.5f * std::sin(0.7f * float(i)),
+                               0.5f + 0.5f * std::sin(0.9f * float(j) + 1.0f),
                                0.5f + 0.5f * std::sin(0.5f * float(i + j) + 2.0f));
         obj.spin = 0.3f + 0.05f * float((i * j) % 7);
         objects_.push_back(obj);
@@ -156,7 +162,9 @@ class GuenterScene final : public MeshSceneBase {
   }
 
   std::string shade_key() const override { return "builtin:guenter"; }
-  std::vector<gpu::StageSource::Piece> shade_source() const override { return {{"guenter_shade.glsl", {}}}; }
+  std::vector<gpu::StageSource::Piece> shade_source() const override {
+    return {{"guenter_shade.glsl", {}}};
+  }
 
  protected:
   std::vector<DrawItem> items(const View& view, int lod) override {
@@ -182,7 +190,9 @@ class GuenterScene final : public MeshSceneBase {
       const float tris = kMaxTriCount + (kMinTriCount - kMaxTriCount) * f;
       // The finest level that does not exceed the triangle budget.
       int level = 0;
-      while (level + 1 < int(std::size(kLevels)) && 2.0f * float(kLevels[level] * kLevels[level]) > tris) ++level;
+      while (level + 1 < int(std::size(kLevels)) &&
+             2.0f * float(kLevels[level] * kLevels[level]) > tris)
+        ++level;
       if (lod > 0) level = std::max(level, kDiscrete[std::min(lod, 2)]);
       Material mat;
       mat.base_color = o.colour;

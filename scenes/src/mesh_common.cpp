@@ -137,7 +137,7 @@ void MeshSceneBase::update(const FrameInput& frame) {
   pose_ = camera_.at(frame.time_s);
 }
 
-double MeshSceneBase::focal_px() const {
+double MeshSceneBase::camera_focal_px() const {
   return 0.5 * frame_.height / std::tan(0.5 * pose_.fov_deg * std::numbers::pi / 180.0);
 }
 
@@ -162,23 +162,31 @@ bool MeshSceneBase::visible(const glm::mat4& m, glm::vec3 c, float r) const {
 
 void MeshSceneBase::prepass_begin(const View& view) {
   last_view_ = view;
+  outer_ = gpu::FramebufferBinding::current();
   view_proj_ = view_projection(view);
   gbuffer_.ensure(view.target_width, view.target_height, std::max(1, view.samples));
   gbuffer_.fbo.bind();
   glViewport(0, 0, view.target_width, view.target_height);
+  gpu::open_write_masks();  // clears honour them
   const float zero[4] = {0, 0, 0, 0};
   for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gbuffer_.fbo.id(), GL_COLOR, i, zero);
   glClearNamedFramebufferfi(gbuffer_.fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);  // no face culling: files disagree on winding
 }
 
 void MeshSceneBase::prepass_draw(const View& view, int lod) {
   const gpu::Program& p = prepass_program_;
   p.use();
+  // Depth test and writes, colour on; the stencil test is the caller's
+  // (lodmask draws under stencil masks). No face culling: files disagree on
+  // winding.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_BLEND);
   p.set_mat4("u_view_proj", glm::value_ptr(view_proj_));
   p.set("u_albedo_tex", 0);
-  const double focal = focal_px();
+  const double focal = camera_focal_px();
   const glm::vec3 eye(pose_.position);
   for (DrawItem& item : items(view, lod)) {
     const GpuMesh& m = *item.mesh;
@@ -219,18 +227,24 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
 
 void MeshSceneBase::prepass_end() {
   glDisable(GL_DEPTH_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  outer_.restore();
 }
 
-void MeshSceneBase::bind(const gpu::Program& p, const View& view) {
-  (void)view;
-  gbuffer_.albedo.bind(0);
-  gbuffer_.normal.bind(1);
-  gbuffer_.position.bind(2);
-  p.set("u_g_albedo", 0);
-  p.set("u_g_normal", 1);
-  p.set("u_g_position", 2);
-  const View& v = last_view_;
+void MeshSceneBase::bind(const gpu::Program& p, const View& v, gpu::Samplers& samplers) {
+  if (v.x0 != last_view_.x0 || v.y0 != last_view_.y0 || v.x1 != last_view_.x1 ||
+      v.y1 != last_view_.y1 || v.target_width != last_view_.target_width ||
+      v.target_height != last_view_.target_height) {
+    throw Error("scene '" + name_ +
+                "': shading bound for a view other than the last prepass's (a technique must run "
+                "the prepass for the view it shades)");
+  }
+  // Each program uses the part of the scene's shading it calls (temporal
+  // reprojection only the world position): the rest may be optimised away.
+  p.allow_missing({"u_g_albedo", "u_g_normal", "u_g_position", "u_g_rect", "u_screen",
+                   "u_inv_view_proj", "u_cam_pos", "u_time"});
+  samplers.bind(p, "u_g_albedo", gbuffer_.albedo);
+  samplers.bind(p, "u_g_normal", gbuffer_.normal);
+  samplers.bind(p, "u_g_position", gbuffer_.position);
   p.set("u_g_rect", float(v.x0), float(v.y0), float(v.x1 - v.x0), float(v.y1 - v.y0));
   p.set("u_screen", float(frame_.width), float(frame_.height));
   const glm::mat4 full = view_projection(View::full(frame_.width, frame_.height));

@@ -90,7 +90,7 @@ class MeshSceneBase : public Scene {
   void prepass_begin(const View& view) override;
   void prepass_draw(const View& view, int lod) override;
   void prepass_end() override;
-  void bind(const gpu::Program& program, const View& view) override;
+  void bind(const gpu::Program& program, const View& view, gpu::Samplers& samplers) override;
   [[nodiscard]] std::vector<Vec2d> object_positions() const override;
   [[nodiscard]] std::optional<std::array<float, 16>> view_projection() const override;
 
@@ -103,7 +103,7 @@ class MeshSceneBase : public Scene {
   [[nodiscard]] virtual std::vector<glm::vec3> object_centres() const { return {}; }
 
   /// Focal length of the full frame in pixels (for screen-space LOD).
-  [[nodiscard]] double focal_px() const;
+  [[nodiscard]] double camera_focal_px() const;
   /// Whether a sphere is inside the view's sub-frustum.
   [[nodiscard]] bool visible(const glm::mat4& view_proj, glm::vec3 centre, float radius) const;
 
@@ -121,6 +121,7 @@ class MeshSceneBase : public Scene {
   GBuffer gbuffer_;
   gpu::Program prepass_program_;
   View last_view_;
+  gpu::FramebufferBinding outer_;  ///< what prepass_begin found
 };
 
 /// Linear-ish colour of an image texture upload (mipmapped, repeat).

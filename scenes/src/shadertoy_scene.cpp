@@ -86,7 +86,13 @@ class ShadertoyScene final : public Scene {
 
   void update(const FrameInput& f) override { frame_ = f; }
 
-  void bind(const gpu::Program& p, const View&) override {
+  void bind(const gpu::Program& p, const View&, gpu::Samplers& samplers) override {
+    // A shader uses the inputs it needs; the rest are optimised away.
+    p.allow_missing({"iResolution", "iTime", "iTimeDelta", "iFrameRate", "iFrame", "iMouse",
+                     "iDate", "iSampleRate", "iChannel0", "iChannel1", "iChannel2", "iChannel3",
+                     "iChannelResolution[0]", "iChannelResolution[1]", "iChannelResolution[2]",
+                     "iChannelResolution[3]", "foveate_cam_pos", "foveate_cam_target",
+                     "foveate_cam_fov"});
     const FrameInput& f = frame_;
     p.set("iResolution", float(f.width), float(f.height), 1.0f);
     p.set("iTime", float(f.time_s));
@@ -94,17 +100,14 @@ class ShadertoyScene final : public Scene {
     p.set("iFrameRate", float(f.delta_s > 0 ? 1.0 / f.delta_s : 60.0));
     p.set("iFrame", f.frame);
     // Shadertoy: xy = position while the button is down, zw = click position
-    // (negative once released).
-    const float mx = float(f.mouse_px.x), my = float(f.mouse_px.y);
+    // (negative once released); pixels with the origin bottom-left.
+    const float mx = float(f.mouse_px.x), my = float(f.height - f.mouse_px.y);
     p.set("iMouse", mx, my, f.mouse_down ? mx : -mx, -my);
     // A fixed date keeps runs deterministic: 2026-01-01, seconds = the clock.
     p.set("iDate", 2026.0f, 0.0f, 1.0f, float(f.time_s));
     p.set("iSampleRate", 44100.0f);
     const char* names[] = {"iChannel0", "iChannel1", "iChannel2", "iChannel3"};
-    for (int i = 0; i < 4; ++i) {
-      channels_[i].bind(static_cast<GLuint>(i));
-      p.set(names[i], i);
-    }
+    for (int i = 0; i < 4; ++i) samplers.bind(p, names[i], channels_[i]);
     glProgramUniform3f(p.id(), p.uniform("iChannelResolution[0]"), channel_size_[0][0],
                        channel_size_[0][1], 1.0f);
     glProgramUniform3f(p.id(), p.uniform("iChannelResolution[1]"), channel_size_[1][0],
@@ -218,9 +221,10 @@ namespace foveate {
 std::vector<SceneListing> builtin_scenes() {
   std::vector<SceneListing> out;
   for (const auto& b : detail::kBuiltins) out.push_back({b.name, b.description});
-  out.push_back({"guenter",
-                 "the test scene of Guenter et al.: terrain, 20x20 parametric objects, procedural materials, "
-                 "environment map, continuous LOD (meshes: every technique incl. lodmask)"});
+  out.push_back(
+      {"guenter",
+       "the test scene of Guenter et al.: terrain, 20x20 parametric objects, procedural materials, "
+       "environment map, continuous LOD (meshes: every technique incl. lodmask)"});
   return out;
 }
 

@@ -1,46 +1,10 @@
 #include "kit.hpp"
 
-#include <cmath>
+#include <algorithm>
 
-#include "foveate/core/error.hpp"
 #include "foveate_embedded/techniques_shaders.hpp"
 
 namespace foveate::tech {
-
-Params::Params(const std::string& technique, const TechniqueConfig& config)
-    : info_(technique_info(technique)), overrides_(config.params) {}
-
-double Params::get(const std::string& key, double fallback) {
-  const ParamSpec* spec = nullptr;
-  for (const ParamSpec& s : info_.params) {
-    if (s.key == key) spec = &s;
-  }
-  if (!spec)
-    throw Error("technique " + info_.name + ": internal: parameter '" + key + "' has no spec");
-  double v = fallback;
-  auto it = overrides_.find(key);
-  if (it != overrides_.end()) {
-    v = it->second;
-    overrides_.erase(it);
-    if (!std::isfinite(v) || v < spec->min || v > spec->max) {
-      throw Error("--param " + key + "=" + std::to_string(v) + ": out of range for " + info_.name +
-                  " [" + std::to_string(spec->min) + ", " + std::to_string(spec->max) + "]");
-    }
-    if (spec->integer && v != std::floor(v)) {
-      throw Error("--param " + key + ": must be a whole number for " + info_.name);
-    }
-  }
-  values_.emplace_back(key, v);
-  return v;
-}
-
-void Params::finish() const {
-  if (overrides_.empty()) return;
-  std::string known;
-  for (const ParamSpec& s : info_.params) known += (known.empty() ? "" : ", ") + s.key;
-  throw Error("--param " + overrides_.begin()->first + ": " + info_.name +
-              " has no such parameter (it has: " + (known.empty() ? "none" : known) + ")");
-}
 
 Kit::Kit()
     : compiler_({embedded::techniques_shaders(), scene_shader_files()}),
@@ -84,50 +48,51 @@ const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::strin
   const gpu::ShaderCompiler c(tables);
   gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
                             gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
-                           "scene '" + scene.info().name + "'");
+                           "scene '" + scene.info().name + "' with " + main);
   return programs_.emplace(key, std::move(p)).first->second;
 }
 
-void Kit::draw_fullscreen(const gpu::Program& program) const {
+void Kit::draw_triangle(const gpu::Program& program) const {
   program.use();
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
+               const gpu::PassState& state, const SetUniforms& set) {
+  gpu::Samplers samplers;
+  if (set) set(program, samplers);
+  target.bind();
+  gpu::apply(state);
+  draw_triangle(program);
+}
+
+void Kit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state) {
+  gpu::apply(state);
+  draw_triangle(program);
+}
+
+void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program,
+                     const gpu::RenderTarget& target, const gpu::PassState& state,
+                     const SetUniforms& set) {
+  gpu::Samplers samplers;
+  scene.bind(program, view, samplers);
+  if (set) set(program, samplers);
+  target.bind();
+  gpu::apply(state);
+  draw_triangle(program);
+}
+
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
-                  const std::function<void(const gpu::Program&)>& set_uniforms, bool early) {
+                  const gpu::RenderTarget& target, const SetUniforms& set,
+                  const gpu::PassState& state, bool early) {
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
-  scene.bind(p, view);
-  if (set_uniforms) set_uniforms(p);
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-  draw_fullscreen(p);
+  scene_pass(scene, view, p, target, state, set);
   glEndQuery(GL_SAMPLES_PASSED);
   GLuint64 samples = 0;
   glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &samples);
   return static_cast<double>(samples);
-}
-
-void Target::ensure(int w, int h, GLenum format, bool with_stencil) {
-  if (color && width == w && height == h && color.format() == format &&
-      static_cast<bool>(depth_stencil) == with_stencil) {
-    return;
-  }
-  width = w;
-  height = h;
-  color = gpu::Texture::create_2d(format, w, h);
-  fbo = gpu::Framebuffer::create();
-  fbo.attach(GL_COLOR_ATTACHMENT0, color);
-  depth_stencil.reset();
-  if (with_stencil) {
-    depth_stencil = gpu::Renderbuffer::create(GL_DEPTH24_STENCIL8, w, h);
-    fbo.attach(GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil);
-  }
-  fbo.check("technique target");
-}
-
-void Target::bind_viewport() const {
-  fbo.bind();
-  glViewport(0, 0, width, height);
 }
 
 void set_rect_mapping(const gpu::Program& p, const View& v) {
@@ -144,7 +109,11 @@ FrameStats one_pass_stats(const char* name, double shaded, int width, int height
 }
 
 double latency_margin_deg(const GazeState& g) {
-  return std::max(0.0, g.latency_ms) * std::max(0.0, g.saccade_deg_per_s) / 1000.0;
+  return std::max(0.0, g.latency_ms) * std::max(0.0, g.max_saccade_deg_per_s) / 1000.0;
+}
+
+OverlayShape gaze_dot(const GazeState& g) {
+  return {OverlayShape::Kind::Dot, g.gaze_px.x, g.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f};
 }
 
 }  // namespace foveate::tech

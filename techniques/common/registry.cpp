@@ -1,18 +1,109 @@
-// The one registry of techniques, and the overlay pass they share.
+// The one registry of techniques, parameter resolution from the declarations,
+// and the overlay pass they share.
 #include "registry.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <mutex>
 
 #include "foveate/core/error.hpp"
 #include "kit.hpp"
 
 namespace foveate {
 
-const std::vector<TechniqueInfo>& techniques() {
-  static const std::vector<TechniqueInfo> all = {tech::native_info(),   tech::layered_info(),
-                                                 tech::logpolar_info(), tech::checkerboard_info(),
-                                                 tech::lodmask_info(),  tech::inset_info()};
-  return all;
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+const char* type_name(ParamType t) {
+  switch (t) {
+    case ParamType::Integer:
+      return "a whole number";
+    case ParamType::Boolean:
+      return "0 or 1";
+    default:
+      return "a number";
+  }
+}
+
+void validate_declaration(const TechniqueInfo& info) {
+  if (info.name.empty()) throw Error("register_technique: the technique has no name");
+  if (!info.make) throw Error("technique " + info.name + ": no make function");
+  for (size_t i = 0; i < info.params.size(); ++i) {
+    const ParamDecl& p = info.params[i];
+    const std::string where = "technique " + info.name + ", parameter '" + p.key + "'";
+    if (p.key.empty() || p.key.find_first_of(".= ") != std::string::npos)
+      throw Error("technique " + info.name + ": parameter key '" + p.key +
+                  "' must be non-empty without '.', '=' or spaces");
+    for (size_t j = 0; j < i; ++j)
+      if (info.params[j].key == p.key) throw Error(where + ": declared twice");
+    if (!(p.min <= p.max)) throw Error(where + ": min > max");
+    if (p.type == ParamType::Boolean && (p.min != 0.0 || p.max != 1.0))
+      throw Error(where + ": a boolean's range is [0, 1]");
+    if (!p.derive && !(p.value >= p.min && p.value <= p.max))
+      throw Error(where + ": default " + number(p.value) + " outside its range");
+  }
+}
+
+struct Registry {
+  std::mutex mutex;
+  std::vector<TechniqueInfo> all;
+  Registry() {
+#define FOVEATE_ADD_INFO(name) all.push_back(tech::name##_info());
+    FOVEATE_BUILTIN_TECHNIQUES(FOVEATE_ADD_INFO)
+#undef FOVEATE_ADD_INFO
+    for (const TechniqueInfo& t : all) validate_declaration(t);
+  }
+};
+
+Registry& registry() {
+  static Registry r;
+  return r;
+}
+
+}  // namespace
+
+void ParamValues::set(const std::string& key, double value) {
+  for (auto& [k, v] : items_) {
+    if (k == key) {
+      v = value;
+      return;
+    }
+  }
+  items_.emplace_back(key, value);
+}
+
+bool ParamValues::has(std::string_view key) const {
+  return std::any_of(items_.begin(), items_.end(), [&](const auto& kv) { return kv.first == key; });
+}
+
+double ParamValues::real(std::string_view key) const {
+  for (const auto& [k, v] : items_) {
+    if (k == key) return v;
+  }
+  throw Error("internal: parameter '" + std::string(key) + "' is not declared");
+}
+
+int ParamValues::integer(std::string_view key) const {
+  return static_cast<int>(std::lround(real(key)));
+}
+
+bool ParamValues::boolean(std::string_view key) const { return real(key) != 0.0; }
+
+const std::vector<TechniqueInfo>& techniques() { return registry().all; }
+
+void register_technique(TechniqueInfo info) {
+  validate_declaration(info);
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  for (const TechniqueInfo& t : r.all) {
+    if (t.name == info.name) throw Error("technique '" + info.name + "' is already registered");
+  }
+  r.all.push_back(std::move(info));
 }
 
 const TechniqueInfo& technique_info(const std::string& name) {
@@ -24,14 +115,66 @@ const TechniqueInfo& technique_info(const std::string& name) {
   throw Error("unknown technique '" + name + "' (known: " + names + ")");
 }
 
-std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueConfig& config) {
-  config.display.validate();
-  return technique_info(name).make(config);
+ParamValues resolve_parameters(const TechniqueInfo& info, const TechniqueConfig& config) {
+  ParamValues values;
+  for (const ParamDecl& p : info.params) {
+    double v = p.derive ? std::clamp(p.derive(config, values), p.min, p.max) : p.value;
+    if (p.type != ParamType::Real) v = std::round(v);
+    auto it = config.params.find(p.key);
+    if (it != config.params.end()) {
+      const double x = it->second;
+      const std::string what = info.name + " parameter " + p.key + "=" + number(x);
+      if (!std::isfinite(x) || x < p.min || x > p.max) {
+        throw Error(what + ": out of range [" + number(p.min) + ", " + number(p.max) + "]" +
+                    (p.unit.empty() ? "" : " " + p.unit));
+      }
+      if (p.type != ParamType::Real && x != std::floor(x))
+        throw Error(what + ": must be " + type_name(p.type));
+      v = x;
+    }
+    values.set(p.key, v);
+  }
+  for (const auto& [key, v] : config.params) {
+    if (!values.has(key)) {
+      std::string known;
+      for (const ParamDecl& p : info.params) known += (known.empty() ? "" : ", ") + p.key;
+      throw Error(info.name + " has no parameter '" + key +
+                  "' (it has: " + (known.empty() ? "none" : known) + ")");
+    }
+  }
+  if (info.check) info.check(values);
+  return values;
 }
 
-std::vector<std::pair<std::string, double>> default_parameters(const std::string& name,
-                                                               const TechniqueConfig& config) {
-  return technique_info(name).defaults(config);
+std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueConfig& config) {
+  config.display.validate();
+  const TechniqueInfo& info = technique_info(name);
+  const ParamValues values = resolve_parameters(info, config);
+  std::unique_ptr<Technique> t = info.make(config, values);
+  t->name_ = info.name;
+  t->values_ = values;
+  return t;
+}
+
+std::vector<std::pair<std::string, double>> Technique::parameters() const {
+  auto v = values_.items();
+  for (auto& d : derived()) v.push_back(std::move(d));
+  return v;
+}
+
+std::string scene_mismatch(const TechniqueInfo& info, const SceneInfo& scene) {
+  if ((info.needs.meshes && !scene.has_meshes) || (info.needs.mesh_lods && !scene.has_mesh_lods)) {
+    return "technique " + info.name + " needs a scene with " +
+           (info.needs.mesh_lods ? "mesh levels of detail" : "meshes") + ", but scene '" +
+           scene.name + "' has " + (scene.has_meshes ? "no levels of detail" : "no meshes") +
+           " (it is shaded in screen space); use a mesh file or the guenter scene";
+  }
+  return {};
+}
+
+void check_scene(const TechniqueInfo& info, const SceneInfo& scene) {
+  const std::string why = scene_mismatch(info, scene);
+  if (!why.empty()) throw Error(why);
 }
 
 struct OverlayRenderer::Impl {
@@ -41,11 +184,12 @@ struct OverlayRenderer::Impl {
 OverlayRenderer::OverlayRenderer() : impl_(std::make_unique<Impl>()) {}
 OverlayRenderer::~OverlayRenderer() = default;
 
-void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes, int width, int height,
-                           GLuint target) {
+void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes,
+                           const gpu::RenderTarget& target) {
   tech::Kit& kit = impl_->kit;
   const gpu::Program& p = kit.fullscreen("common/overlay.frag");
   const int n = static_cast<int>(std::min<size_t>(shapes.size(), 32));
+  const int height = target.height();
   std::vector<float> geo(static_cast<size_t>(n) * 4), style(static_cast<size_t>(n) * 4);
   for (int i = 0; i < n; ++i) {
     const OverlayShape& s = shapes[static_cast<size_t>(i)];
@@ -62,12 +206,9 @@ void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes, int width, i
     glProgramUniform4fv(p.id(), p.uniform("u_shape[0]"), n, geo.data());
     glProgramUniform4fv(p.id(), p.uniform("u_style[0]"), n, style.data());
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-  glViewport(0, 0, width, height);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  kit.draw_fullscreen(p);
-  glDisable(GL_BLEND);
+  gpu::PassState blend;
+  blend.alpha_blend = true;
+  kit.pass(p, target, blend);
 }
 
 }  // namespace foveate

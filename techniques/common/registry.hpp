@@ -1,19 +1,21 @@
 #pragma once
-// Each technique's folder provides its registry entry and its pure parameter
-// derivation (no GL), gathered here.
-#include "foveate/core/planner.hpp"
+// The built-in techniques, one per folder. Adding one: a folder with its code
+// and shaders (CMake picks it up) that defines `TechniqueInfo NAME_info()`,
+// and its name in this list.
 #include "foveate/techniques/technique.hpp"
+
+#define FOVEATE_BUILTIN_TECHNIQUES(X) \
+  X(native)                           \
+  X(layered)                          \
+  X(logpolar)                         \
+  X(checkerboard)                     \
+  X(lodmask)                          \
+  X(inset)
 
 namespace foveate::tech {
 
-TechniqueInfo native_info();
-TechniqueInfo layered_info();
-TechniqueInfo logpolar_info();
-TechniqueInfo checkerboard_info();
-TechniqueInfo lodmask_info();
-TechniqueInfo inset_info();
-
-/// The layer plan a `layered` technique uses (nullptr for other techniques).
-const LayerPlan* layered_plan(const Technique& t);
+#define FOVEATE_DECLARE_INFO(name) TechniqueInfo name##_info();
+FOVEATE_BUILTIN_TECHNIQUES(FOVEATE_DECLARE_INFO)
+#undef FOVEATE_DECLARE_INFO
 
 }  // namespace foveate::tech

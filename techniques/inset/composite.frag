@@ -4,7 +4,7 @@ uniform sampler2D u_periphery;
 uniform sampler2D u_inset;
 uniform int u_has_inset;
 uniform vec4 u_inset_rect;  // x0, y0, w, h in screen pixels
-uniform vec2 u_gaze;
+uniform vec2 u_gaze_gl;  // pixels, origin bottom-left
 uniform float u_radius;
 uniform float u_border;
 uniform float u_blur;       // in periphery texels
@@ -18,7 +18,7 @@ void main() {
   col += 0.1875 * (texture(u_periphery, uv + vec2(texel.x, 0.0)).rgb + texture(u_periphery, uv - vec2(texel.x, 0.0)).rgb +
                    texture(u_periphery, uv + vec2(0.0, texel.y)).rgb + texture(u_periphery, uv - vec2(0.0, texel.y)).rgb);
   if (u_has_inset != 0) {
-    float d = distance(p, u_gaze);
+    float d = distance(p, u_gaze_gl);
     float w = u_border > 0.0 ? 1.0 - smoothstep(u_radius - u_border, u_radius, d) : step(d, u_radius);
     if (w > 0.0) {
       vec2 iuv = (p - u_inset_rect.xy) / u_inset_rect.zw;

@@ -13,66 +13,42 @@ namespace foveate::tech {
 
 namespace {
 
-struct InsetParams {
-  double scale = 0.5;
-  double fovea_deg = 6.0;
-  double border_frac = 0.2;
-  double latency_ms = 0.0;
-  double saccade = 200.0;
-  double blur = 1.0;
-};
-
-InsetParams derive(const TechniqueConfig& c, Params& p) {
-  InsetParams o;
-  o.scale = p.get("scale", 0.5);
-  // The fovea the inset must cover: where the acuity model first accepts the
-  // periphery's sampling factor 1/scale (w(e) = w* / scale), on both sides.
-  const double e = c.acuity.eccentricity_for_mar(c.display.sharpness_deg() / o.scale);
-  o.fovea_deg = p.get("fovea_deg", std::clamp(2.0 * e, 1.0, 60.0));
-  o.border_frac = p.get("border", 0.2);
-  o.latency_ms = p.get("latency_ms", 0.0);
-  o.saccade = p.get("saccade_deg_per_s", 200.0);
-  o.blur = p.get("blur", 1.0);
-  return o;
-}
-
 class Inset final : public Technique {
  public:
-  explicit Inset(const TechniqueConfig& c) : display_(c.display) {
-    std::tie(opt_, values_) = derive_options<InsetParams>("inset", c, derive);
-  }
-  std::string name() const override { return "inset"; }
-  std::vector<std::pair<std::string, double>> parameters() const override {
-    auto v = values_;
-    v.emplace_back("diameter_px", fovea(GazeState{}).diameter_px(display_));
-    return v;
-  }
+  Inset(const TechniqueConfig& c, const ParamValues& v)
+      : display_(c.display),
+        scale_(v.real("scale")),
+        fovea_deg_(v.real("fovea_deg")),
+        border_frac_(v.real("border")),
+        latency_ms_(v.real("latency_ms")),
+        max_saccade_(v.real("max_saccade_deg_per_s")),
+        blur_(v.real("blur")) {}
 
   // Eq. 1 with the larger of the configured and the measured latency.
   LatencyAwareFovea fovea(const GazeState& g) const {
     LatencyAwareFovea f;
-    f.latency_ms = std::max(opt_.latency_ms, g.latency_ms);
-    f.saccade_deg_per_s = g.latency_ms > opt_.latency_ms ? g.saccade_deg_per_s : opt_.saccade;
-    f.fovea_deg = std::min(opt_.fovea_deg * g.fovea_scale, 170.0);
-    f.blend_border_px = opt_.border_frac * 0.5 * display_.radius_px_at(0.5 * f.fovea_deg) * 2.0;
+    f.latency_ms = std::max(latency_ms_, g.latency_ms);
+    f.max_saccade_deg_per_s = g.latency_ms > latency_ms_ ? g.max_saccade_deg_per_s : max_saccade_;
+    f.fovea_deg = std::min(fovea_deg_ * g.fovea_scale, 170.0);
+    f.blend_border_px = border_frac_ * 0.5 * display_.radius_px_at(0.5 * f.fovea_deg) * 2.0;
     return f;
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
-                    GLuint target) override {
-    const int W = frame.width, H = frame.height;
+  FrameStats render(Scene& scene, const FrameInput&, const GazeState& gaze,
+                    const gpu::RenderTarget& target) override {
+    const int W = target.width(), H = target.height();
     const Vec2d g = to_gl(gaze.gaze_px, H);
     FrameStats s;
     s.native_pixels = double(W) * H;
     // Periphery: the whole screen at `scale` per axis.
-    const int pw = std::max(1, static_cast<int>(std::lround(W * opt_.scale)));
-    const int ph = std::max(1, static_cast<int>(std::lround(H * opt_.scale)));
-    const View pv{0, 0, double(W), double(H), pw, ph, 1.0 / opt_.scale};
+    const int pw = std::max(1, static_cast<int>(std::lround(W * scale_)));
+    const int ph = std::max(1, static_cast<int>(std::lround(H * scale_)));
+    const View pv{0, 0, double(W), double(H), pw, ph, 1.0 / scale_};
     scene.prepass(pv);
     periphery_.ensure(pw, ph);
-    periphery_.bind_viewport();
     const double np =
-        kit_.shade(scene, pv, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, pv); });
+        kit_.shade(scene, pv, kMapRect, periphery_,
+                   [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, pv); });
     s.parts.push_back({"periphery", np});
     // Foveal inset at native resolution, clipped to the screen.
     const LatencyAwareFovea f = fovea(gaze);
@@ -88,27 +64,25 @@ class Inset final : public Technique {
       const View iv{x0, y0, x1, y1, static_cast<int>(x1 - x0), static_cast<int>(y1 - y0), 1.0};
       scene.prepass(iv);
       inset_.ensure(iv.target_width, iv.target_height);
-      inset_.bind_viewport();
-      ni = kit_.shade(scene, iv, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, iv); });
+      ni = kit_.shade(scene, iv, kMapRect, inset_,
+                      [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, iv); });
     }
     s.parts.push_back({"inset", ni});
     s.shaded_pixels = np + ni;
     // Composite: blurred upscale of the periphery, the inset over it with a vignette.
-    const gpu::Program& c = kit_.fullscreen("inset/composite.frag");
-    periphery_.color.bind(Scene::kFirstTechniqueUnit);
-    c.set("u_periphery", Scene::kFirstTechniqueUnit);
-    if (has_inset) inset_.color.bind(Scene::kFirstTechniqueUnit + 1);
-    c.set("u_inset", Scene::kFirstTechniqueUnit + 1);
-    c.set("u_has_inset", has_inset ? 1 : 0);
-    c.set("u_inset_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
-    c.set("u_gaze", float(g.x), float(g.y));
-    c.set("u_radius", float(half));
-    c.set("u_border", float(f.blend_border_px));
-    c.set("u_blur", float(opt_.blur));
-    c.set("u_screen", float(W), float(H));
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, W, H);
-    kit_.draw_fullscreen(c);
+    kit_.pass(kit_.fullscreen("inset/composite.frag"), target, {},
+              [&](const gpu::Program& c, gpu::Samplers& samplers) {
+                samplers.bind(c, "u_periphery", periphery_.color());
+                // Without an inset the periphery stands in (never sampled).
+                samplers.bind(c, "u_inset", has_inset ? inset_.color() : periphery_.color());
+                c.set("u_has_inset", has_inset ? 1 : 0);
+                c.set("u_inset_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
+                c.set("u_gaze_gl", float(g.x), float(g.y));
+                c.set("u_radius", float(half));
+                c.set("u_border", float(f.blend_border_px));
+                c.set("u_blur", float(blur_));
+                c.set("u_screen", float(W), float(H));
+              });
     return s;
   }
 
@@ -118,38 +92,56 @@ class Inset final : public Technique {
     return {{OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half, 0, 1, 0.1f, 0.1f},
             {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half - f.blend_border_px,
              0, 0.1f, 0.9f, 0.2f},
-            {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f}};
+            gaze_dot(gaze)};
+  }
+
+ protected:
+  std::vector<std::pair<std::string, double>> derived() const override {
+    return {{"diameter_px", fovea(GazeState{}).diameter_px(display_)}};
   }
 
  private:
   Display display_;
-  InsetParams opt_;
-  std::vector<std::pair<std::string, double>> values_;
+  double scale_, fovea_deg_, border_frac_, latency_ms_, max_saccade_, blur_;
   Kit kit_;
-  Target periphery_, inset_;
+  gpu::RenderTarget periphery_, inset_;
 };
 
 }  // namespace
 
 TechniqueInfo inset_info() {
-  return {
-      "inset",
+  TechniqueInfo t;
+  t.name = "inset";
+  t.summary =
       "Quarter-resolution periphery upscaled with a slight blur, and a full-resolution foveal "
-      "inset sized by the latency-aware formula, blended with a vignette.",
-      "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015",
-      {{"scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", 0.05, 1.0, false},
-       {"fovea_deg", "angle the fovea subtends (alpha of eq. 1); default from the acuity model",
-        0.5, 170.0, false},
-       {"border", "vignette blend border as a fraction of the foveal radius", 0.0, 1.0, false},
-       {"latency_ms",
-        "worst-case total latency L_tot (the measured gaze latency is used if larger)", 0.0, 1000.0,
-        false},
-       {"saccade_deg_per_s", "maximal saccade speed S_max", 0.0, 1000.0, false},
-       {"blur", "upscale blur radius in periphery texels (0 = plain bilinear)", 0.0, 4.0, false}},
-      [](const TechniqueConfig& c) { return std::make_unique<Inset>(c); },
-      [](const TechniqueConfig& c) {
-        return derive_options<InsetParams>("inset", c, derive).second;
-      }};
+      "inset sized by the latency-aware formula, blended with a vignette.";
+  t.source = "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015";
+  t.params = {
+      param("scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", "",
+            ParamType::Real, 0.05, 1.0, 0.5),
+      // The fovea the inset must cover: where the acuity model first accepts
+      // the periphery's sampling factor 1/scale (w(e) = w* / scale), both sides.
+      {"fovea_deg", "angle the fovea subtends (alpha of eq. 1); default from the acuity model",
+       "deg", ParamType::Real, 0.5, 170.0, 6.0,
+       [](const TechniqueConfig& c, const ParamValues& v) {
+         const double e =
+             c.acuity.eccentricity_for_mar(c.display.sharpness_deg() / v.real("scale"));
+         return std::clamp(2.0 * e, 1.0, 60.0);
+       }},
+      param("border", "vignette blend border as a fraction of the foveal radius", "",
+            ParamType::Real, 0.0, 1.0, 0.2),
+      param("latency_ms",
+            "worst-case total latency L_tot (the measured gaze latency is used if larger)", "ms",
+            ParamType::Real, 0.0, 1000.0, 0.0),
+      param("max_saccade_deg_per_s", "maximal saccade speed S_max of eq. 1", "deg/s",
+            ParamType::Real, 0.0, 1000.0, 200.0),
+      param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
+            ParamType::Real, 0.0, 4.0, 1.0),
+  };
+  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
+    return std::make_unique<Inset>(c, v);
+  };
+  return t;
 }
 
 }  // namespace foveate::tech

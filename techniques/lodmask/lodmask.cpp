@@ -15,20 +15,6 @@ namespace foveate::tech {
 
 namespace {
 
-struct LodParams {
-  double inner_deg = 3.0;
-  double outer_deg = 6.0;
-};
-
-LodParams derive(const TechniqueConfig& c, Params& p) {
-  LodParams o;
-  const double w = c.display.sharpness_deg();
-  o.inner_deg = p.get("inner_deg", std::max(0.5, c.acuity.eccentricity_for_mar(2.0 * w)));
-  o.outer_deg = p.get("outer_deg", std::max(o.inner_deg, c.acuity.eccentricity_for_mar(4.0 * w)));
-  if (o.outer_deg < o.inner_deg) throw Error("--param outer_deg must be >= inner_deg");
-  return o;
-}
-
 // Pixel centres (x + 0.5, y + 0.5) of a W x H screen within `r` of `c`, row by row.
 double pixels_in_disc(Vec2d c, double r, int W, int H) {
   double n = 0;
@@ -45,50 +31,43 @@ double pixels_in_disc(Vec2d c, double r, int W, int H) {
 
 class LodMask final : public Technique {
  public:
-  explicit LodMask(const TechniqueConfig& c) : display_(c.display) {
-    std::tie(opt_, values_) = derive_options<LodParams>("lodmask", c, derive);
-  }
-  std::string name() const override { return "lodmask"; }
-  std::vector<std::pair<std::string, double>> parameters() const override { return values_; }
+  LodMask(const TechniqueConfig& c, const ParamValues& v)
+      : display_(c.display), inner_deg_(v.real("inner_deg")), outer_deg_(v.real("outer_deg")) {}
 
   std::pair<double, double> radii(const GazeState& g) const {
     const double extra = latency_margin_deg(g);
-    return {display_.radius_px_at(opt_.inner_deg * g.fovea_scale + extra),
-            display_.radius_px_at(opt_.outer_deg * g.fovea_scale + extra)};
+    return {display_.radius_px_at(inner_deg_ * g.fovea_scale + extra),
+            display_.radius_px_at(outer_deg_ * g.fovea_scale + extra)};
   }
 
-  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
-                    GLuint target) override {
-    const SceneInfo info = scene.info();
-    if (!info.has_mesh_lods) {
-      throw Error(
-          "technique lodmask changes mesh detail, but scene '" + info.name +
-          "' has no meshes (it is shaded in screen space); use a mesh file or the guenter scene");
-    }
-    const int W = frame.width, H = frame.height;
+  FrameStats render(Scene& scene, const FrameInput&, const GazeState& gaze,
+                    const gpu::RenderTarget& target) override {
+    const int W = target.width(), H = target.height();
     const Vec2d g = to_gl(gaze.gaze_px, H);
     const auto [r_in, r_out] = radii(gaze);
     const View view = View::full(W, H);
+    // The scene draws into its own G-buffer (bound by prepass_begin); the
+    // stencil state set here decides where each LOD may write.
     scene.prepass_begin(view);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    gpu::PassState draw;
+    draw.stencil_func = GL_ALWAYS;
+    gpu::apply(draw);
     scene.prepass_draw(view, 2);
     mask(g, r_out, 1);
-    glStencilFunc(GL_LEQUAL, 1, 0xFF);  // 1 <= stencil: inside the outer circle
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    draw.stencil_func = GL_LEQUAL;  // 1 <= stencil: inside the outer circle
+    draw.stencil_ref = 1;
+    gpu::apply(draw);
     scene.prepass_draw(view, 1);
     mask(g, r_in, 2);
-    glStencilFunc(GL_EQUAL, 2, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    draw.stencil_func = GL_EQUAL;
+    draw.stencil_ref = 2;
+    gpu::apply(draw);
     scene.prepass_draw(view, 0);
-    glDisable(GL_STENCIL_TEST);
+    gpu::apply({});
     scene.prepass_end();
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, W, H);
     const double shaded = kit_.shade(
-        scene, view, kMapRect, [&](const gpu::Program& p) { set_rect_mapping(p, view); }, true);
+        scene, view, kMapRect, target,
+        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, {}, true);
     // Every pixel is lit (deferred); the parts say how many pixels got their
     // geometry from each LOD: pixel centres inside each stencil circle.
     const double in = pixels_in_disc(g, r_in, W, H), out = pixels_in_disc(g, r_out, W, H);
@@ -103,54 +82,72 @@ class LodMask final : public Technique {
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     const auto [r_in, r_out] = radii(gaze);
+    const auto* a = kRingColours[0];
+    const auto* b = kRingColours[1];
     return {
-        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_in, 0, 1, 0.1f, 0.1f},
-        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_out, 0, 0.1f, 0.9f, 0.2f},
-        {OverlayShape::Kind::Dot, gaze.gaze_px.x, gaze.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f}};
+        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_in, 0, a[0], a[1], a[2]},
+        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_out, 0, b[0], b[1], b[2]},
+        gaze_dot(gaze)};
   }
 
  private:
   // Inside the circle: stencil = value and depth reset to the far plane, so
-  // that the finer LOD drawn next replaces the coarser one there.
+  // that the finer LOD drawn next replaces the coarser one there. Draws into
+  // the G-buffer the prepass bound.
   void mask(Vec2d g, double radius, int value) {
     const gpu::Program& p = kit_.fullscreen("lodmask/mask.frag");
     p.set("u_centre", float(g.x), float(g.y));
     p.set("u_radius", float(radius));
-    GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glStencilFunc(GL_ALWAYS, value, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    kit_.draw_fullscreen(p);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthFunc(GL_LESS);
-    if (!depth_test) glDisable(GL_DEPTH_TEST);
+    gpu::PassState s;
+    s.depth_func = GL_ALWAYS;
+    s.depth_write = true;
+    s.stencil_func = GL_ALWAYS;
+    s.stencil_ref = value;
+    s.stencil_pass_op = GL_REPLACE;
+    s.stencil_write = true;
+    s.color_off = true;
+    kit_.pass_in_bound(p, s);
   }
 
   Display display_;
-  LodParams opt_;
-  std::vector<std::pair<std::string, double>> values_;
+  double inner_deg_, outer_deg_;
   Kit kit_;
 };
 
 }  // namespace
 
 TechniqueInfo lodmask_info() {
-  return {
-      "lodmask",
+  TechniqueInfo t;
+  t.name = "lodmask";
+  t.summary =
       "Mesh level of detail per screen region: coarse LOD everywhere, finer LODs inside stencil "
-      "circles around the gaze, deferred lighting. Mesh scenes only.",
-      "Knapik and McGowen, Foveal Rendering, 2016",
-      {{"inner_deg", "radius of the full-detail circle in degrees; default where w(e) = 2 w*", 0.0,
-        90.0, false},
-       {"outer_deg", "radius of the mid-detail circle in degrees; default where w(e) = 4 w*", 0.0,
-        90.0, false}},
-      [](const TechniqueConfig& c) { return std::make_unique<LodMask>(c); },
-      [](const TechniqueConfig& c) {
-        return derive_options<LodParams>("lodmask", c, derive).second;
-      }};
+      "circles around the gaze, deferred lighting. Mesh scenes only.";
+  t.source = "Knapik and McGowen, Foveal Rendering, 2016";
+  t.needs.meshes = true;
+  t.needs.mesh_lods = true;
+  // The eye resolves half the display's detail beyond e where w(e) = 2 w*, a
+  // quarter beyond w(e) = 4 w*.
+  t.params = {
+      {"inner_deg", "radius of the full-detail circle; default where w(e) = 2 w*", "deg",
+       ParamType::Real, 0.0, 90.0, 3.0,
+       [](const TechniqueConfig& c, const ParamValues&) {
+         return std::max(0.5, c.acuity.eccentricity_for_mar(2.0 * c.display.sharpness_deg()));
+       }},
+      {"outer_deg", "radius of the mid-detail circle; default where w(e) = 4 w*", "deg",
+       ParamType::Real, 0.0, 90.0, 6.0,
+       [](const TechniqueConfig& c, const ParamValues& v) {
+         return std::max(v.real("inner_deg"),
+                         c.acuity.eccentricity_for_mar(4.0 * c.display.sharpness_deg()));
+       }},
+  };
+  t.check = [](const ParamValues& v) {
+    if (v.real("outer_deg") < v.real("inner_deg"))
+      throw Error("lodmask parameter outer_deg must be >= inner_deg");
+  };
+  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
+    return std::make_unique<LodMask>(c, v);
+  };
+  return t;
 }
 
 }  // namespace foveate::tech

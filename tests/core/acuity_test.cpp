@@ -38,7 +38,7 @@ TEST(Display, PaperDesktopGeometry) {
   EXPECT_NEAR(kFovealMarDeg / d.sharpness_deg(), 0.40, 0.01);
   EXPECT_DOUBLE_EQ(d.aspect(), 9.0 / 16.0);
   // Hand-computed: focal length = 590 * 1920 / 510 px.
-  EXPECT_NEAR(d.focal_px(), 2221.176, 1e-3);
+  EXPECT_NEAR(d.eye_distance_px(), 2221.176, 1e-3);
 }
 
 TEST(Display, ExactEccentricity) {
@@ -51,7 +51,7 @@ TEST(Display, ExactEccentricity) {
   EXPECT_NEAR(d.eccentricity_deg({1920, 540}, {0, 540}), 2 * d.half_fov_deg(), 1e-9);
   // Off-centre: not the small-angle value. Gaze at the right edge, pixel 200 px
   // further in: atan(960/f) - atan(760/f).
-  const double f = d.focal_px();
+  const double f = d.eye_distance_px();
   const double expect = (std::atan(960 / f) - std::atan(760 / f)) * 180 / M_PI;
   EXPECT_NEAR(d.eccentricity_deg({1720, 540}, {1920, 540}), expect, 1e-9);
   EXPECT_GT(std::fabs(expect - 200 / d.pixels_per_degree(c, c)), 0.1);
@@ -61,7 +61,7 @@ TEST(Display, PixelsPerDegree) {
   const Display d = Display::load("desktop-1080p");
   const Vec2d c{960, 540};
   // At the centre: f * pi / 180 pixels per degree.
-  EXPECT_NEAR(d.pixels_per_degree(c, c), d.focal_px() * M_PI / 180.0, 0.01);
+  EXPECT_NEAR(d.pixels_per_degree(c, c), d.eye_distance_px() * M_PI / 180.0, 0.01);
   // Towards the edge the screen is seen obliquely: more pixels per degree.
   EXPECT_GT(d.pixels_per_degree({1900, 540}, c), d.pixels_per_degree({1000, 540}, c));
 }

@@ -15,7 +15,8 @@ TEST(Swafford, ZeroLatencyIsThePlainFovea) {
   // 2 * f * tan(2.5 deg) + 2 * 20, with f = 590 mm * (1920 / 510) px/mm.
   const double expect = 2 * 590.0 * (1920.0 / 510.0) * std::tan(2.5 * M_PI / 180) + 40;
   EXPECT_NEAR(f.diameter_px(d), expect, 1e-9);
-  EXPECT_NEAR(f.diameter_deg(d), 2 * std::atan((expect / 2) / d.focal_px()) * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(f.diameter_deg(d), 2 * std::atan((expect / 2) / d.eye_distance_px()) * 180 / M_PI,
+              1e-9);
 }
 
 TEST(Swafford, PaperSetup4K28Inch) {
@@ -131,7 +132,7 @@ TEST(Checkerboard, ThresholdsFromFractionsAndAcuity) {
   const auto p = CheckerboardPattern::from_acuity(16, d, a);
   // Region 3 keeps 1 of 4 quads (sampling factor 2): it starts where w(e) = 2 w*.
   const double e3 = (2 * d.sharpness_deg() - a.w0_deg) / a.slope;
-  EXPECT_NEAR(p.thresholds_px[2], d.focal_px() * std::tan(e3 * M_PI / 180), 1e-9);
+  EXPECT_NEAR(p.thresholds_px[2], d.eye_distance_px() * std::tan(e3 * M_PI / 180), 1e-9);
   EXPECT_LT(p.thresholds_px[0], p.thresholds_px[1]);
   EXPECT_LT(p.thresholds_px[1], p.thresholds_px[2]);
   EXPECT_NEAR(checkerboard_sampling_factor(1), std::sqrt(4.0 / 3.0), 1e-12);

@@ -23,8 +23,8 @@ TEST(Planner, SamplingFactorsFollowEq2) {
                 1e-12);
   }
   // Eq. 3: inner layer diameter 2 f tan(e1), outer layer the screen divided by s3.
-  EXPECT_EQ(p.layers[0].width_px,
-            std::lround(2 * kDesk.focal_px() * std::tan(p.layers[0].radius_deg * M_PI / 180)));
+  EXPECT_EQ(p.layers[0].width_px, std::lround(2 * kDesk.eye_distance_px() *
+                                              std::tan(p.layers[0].radius_deg * M_PI / 180)));
   EXPECT_EQ(p.layers[2].width_px, std::lround(1920 / p.layers[2].sampling_factor));
   EXPECT_EQ(p.layers[2].height_px, std::lround(1080 / p.layers[2].sampling_factor));
 }
@@ -47,7 +47,7 @@ TEST(Planner, OptimumIsAMinimum) {
   o.grid_step_deg = 0.5;
   const AcuityModel acu = AcuityModel::quality("A");
   const LayerPlan p = plan_layers(kDesk, acu, o);
-  const double f = kDesk.focal_px();
+  const double f = kDesk.eye_distance_px();
   double best = 1e300;
   for (double e1 = 0.5; e1 < kDesk.half_fov_deg(); e1 += 0.5) {
     for (double e2 = e1 + 0.5; e2 < kDesk.half_fov_deg(); e2 += 0.5) {

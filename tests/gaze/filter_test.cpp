@@ -219,15 +219,15 @@ TEST(LatencyEstimator, SkipsHeldFramesAndFeedsTheLatencyAwareFovea) {
   e.record(g, 2.0);
   EXPECT_EQ(e.count(), 1u);
   EXPECT_NEAR(e.worst_case_ms(), 40.0, 1e-9);
-  // Swafford et al. eq. 1: F' = 2 * focal_px * tan(L * S + alpha / 2) (+ borders).
+  // Swafford et al. eq. 1: F' = 2 * eye_distance_px * tan(L * S + alpha / 2) (+ borders).
   LatencyAwareFovea base;
   const LatencyAwareFovea lf = e.fovea_for(base);
   EXPECT_NEAR(lf.latency_ms, 40.0, 1e-9);
   const double deg = 3.14159265358979323846 / 180.0;
-  const double expect = 2 * kDisplay.focal_px() * std::tan((0.040 * 200.0 + 2.5) * deg);
+  const double expect = 2 * kDisplay.eye_distance_px() * std::tan((0.040 * 200.0 + 2.5) * deg);
   EXPECT_NEAR(lf.diameter_px(kDisplay), expect, 1e-6);
-  EXPECT_NEAR(e.fovea_growth(kDisplay), expect / (2 * kDisplay.focal_px() * std::tan(2.5 * deg)),
-              1e-9);
+  EXPECT_NEAR(e.fovea_growth(kDisplay),
+              expect / (2 * kDisplay.eye_distance_px() * std::tan(2.5 * deg)), 1e-9);
   EXPECT_GT(e.fovea_growth(kDisplay), 4.0);  // 40 ms at 200 deg/s: 8 deg of reach
   EXPECT_DOUBLE_EQ(LatencyEstimator().fovea_growth(kDisplay), 1.0);
 }

@@ -64,7 +64,7 @@ TEST(GazeSpec, BadSpecsAreClearErrors) {
   EXPECT_NE(error_of("trace:/nonexistent/gaze.csv", c).find("/nonexistent/gaze.csv"),
             std::string::npos);
   EXPECT_NE(error_of("eyeball", c).find("unknown source 'eyeball'"), std::string::npos);
-  EXPECT_EQ(error_of("mouse", c), "--gaze mouse needs a window (foveate view)");
+  EXPECT_EQ(error_of("mouse", c), "gaze source mouse needs a window (foveate view)");
   EXPECT_NE(error_of("nearest", c).find("objects"), std::string::npos);
 }
 

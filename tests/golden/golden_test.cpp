@@ -7,7 +7,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
-#include "foveate/techniques/technique.hpp"
+#include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 
@@ -21,20 +21,21 @@ const std::string kData = FOVEATE_TEST_DATA;
 
 class Golden : public test::GlTest {
  protected:
+  // One frame at scene time 2 s through the frame runner.
   Image render(Scene& scene, const std::string& technique, int w, int h, Vec2d gaze,
-               FrameInput f = {}) {
-    gpu::Texture color = gpu::Texture::create_2d(GL_RGBA8, w, h);
-    gpu::Framebuffer fbo = gpu::Framebuffer::create();
-    fbo.attach(GL_COLOR_ATTACHMENT0, color);
+               Vec2d mouse_px = {}, bool mouse_down = false) {
+    RendererOptions o;
+    o.width = w;
+    o.height = h;
+    o.start_time_s = 2.0;
+    o.mouse_px = mouse_px;
+    o.mouse_down = mouse_down;
+    Renderer r(scene, o);
     TechniqueConfig c;
     c.display = Display::load("desktop-1080p").resized(w, h);
     auto t = make_technique(technique, c);
-    f.width = w;
-    f.height = h;
-    if (f.time_s == 0) f.time_s = 2.0;
-    scene.update(f);
-    t->render(scene, f, GazeState{gaze}, fbo.id());
-    return gpu::read_texture(color);
+    r.render(*t, 0, GazeState{gaze});
+    return r.read_output();
   }
 };
 
@@ -50,23 +51,25 @@ TEST_F(Golden, EveryBuiltinScene) {
   }
 }
 
-TEST_F(Golden, EachTechniqueOnTheDetailScene) {
-  auto scene = load_scene("detail");
-  for (const std::string t : {"layered", "logpolar", "checkerboard", "inset"}) {
-    const Image img = render(*scene, t, 320, 180, {200, 80});
+// Every registered technique but native (the scene references cover it):
+// on the detail scene, or on guenter when it needs meshes.
+TEST_F(Golden, EveryTechnique) {
+  auto detail = load_scene("detail");
+  auto guenter = load_scene("guenter");
+  for (const TechniqueInfo& t : techniques()) {
+    if (t.name == "native") continue;
+    Scene& scene = scene_mismatch(t, detail->info()).empty() ? *detail : *guenter;
+    const Image img = render(scene, t.name, 320, 180, {200, 80});
     const std::string msg =
-        check_golden(img, kGolden + "/technique-" + t + ".png", "technique-" + t);
+        check_golden(img, kGolden + "/technique-" + t.name + ".png", "technique-" + t.name);
     EXPECT_EQ(msg, "") << msg;
   }
 }
 
-TEST_F(Golden, MeshFileAndLodmask) {
+TEST_F(Golden, MeshFile) {
   auto cube = load_scene(kData + "/models/cube.obj");
-  std::string msg = check_golden(render(*cube, "native", 128, 96, {64, 48}), kGolden + "/mesh-cube.png", "mesh-cube");
-  EXPECT_EQ(msg, "") << msg;
-  auto guenter = load_scene("guenter");
-  msg = check_golden(render(*guenter, "lodmask", 320, 180, {200, 80}), kGolden + "/technique-lodmask.png",
-                     "technique-lodmask");
+  const std::string msg = check_golden(render(*cube, "native", 128, 96, {64, 48}),
+                                       kGolden + "/mesh-cube.png", "mesh-cube");
   EXPECT_EQ(msg, "") << msg;
 }
 
@@ -103,10 +106,8 @@ TEST_F(Golden, AnAlteredImageFailsTheComparison) {
 TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
   SceneOptions o;  // channels from channels.json beside the shader
   auto scene = load_scene(kData + "/shadertoy/channels.glsl", o);
-  FrameInput f;
-  f.mouse_px = {96, 20};
-  f.mouse_down = true;
-  const Image img = render(*scene, "native", 128, 64, {64, 32}, f);
+  const Vec2d mouse_at{96, 44};  // top-left pixels: (96, 20) from the bottom, Shadertoy's iMouse
+  const Image img = render(*scene, "native", 128, 64, {64, 32}, mouse_at, true);
   // The texture appears upright on the left half, as on shadertoy.com: its
   // red and green top row at the top, blue and white below.
   const uint8_t* top_left = img.at(8, 8);
@@ -127,8 +128,7 @@ TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
       check_golden(img, kGolden + "/shadertoy-channels.png", "shadertoy-channels");
   EXPECT_EQ(msg, "") << msg;
   // Without the button down the disc is not drawn (iMouse.z < 0).
-  f.mouse_down = false;
-  const Image up = render(*scene, "native", 128, 64, {64, 32}, f);
+  const Image up = render(*scene, "native", 128, 64, {64, 32}, mouse_at, false);
   EXPECT_LT(up.at(96, 43)[0], 50);
 }
 

@@ -29,10 +29,13 @@ class Meshes : public test::GlTest {
     scene.prepass(view);
     gpu::ShaderCompiler c({scene_shader_files()});
     std::vector<gpu::StageSource::Piece> pieces = {
-        {"map", "uniform vec4 u_rect; uniform vec2 u_target;\n"
-                "vec2 foveate_map(vec2 f) { return u_rect.xy + f * (u_rect.zw / u_target); }\n"}};
+        {"map",
+         "uniform vec4 u_rect; uniform vec2 u_target;\n"
+         "vec2 foveate_map(vec2 f) { return u_rect.xy + f * (u_rect.zw / u_target); }\n"}};
     for (const auto& p : scene.shade_source()) pieces.push_back(p);
-    pieces.push_back({"main", "out vec4 o_color;\nvoid main() { o_color = scene_shade(foveate_map(gl_FragCoord.xy)); }\n"});
+    pieces.push_back({"main",
+                      "out vec4 o_color;\nvoid main() { o_color = "
+                      "scene_shade(foveate_map(gl_FragCoord.xy)); }\n"});
     gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
                               gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
                              "mesh test");
@@ -41,8 +44,10 @@ class Meshes : public test::GlTest {
     fbo.attach(GL_COLOR_ATTACHMENT0, color);
     fbo.bind();
     glViewport(0, 0, view.target_width, view.target_height);
-    scene.bind(p, view);
-    p.set("u_rect", float(view.x0), float(view.y0), float(view.x1 - view.x0), float(view.y1 - view.y0));
+    gpu::Samplers samplers;
+    scene.bind(p, view, samplers);
+    p.set("u_rect", float(view.x0), float(view.y0), float(view.x1 - view.x0),
+          float(view.y1 - view.y0));
     p.set("u_target", float(view.target_width), float(view.target_height));
     gpu::VertexArray vao = gpu::VertexArray::create();
     p.use();

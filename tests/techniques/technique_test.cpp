@@ -11,6 +11,7 @@
 #include "foveate/core/models.hpp"
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
 
 using namespace foveate;
@@ -18,6 +19,10 @@ using namespace foveate;
 namespace {
 
 constexpr int kW = 640, kH = 360;
+
+struct Size {
+  int w, h;
+};
 
 // "Matches native": the same pixel centres are shaded, so differences come
 // only from floating-point rounding of sample positions, which flips the odd
@@ -61,13 +66,21 @@ Diff compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
 
 Diff compare_all(const Image& a, const Image& b) { return compare_disc(a, b, {0, 0}, 1e9); }
 
+// Every registered technique but the reference, optionally only those that
+// can render `scene`.
+std::vector<std::string> foveated(const SceneInfo* scene = nullptr) {
+  std::vector<std::string> out;
+  for (const TechniqueInfo& t : techniques()) {
+    if (t.name == "native") continue;
+    if (scene && !scene_mismatch(t, *scene).empty()) continue;
+    out.push_back(t.name);
+  }
+  return out;
+}
+
 class Techniques : public test::GlTest {
  protected:
-  void SetUp() override {
-    color_ = gpu::Texture::create_2d(GL_RGBA8, kW, kH);
-    fbo_ = gpu::Framebuffer::create();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, color_);
-  }
+  void SetUp() override { target_ = gpu::RenderTarget::create(kW, kH); }
   TechniqueConfig config(std::map<std::string, double> params = {}) const {
     TechniqueConfig c;
     c.display = Display::load("desktop-1080p").resized(kW, kH);
@@ -75,28 +88,28 @@ class Techniques : public test::GlTest {
     c.params = std::move(params);
     return c;
   }
-  FrameInput frame(int k = 0) const {
-    FrameInput f;
-    f.frame = k;
-    f.time_s = 1.0 + k / 60.0;
-    f.width = kW;
-    f.height = kH;
-    return f;
+  // The frame runner over the fixture's target: frame k is at 1 s + k / 60.
+  Renderer renderer(Scene& s, int w = kW, int h = kH) const {
+    RendererOptions o;
+    o.width = w;
+    o.height = h;
+    o.start_time_s = 1.0;
+    if (w == kW && h == kH)
+      return Renderer(s, o, gpu::RenderTarget::wrap(target_.framebuffer(), w, h));
+    return Renderer(s, o);
   }
   Image run(Technique& t, Scene& s, Vec2d gaze, FrameStats* stats = nullptr, int k = 0) {
-    const FrameInput f = frame(k);
-    s.update(f);
-    const FrameStats st = t.render(s, f, GazeState{gaze}, fbo_.id());
+    Renderer r = renderer(s);
+    const FrameStats st = r.render(t, k, GazeState{gaze});
     if (stats) *stats = st;
-    return gpu::read_texture(color_);
+    return r.read_output();
   }
   Image native(Scene& s, int k = 0) {
     auto n = make_technique("native", config());
     return run(*n, s, {kW / 2.0, kH / 2.0}, nullptr, k);
   }
 
-  gpu::Texture color_;
-  gpu::Framebuffer fbo_;
+  gpu::RenderTarget target_;
 };
 
 }  // namespace
@@ -304,7 +317,8 @@ TEST_F(Techniques, LogPolarHasNoSeamWhereTheAngleWraps) {
 
 TEST_F(Techniques, GazeAtCornersAndOffScreen) {
   auto scene = load_scene("cheap");
-  for (const std::string name : {"layered", "logpolar", "checkerboard", "inset"}) {
+  const SceneInfo info = scene->info();
+  for (const std::string& name : foveated(&info)) {
     auto t = make_technique(name, config());
     int k = 0;
     for (Vec2d g : {Vec2d{0, 0}, Vec2d{kW - 1.0, kH - 1.0}, Vec2d{kW, 0}, Vec2d{-200, 500},
@@ -345,7 +359,8 @@ TEST_F(Techniques, LodmaskFoveaMatchesNativeOnMeshes) {
 TEST_F(Techniques, EveryTechniqueOnAMeshFile) {
   auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/models/cube.obj");
   const Image ref = native(*scene);
-  for (const char* name : {"layered", "logpolar", "checkerboard", "lodmask", "inset"}) {
+  const SceneInfo info = scene->info();
+  for (const std::string& name : foveated(&info)) {
     auto t = make_technique(name, config());
     FrameStats s;
     const Image img = run(*t, *scene, {320, 180}, &s);
@@ -377,18 +392,12 @@ TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
   auto scene = load_scene("guenter");
   Image truth(kW, kH);
   {
-    gpu::Texture big = gpu::Texture::create_2d(GL_RGBA8, 2 * kW, 2 * kH);
-    gpu::Framebuffer fb = gpu::Framebuffer::create();
-    fb.attach(GL_COLOR_ATTACHMENT0, big);
     TechniqueConfig c = config();
     c.display = Display::load("desktop-1080p").resized(2 * kW, 2 * kH);
     auto n = make_technique("native", c);
-    FrameInput f = frame(0);
-    f.width = 2 * kW;
-    f.height = 2 * kH;
-    scene->update(f);
-    n->render(*scene, f, GazeState{{kW, kH}}, fb.id());
-    const Image hi = gpu::read_texture(big);
+    Renderer big = renderer(*scene, 2 * kW, 2 * kH);
+    big.render(*n, 0, GazeState{{kW, kH}});
+    const Image hi = big.read_output();
     for (int y = 0; y < kH; ++y) {
       for (int x = 0; x < kW; ++x) {
         for (int ch = 0; ch < 4; ++ch) {
@@ -420,6 +429,9 @@ TEST_F(Techniques, LodmaskSaysItNeedsMeshes) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("has no meshes"), std::string::npos) << e.what();
   }
+  // The need is declared, so callers can ask before rendering.
+  EXPECT_NE(scene_mismatch(technique_info("lodmask"), scene->info()), "");
+  EXPECT_EQ(scene_mismatch(technique_info("lodmask"), load_scene("guenter")->info()), "");
 }
 
 TEST_F(Techniques, BadParametersAreErrors) {
@@ -440,20 +452,38 @@ TEST_F(Techniques, DefaultsComeFromTheAcuityModel) {
   // A steeper MAR slope (more aggressive) shrinks every foveal region.
   TechniqueConfig a = config(), b = config();
   b.acuity = AcuityModel::with_slope(0.05);
-  auto get = [](const std::vector<std::pair<std::string, double>>& v, const std::string& k) {
-    for (const auto& [key, x] : v) {
-      if (key == k) return x;
-    }
-    return std::nan("");
+  auto get = [](const std::string& name, const TechniqueConfig& c, const std::string& key) {
+    return resolve_parameters(technique_info(name), c).real(key);
   };
-  EXPECT_GT(get(default_parameters("checkerboard", a), "r3"),
-            get(default_parameters("checkerboard", b), "r3"));
-  EXPECT_GT(get(default_parameters("inset", a), "fovea_deg"),
-            get(default_parameters("inset", b), "fovea_deg"));
-  EXPECT_LT(get(default_parameters("logpolar", a), "sigma"),
-            get(default_parameters("logpolar", b), "sigma"));
-  EXPECT_GT(get(default_parameters("lodmask", a), "inner_deg"),
-            get(default_parameters("lodmask", b), "inner_deg"));
+  EXPECT_GT(get("checkerboard", a, "r3"), get("checkerboard", b, "r3"));
+  EXPECT_GT(get("inset", a, "fovea_deg"), get("inset", b, "fovea_deg"));
+  EXPECT_LT(get("logpolar", a, "sigma"), get("logpolar", b, "sigma"));
+  EXPECT_GT(get("lodmask", a, "inner_deg"), get("lodmask", b, "inner_deg"));
+}
+
+TEST_F(Techniques, EveryDeclaredDefaultLiesInItsRange) {
+  // At sizes where the derivations run off their scales (a tiny render of a
+  // wide display, a steep or a flat slope) the defaults are clamped, and
+  // whole-number and boolean parameters are whole.
+  for (const Size& sz : {Size{64, 36}, Size{1920, 1080}, Size{7680, 4320}}) {
+    for (double slope : {0.005, 0.0275, 0.2}) {
+      TechniqueConfig c = config();
+      c.display = Display::load("desktop-1080p").resized(sz.w, sz.h);
+      c.acuity = AcuityModel::with_slope(slope);
+      for (const TechniqueInfo& t : techniques()) {
+        const ParamValues v = resolve_parameters(t, c);
+        ASSERT_EQ(v.items().size(), t.params.size()) << t.name;
+        for (const ParamDecl& p : t.params) {
+          const double x = v.real(p.key);
+          EXPECT_GE(x, p.min) << t.name << "." << p.key;
+          EXPECT_LE(x, p.max) << t.name << "." << p.key;
+          if (p.type != ParamType::Real) {
+            EXPECT_EQ(x, std::round(x)) << t.name << "." << p.key;
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST_F(Techniques, LatencyGrowsEveryFovea) {
@@ -467,7 +497,9 @@ TEST_F(Techniques, LatencyGrowsEveryFovea) {
     }
     return 0.0;
   };
-  for (const std::string name : {"layered", "checkerboard", "lodmask", "inset"}) {
+  // logpolar has no fovea of its own (its sampling falls off continuously).
+  for (const std::string& name : foveated()) {
+    if (name == "logpolar") continue;
     auto t = make_technique(name, config());
     GazeState g{{320, 180}};
     const double r0 = radius(t->overlay(g));

@@ -3,7 +3,7 @@
 // normal. A desktop monitor is described by its resolution, physical width and
 // viewing distance (Guenter et al. eq. 6 and 7); a head-mounted display by its
 // per-eye resolution and horizontal field of view. Both reduce to one number,
-// the distance from the eye to the image plane in pixels (focal_px), from which
+// the distance from the eye to the image plane in pixels (eye_distance_px), from which
 // every angle follows exactly (no small-angle approximation).
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -29,7 +29,7 @@ struct Display {
 
   [[nodiscard]] bool head_mounted() const { return fov_h_deg > 0.0; }
   /// Eye-to-image-plane distance measured in pixels (V* D* / W*).
-  [[nodiscard]] double focal_px() const;
+  [[nodiscard]] double eye_distance_px() const;
   /// Pixel density in pixels per millimetre (flat panels only; 0 for HMDs).
   [[nodiscard]] double pixels_per_mm() const;
   /// Longer axis in pixels (D* of the paper) and aspect (shorter / longer, alpha*).

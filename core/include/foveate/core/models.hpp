@@ -10,13 +10,13 @@ namespace foveate {
 // --- Swafford, Cosker, Mitchell: "Latency Aware Foveated Rendering in UE4" (2015), eq. 1.
 //   F' = 2 * rho_pixel * d_u * tan(L_tot * S_max + alpha / 2) + 2 * b_w + c
 struct LatencyAwareFovea {
-  double latency_ms = 0.0;           ///< L_tot, worst-case total latency
-  double saccade_deg_per_s = 200.0;  ///< S_max
-  double fovea_deg = 5.0;            ///< alpha, angle the fovea subtends
-  double blend_border_px = 0.0;      ///< b_w
-  double error_px = 0.0;             ///< c
+  double latency_ms = 0.0;               ///< L_tot, worst-case total latency
+  double max_saccade_deg_per_s = 200.0;  ///< S_max
+  double fovea_deg = 5.0;                ///< alpha, angle the fovea subtends
+  double blend_border_px = 0.0;          ///< b_w
+  double error_px = 0.0;                 ///< c
 
-  /// Foveal diameter F' in pixels on `display` (rho * d_u = focal_px).
+  /// Foveal diameter F' in pixels on `display` (rho * d_u = eye_distance_px).
   [[nodiscard]] double diameter_px(const Display& display) const;
   /// The same diameter as a visual angle (degrees) at the display centre.
   [[nodiscard]] double diameter_deg(const Display& display) const;

@@ -20,10 +20,10 @@ struct FilterOptions {
   Vec2d fallback_pos{0.5, 0.5};       ///< where to look after the hold (normalized)
   double fallback_fovea_scale = 2.0;  ///< how much wider the fovea is in fallback
   double deadband_deg = 0.3;          ///< moves smaller than this (outside saccades) are ignored
-  double saccade_deg_per_s = 100.0;   ///< I-VT velocity threshold
-  bool predict_landing = false;       ///< during saccades, report the predicted landing point
-  MainSequence main_sequence;         ///< for the landing prediction
-  double margin = 0.25;               ///< SampleValidator margin
+  double saccade_threshold_deg_per_s = 100.0;  ///< I-VT velocity threshold
+  bool predict_landing = false;  ///< during saccades, report the predicted landing point
+  MainSequence main_sequence;    ///< for the landing prediction
+  double margin = 0.25;          ///< SampleValidator margin
 };
 
 struct FilteredGaze {

@@ -11,10 +11,9 @@
 namespace foveate::gpu {
 
 struct ContextOptions {
-  /// Create a KHR_debug context and collect GL errors (see Context::debug_errors()).
+  /// Create a KHR_debug context and collect GL errors, including uniforms a
+  /// program lacks (see Context::take_debug_errors()).
   bool debug = false;
-  /// Throw foveate::Error at the first GL debug message of type ERROR.
-  bool throw_on_error = false;
 };
 
 struct DebugMessage {
@@ -46,7 +45,6 @@ class Context {
   static void debug_callback(unsigned source, unsigned type, unsigned id, unsigned severity,
                              int length, const char* message, const void* user);
   std::vector<DebugMessage> errors_;
-  bool throw_on_error_ = false;
 };
 
 /// Headless context; throws foveate::Error explaining what is missing when no

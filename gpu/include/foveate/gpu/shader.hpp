@@ -4,6 +4,7 @@
 // directives so that compile errors are reported against the original file
 // and line ("scenes/shaders/terrain.frag:42: error: ..."). User files (e.g. a
 // Shadertoy shader) are added by path and reported the same way.
+#include <initializer_list>
 #include <map>
 #include <span>
 #include <string>
@@ -17,9 +18,18 @@ namespace foveate::gpu {
 class Program : public Handle<detail::delete_program> {
  public:
   Program() = default;
-  explicit Program(GLuint id) : Handle(id) {}
-  /// Uniform location by name (cached; -1 when the uniform is unused).
+  explicit Program(GLuint id, std::string label = {}) : Handle(id), label_(std::move(label)) {}
+  /// Uniform location by name (cached). A name the program does not have
+  /// (misspelled, or optimised away) gives -1 and, under a debug context, a
+  /// GL debug error naming the program and the uniform: tests fail on it.
   GLint uniform(const char* name) const;
+  /// The same without the report.
+  GLint uniform_if_present(const char* name) const;
+  /// Names the program may lack without a report (inputs a user's shader may
+  /// ignore, like Shadertoy's iDate): setting them is then a silent no-op.
+  void allow_missing(std::initializer_list<const char*> names) const;
+  /// What the program is, for messages ("layered/composite.frag").
+  [[nodiscard]] const std::string& label() const { return label_; }
   void use() const { glUseProgram(id()); }
   void set(const char* name, float v) const;
   void set(const char* name, int v) const;
@@ -30,6 +40,7 @@ class Program : public Handle<detail::delete_program> {
   void set_mat3(const char* name, const float* m) const;
 
  private:
+  std::string label_;
   mutable std::map<std::string, GLint, std::less<>> locations_;
 };
 

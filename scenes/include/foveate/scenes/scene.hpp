@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "foveate/core/display.hpp"
+#include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
 
 namespace foveate {
@@ -30,7 +31,7 @@ struct FrameInput {
   int frame = 0;
   int width = 0;  ///< full output resolution
   int height = 0;
-  Vec2d mouse_px{0.0, 0.0};  ///< pixels, origin bottom-left (Shadertoy's iMouse.xy)
+  Vec2d mouse_px{0.0, 0.0};  ///< pixels, origin top-left (as every position outside GLSL)
   bool mouse_down = false;
 };
 
@@ -89,15 +90,17 @@ class Scene {
   /// the view's size and clears it; draw rasterises the geometry with the
   /// scene's automatic LOD (by distance and view.pixel_scale) when `lod` is
   /// -1 or 0, and at least as coarse as discrete level `lod` (1 about 10 %, 2
-  /// about 1 % of the triangles) otherwise; end unbinds. No-ops for
-  /// screen-space scenes.
+  /// about 1 % of the triangles) otherwise, with the depth test it needs and
+  /// the stencil state the caller set; end restores the framebuffer binding
+  /// and viewport that begin found. No-ops for screen-space scenes.
   virtual void prepass_begin(const View& view);
   virtual void prepass_draw(const View& view, int lod);
   virtual void prepass_end();
 
   /// Binds uniforms and textures of the shading function on `program` for a
-  /// pass over `view` (the same view as the last prepass).
-  virtual void bind(const gpu::Program& program, const View& view) = 0;
+  /// pass over `view` (the same view as the last prepass); textures take
+  /// their units from `samplers`, and the technique's take the next ones.
+  virtual void bind(const gpu::Program& program, const View& view, gpu::Samplers& samplers) = 0;
 
   /// Screen positions (pixels, origin top-left) of the scene's objects at the
   /// current frame, nearest first; empty when the scene has no objects.
@@ -111,9 +114,6 @@ class Scene {
   [[nodiscard]] virtual std::optional<std::array<float, 16>> view_projection() const {
     return std::nullopt;
   }
-
-  /// Texture units below this are the scene's; techniques use units from here.
-  static constexpr int kFirstTechniqueUnit = 8;
 };
 
 /// The scenes module's embedded GLSL files (shade_source() names resolve here).

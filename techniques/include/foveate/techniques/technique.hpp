@@ -1,20 +1,24 @@
 #pragma once
-// A foveation technique renders a scene (any foveate::Scene) into an output
-// framebuffer for a gaze point, shading fewer pixels than native rendering
-// where the acuity model says the eye cannot tell. Every parameter has a
-// default derived from the acuity model and the display; users override any
-// of them by key.
+// A foveation technique renders a scene (any foveate::Scene) into a render
+// target for a gaze point, shading fewer pixels than native rendering where
+// the acuity model says the eye cannot tell. Each technique declares each of
+// its parameters once (ParamDecl: key, help, unit, type, range, and a default
+// that is a constant or derived from the acuity model and the display); the
+// registry, validation, `foveate techniques` and the JSON outputs all come
+// from that declaration. Techniques written outside the tree register
+// themselves at run time with register_technique().
 #include <functional>
 #include <map>
 #include <memory>
-#include <nlohmann/json_fwd.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
 #include "foveate/core/models.hpp"
-#include "foveate/gpu/gl.hpp"
+#include "foveate/gaze/tracker.hpp"
+#include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
 
 namespace foveate {
@@ -28,12 +32,47 @@ struct TechniqueConfig {
   std::map<std::string, double> params;
 };
 
-/// The gaze for one frame, after filtering.
-struct GazeState {
-  Vec2d gaze_px{0.0, 0.0};   ///< pixels, origin top-left
-  double fovea_scale = 1.0;  ///< > 1 widens every foveal region (tracker fallback)
-  double latency_ms = 0.0;   ///< end-to-end gaze latency: regions grow by the saccade reach
-  double saccade_deg_per_s = 200.0;
+enum class ParamType { Real, Integer, Boolean };
+
+/// Parameter values in declaration order, read by type.
+class ParamValues {
+ public:
+  void set(const std::string& key, double value);
+  [[nodiscard]] bool has(std::string_view key) const;
+  /// The value; throws foveate::Error (an internal error) for an undeclared key.
+  [[nodiscard]] double real(std::string_view key) const;
+  [[nodiscard]] int integer(std::string_view key) const;
+  [[nodiscard]] bool boolean(std::string_view key) const;
+  [[nodiscard]] const std::vector<std::pair<std::string, double>>& items() const { return items_; }
+
+ private:
+  std::vector<std::pair<std::string, double>> items_;
+};
+
+/// One parameter of a technique, declared once.
+struct ParamDecl {
+  std::string key;
+  std::string help;  ///< what it means (and where its default comes from)
+  std::string unit;  ///< "deg", "px", "ms", "deg/s", or empty for a plain number
+  ParamType type = ParamType::Real;
+  double min = 0.0;
+  double max = 1.0;
+  double value = 0.0;  ///< the default when `derive` is not set
+  /// A default derived from the configuration (acuity model, display) and the
+  /// parameters declared before this one; clamped into [min, max].
+  std::function<double(const TechniqueConfig&, const ParamValues& earlier)> derive;
+};
+
+/// A parameter whose default is the constant `value`.
+inline ParamDecl param(std::string key, std::string help, std::string unit, ParamType type,
+                       double min, double max, double value) {
+  return {std::move(key), std::move(help), std::move(unit), type, min, max, value, {}};
+}
+
+/// What a technique needs from a scene.
+struct SceneNeeds {
+  bool meshes = false;     ///< rasterised geometry with a G-buffer prepass
+  bool mesh_lods = false;  ///< discrete LODs selectable per draw
 };
 
 struct PixelPart {
@@ -59,46 +98,64 @@ struct OverlayShape {
 class Technique {
  public:
   virtual ~Technique() = default;
-  [[nodiscard]] virtual std::string name() const = 0;
-  /// The parameter values in use (defaults derived from the acuity model, then overrides).
-  [[nodiscard]] virtual std::vector<std::pair<std::string, double>> parameters() const = 0;
-  /// Renders one frame of `scene` into `target` (a framebuffer whose colour is
-  /// display-sized RGBA8). Call scene.update(frame) first.
+  /// The registered name (set by make_technique).
+  [[nodiscard]] const std::string& name() const { return name_; }
+  /// The resolved parameter values (declared defaults and overrides).
+  [[nodiscard]] const ParamValues& values() const { return values_; }
+  /// The values in use, then figures derived from them (layer radii, buffer
+  /// sizes) for reports.
+  [[nodiscard]] std::vector<std::pair<std::string, double>> parameters() const;
+  /// Renders one frame of `scene` into `target` (display-sized; the
+  /// technique binds it and sets its own state for every pass). Call
+  /// scene.update(frame) first (foveate::Renderer does both).
   virtual FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
-                            GLuint target) = 0;
+                            const gpu::RenderTarget& target) = 0;
   /// Layer or region borders for the overlay at this gaze.
   [[nodiscard]] virtual std::vector<OverlayShape> overlay(const GazeState& gaze) const = 0;
   /// Forget temporal history (e.g. after a camera cut).
   virtual void reset() {}
-};
 
-struct ParamSpec {
-  std::string key;
-  std::string help;  ///< meaning and unit
-  double min = 0.0;
-  double max = 0.0;
-  bool integer = false;
+ protected:
+  /// Figures derived from the parameters, appended to parameters().
+  [[nodiscard]] virtual std::vector<std::pair<std::string, double>> derived() const { return {}; }
+
+ private:
+  friend std::unique_ptr<Technique> make_technique(const std::string& name,
+                                                   const TechniqueConfig& config);
+  std::string name_;
+  ParamValues values_;
 };
 
 struct TechniqueInfo {
   std::string name;
   std::string summary;
   std::string source;  ///< the paper it implements
-  std::vector<ParamSpec> params;
-  std::function<std::unique_ptr<Technique>(const TechniqueConfig&)> make;
-  /// The parameter values `make` would use (derived defaults + overrides), without GL.
-  std::function<std::vector<std::pair<std::string, double>>(const TechniqueConfig&)> defaults;
+  std::vector<ParamDecl> params;
+  SceneNeeds needs;
+  /// Checks between parameters after overrides (throws foveate::Error); optional.
+  std::function<void(const ParamValues&)> check;
+  /// Creates the technique from its configuration and resolved parameters.
+  std::function<std::unique_ptr<Technique>(const TechniqueConfig&, const ParamValues&)> make;
 };
 
-/// All techniques, in a stable order: native, layered, logpolar, checkerboard, lodmask, inset.
+/// All techniques: the built-in ones (native, layered, logpolar, checkerboard,
+/// lodmask, inset) in that order, then those registered at run time.
 const std::vector<TechniqueInfo>& techniques();
+/// Adds a technique; throws foveate::Error when the name is taken or empty,
+/// or a parameter declaration is inconsistent (range, default, duplicate key).
+void register_technique(TechniqueInfo info);
 const TechniqueInfo& technique_info(const std::string& name);
-/// Creates a technique; throws foveate::Error for an unknown name, an unknown
-/// parameter key or a value out of range (naming both). Needs a current GL context.
+/// Every parameter's value for `config`: declared defaults (derived ones
+/// clamped into range), then config.params. Throws foveate::Error naming the
+/// technique and the key for an unknown key, a value out of range or a
+/// fraction where a whole number or 0/1 is declared.
+ParamValues resolve_parameters(const TechniqueInfo& info, const TechniqueConfig& config);
+/// Creates a technique (resolve_parameters, then make). Needs a current GL context.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueConfig& config);
-/// Default values for a configuration (without creating GL objects).
-std::vector<std::pair<std::string, double>> default_parameters(const std::string& name,
-                                                               const TechniqueConfig& config);
+/// Why `scene` cannot be rendered by the technique, or empty when it can.
+std::string scene_mismatch(const TechniqueInfo& info, const SceneInfo& scene);
+/// Throws foveate::Error with scene_mismatch's reason.
+void check_scene(const TechniqueInfo& info, const SceneInfo& scene);
 
 /// Draws overlay shapes over a display-sized framebuffer. Owns GL objects:
 /// create and destroy it while the context is current.
@@ -106,7 +163,7 @@ class OverlayRenderer {
  public:
   OverlayRenderer();
   ~OverlayRenderer();
-  void draw(const std::vector<OverlayShape>& shapes, int width, int height, GLuint target);
+  void draw(const std::vector<OverlayShape>& shapes, const gpu::RenderTarget& target);
 
  private:
   struct Impl;

@@ -1,0 +1,64 @@
+#pragma once
+// The gaze tracker: a gaze source, the filter and the latency estimate, giving
+// per frame the GazeState that every technique follows. This is the one place
+// where samples become the gaze a frame is rendered for; the app, the tests and
+// programs outside the tree all go through it.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "foveate/core/display.hpp"
+#include "foveate/gaze/filter.hpp"
+#include "foveate/gaze/gaze.hpp"
+#include "foveate/gaze/latency.hpp"
+
+namespace foveate {
+
+/// The gaze for one frame, after filtering: what a technique foveates around.
+struct GazeState {
+  Vec2d gaze_px{0.0, 0.0};   ///< pixels, origin top-left
+  double fovea_scale = 1.0;  ///< > 1 widens every foveal region (tracker fallback)
+  double latency_ms = 0.0;   ///< end-to-end gaze latency: regions grow by the saccade reach
+  double max_saccade_deg_per_s = 200.0;  ///< the fastest the eye moves (S_max of Swafford eq. 1)
+};
+
+namespace gaze {
+
+struct TrackerOptions {
+  FilterOptions filter;
+  LatencyOptions latency;
+  double max_saccade_deg_per_s = 200.0;  ///< copied into every GazeState
+};
+
+class GazeTracker {
+ public:
+  /// `display` is the render display: its size in pixels turns normalized
+  /// gaze into pixels and its geometry turns motion into degrees.
+  GazeTracker(std::unique_ptr<GazeSource> source, const Display& display,
+              TrackerOptions options = {});
+  /// A source from a spec (see make_gaze_source); empty = the screen centre.
+  GazeTracker(const std::string& spec, const GazeContext& context, TrackerOptions options = {});
+  ~GazeTracker();
+  GazeTracker(GazeTracker&&) noexcept;
+  GazeTracker& operator=(GazeTracker&&) noexcept;
+
+  /// The filtered gaze for the frame rendered at `time_s` (render clock), with
+  /// the estimated latency of the samples behind it. Frames are taken to be
+  /// shown at `shown_s` (default: their render time). Call once per frame.
+  GazeState at(double time_s, std::optional<double> shown_s = std::nullopt);
+  /// The filter's output for the last frame (holding, fallback, saccade).
+  [[nodiscard]] const FilteredGaze& last() const;
+  [[nodiscard]] const GazeSource& source() const;
+  [[nodiscard]] const GazeFilter& filter() const;
+  [[nodiscard]] const LatencyEstimator& latency() const;
+  [[nodiscard]] std::string describe() const;
+  /// What the source and the filter did: dropped samples, holds, fallbacks, latency.
+  [[nodiscard]] std::string report() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gaze
+}  // namespace foveate

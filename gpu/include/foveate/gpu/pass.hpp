@@ -1,0 +1,93 @@
+#pragma once
+// Explicit per-pass GL state. A pass names where it draws (a RenderTarget,
+// which carries its framebuffer and viewport), the fixed-function state it
+// needs (a PassState: zero means off, and everything it does not name is set
+// to off), and the textures it samples (Samplers: units handed out in order,
+// so a scene's textures and a technique's never collide). Nothing a pass sets
+// leaks into the next one.
+#include <vector>
+
+#include "foveate/gpu/gl.hpp"
+
+namespace foveate::gpu {
+
+class Program;
+
+/// Where a pass draws: a framebuffer and the viewport that covers it.
+/// Either owns its attachments (create) or refers to a framebuffer someone
+/// else owns (wrap: a user's target, the window's framebuffer 0).
+class RenderTarget {
+ public:
+  RenderTarget() = default;
+  /// A colour texture of `format` (and a depth-stencil renderbuffer when asked).
+  static RenderTarget create(int width, int height, GLenum format = GL_RGBA8,
+                             bool depth_stencil = false);
+  /// A framebuffer owned elsewhere, `width` x `height` pixels.
+  static RenderTarget wrap(GLuint framebuffer, int width, int height);
+  /// Recreates the attachments when the size, format or depth-stencil changes.
+  void ensure(int width, int height, GLenum format = GL_RGBA8, bool depth_stencil = false);
+  /// Binds the framebuffer and sets the viewport to the whole target.
+  void bind() const;
+  /// Clears colour to `rgba`, and depth to 1 and stencil to 0 where the
+  /// target has them. Write masks are opened first (GL clears honour them).
+  void clear(float r, float g, float b, float a) const;
+  [[nodiscard]] GLuint framebuffer() const { return owned_ ? fbo_.id() : wrapped_; }
+  [[nodiscard]] int width() const { return width_; }
+  [[nodiscard]] int height() const { return height_; }
+  /// The colour texture (owning targets only).
+  [[nodiscard]] const Texture& color() const { return color_; }
+  [[nodiscard]] bool has_depth_stencil() const { return static_cast<bool>(depth_stencil_); }
+  explicit operator bool() const { return framebuffer() != 0 || (width_ > 0 && !owned_); }
+
+ private:
+  bool owned_ = false;
+  GLuint wrapped_ = 0;
+  int width_ = 0, height_ = 0;
+  Texture color_;
+  Renderbuffer depth_stencil_;
+  Framebuffer fbo_;
+};
+
+/// Fixed-function state of one pass. Zero (the default) means off: a
+/// default PassState draws colour with no depth, stencil or blending.
+struct PassState {
+  GLenum depth_func = 0;  ///< 0 = no depth test; otherwise GL_LESS, GL_ALWAYS, ...
+  bool depth_write = false;
+  GLenum stencil_func = 0;  ///< 0 = no stencil test; otherwise GL_EQUAL, GL_ALWAYS, ...
+  GLint stencil_ref = 0;
+  GLenum stencil_pass_op = 0;  ///< on depth pass: 0 = keep, GL_REPLACE, GL_INCR, ...
+  bool stencil_write = false;  ///< stencil write mask 0xFF instead of 0
+  bool alpha_blend = false;    ///< src alpha, one minus src alpha
+  bool color_off = false;      ///< colour writes off (depth/stencil-only passes)
+};
+
+/// Sets every piece of state PassState names, on or off.
+void apply(const PassState& state);
+/// Opens every write mask (colour, depth, stencil) so that clears reach
+/// everything; the next apply() sets them as its pass needs.
+void open_write_masks();
+
+/// Texture units for one pass, handed out in order from unit 0.
+class Samplers {
+ public:
+  /// Binds `texture` to the next unit and points sampler uniform `name` at it.
+  void bind(const Program& program, const char* name, const Texture& texture);
+  /// Binds a raw texture name (e.g. a scene's own) the same way.
+  void bind(const Program& program, const char* name, GLuint texture);
+  [[nodiscard]] int used() const { return next_; }
+
+ private:
+  int next_ = 0;
+};
+
+/// A framebuffer binding and viewport, captured and restored: for code that
+/// draws somewhere of its own in the middle of someone else's work (a scene's
+/// geometry prepass restores what it found).
+struct FramebufferBinding {
+  GLint framebuffer = 0;
+  GLint viewport[4] = {};
+  static FramebufferBinding current();
+  void restore() const;
+};
+
+}  // namespace foveate::gpu

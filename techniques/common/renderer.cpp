@@ -1,0 +1,80 @@
+#include "foveate/techniques/renderer.hpp"
+
+#include <string>
+
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/frame.hpp"
+
+namespace foveate {
+
+namespace {
+
+gpu::RenderTarget make_output(const RendererOptions& o) {
+  if (o.width < 1 || o.height < 1) {
+    throw Error("renderer: output size " + std::to_string(o.width) + "x" +
+                std::to_string(o.height) + " is empty");
+  }
+  GLint max = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  if (o.width > max || o.height > max) {
+    throw Error("output size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                ": larger than this GL's maximum texture size " + std::to_string(max));
+  }
+  return gpu::RenderTarget::create(o.width, o.height);
+}
+
+}  // namespace
+
+Renderer::Renderer(Scene& scene, const RendererOptions& options)
+    : Renderer(scene, options, make_output(options)) {}
+
+Renderer::Renderer(Scene& scene, const RendererOptions& options, gpu::RenderTarget target)
+    : scene_(scene), options_(options), target_(std::move(target)) {
+  if (target_.width() != options_.width || target_.height() != options_.height) {
+    throw Error("renderer: the target is " + std::to_string(target_.width()) + "x" +
+                std::to_string(target_.height()) + " but the output size is " +
+                std::to_string(options_.width) + "x" + std::to_string(options_.height));
+  }
+  if (!(options_.fps > 0.0)) throw Error("renderer: the frame rate must be positive");
+}
+
+Renderer::~Renderer() = default;
+
+FrameInput Renderer::frame_input(int frame) const {
+  FrameInput f;
+  f.frame = frame;
+  f.delta_s = 1.0 / options_.fps;
+  f.time_s = options_.start_time_s + frame / options_.fps;
+  f.width = options_.width;
+  f.height = options_.height;
+  f.mouse_px = options_.mouse_px;
+  f.mouse_down = options_.mouse_down;
+  return f;
+}
+
+FrameStats Renderer::render(Technique& technique, int frame, const GazeState& gaze) {
+  return render(technique, frame_input(frame), gaze);
+}
+
+FrameStats Renderer::render(Technique& technique, const FrameInput& input, const GazeState& gaze) {
+  if (input.width != target_.width() || input.height != target_.height()) {
+    throw Error("renderer: frame input is " + std::to_string(input.width) + "x" +
+                std::to_string(input.height) + " but the target is " +
+                std::to_string(target_.width()) + "x" + std::to_string(target_.height()));
+  }
+  check_scene(technique_info(technique.name()), scene_.info());
+  scene_.update(input);
+  FrameStats s = technique.render(scene_, input, gaze, target_);
+  if (options_.overlay) {
+    if (!overlay_) overlay_ = std::make_unique<OverlayRenderer>();
+    overlay_->draw(technique.overlay(gaze), target_);
+  }
+  return s;
+}
+
+Image Renderer::read_output() const {
+  if (target_.color()) return gpu::read_texture(target_.color());
+  return gpu::read_framebuffer(target_.framebuffer(), target_.width(), target_.height());
+}
+
+}  // namespace foveate
