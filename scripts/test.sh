@@ -19,7 +19,7 @@ cmake --build build/consumer >/dev/null
 ./build/consumer/consumer
 cmake -S examples/own_renderer -B build/own_renderer -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build build/own_renderer >/dev/null
-(cd build/own_renderer && ./own_renderer layered own_renderer.png)
+(cd build/own_renderer && ./own_renderer layered own_renderer.png && ./own_renderer letterbox letterbox.png)
 echo "installed package: consumer and own_renderer built with find_package(foveate) and ran"
 
 ctest --preset debug -j "$jobs"

@@ -1,14 +1,18 @@
 // A user's own renderer, foveated. The scene below knows nothing of
 // foveation: it says how to shade a screen position (GLSL) and binds its
 // uniforms. Any technique then decides which positions get shaded, at what
-// rate. Run: ./own_renderer [technique] [out.png]
+// rate; foveate::Renderer runs the frames and gaze::GazeTracker turns a gaze
+// source into the gaze each frame follows. The program also registers a
+// technique of its own at run time ("letterbox"), which then runs like the
+// built-in ones. Run: ./own_renderer [technique] [out.png]
 #include <cstdio>
 #include <string>
 
+#include "foveate/core/error.hpp"
 #include "foveate/core/image.hpp"
+#include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
-#include "foveate/gpu/frame.hpp"
-#include "foveate/techniques/technique.hpp"
+#include "foveate/techniques/renderer.hpp"
 
 namespace {
 
@@ -31,7 +35,8 @@ vec4 scene_shade(vec2 p) {
 })"}};
   }
   void update(const foveate::FrameInput& f) override { frame_ = f; }
-  void bind(const foveate::gpu::Program& p, const foveate::View&) override {
+  void bind(const foveate::gpu::Program& p, const foveate::View&,
+            foveate::gpu::Samplers&) override {
     p.set("u_size", float(frame_.width), float(frame_.height));
     p.set("u_time", float(frame_.time_s));
   }
@@ -40,12 +45,63 @@ vec4 scene_shade(vec2 p) {
   foveate::FrameInput frame_;
 };
 
+// A technique of the program's own: layered, with black bars over the top
+// and bottom rows.
+class Letterbox final : public foveate::Technique {
+ public:
+  Letterbox(const foveate::TechniqueConfig& c, const foveate::ParamValues& v)
+      : bar_px_(v.integer("bar_px")) {
+    foveate::TechniqueConfig inner = c;
+    inner.params.clear();
+    inner_ = foveate::make_technique("layered", inner);
+  }
+  foveate::FrameStats render(foveate::Scene& scene, const foveate::FrameInput& frame,
+                             const foveate::GazeState& gaze,
+                             const foveate::gpu::RenderTarget& target) override {
+    foveate::FrameStats s = inner_->render(scene, frame, gaze, target);
+    const float black[4] = {0, 0, 0, 1};
+    foveate::gpu::open_write_masks();
+    glEnable(GL_SCISSOR_TEST);
+    for (int y : {0, target.height() - bar_px_}) {
+      glScissor(0, y, target.width(), bar_px_);
+      glClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, black);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    return s;
+  }
+  std::vector<foveate::OverlayShape> overlay(const foveate::GazeState& g) const override {
+    return inner_->overlay(g);
+  }
+
+ private:
+  int bar_px_;
+  std::unique_ptr<foveate::Technique> inner_;
+};
+
+void register_letterbox() {
+  foveate::TechniqueInfo t;
+  t.name = "letterbox";
+  t.summary = "layered with cinema bars (an example of a technique registered at run time)";
+  t.source = "examples/own_renderer";
+  // Declared once: key, help, unit, type, range, and a default derived from
+  // the display (an eighth of the height).
+  t.params = {{"bar_px", "height of each bar", "px", foveate::ParamType::Integer, 0, 1000, 0,
+               [](const foveate::TechniqueConfig& c, const foveate::ParamValues&) {
+                 return c.display.height_px / 8.0;
+               }}};
+  t.make = [](const foveate::TechniqueConfig& c, const foveate::ParamValues& v) {
+    return std::make_unique<Letterbox>(c, v);
+  };
+  foveate::register_technique(std::move(t));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string technique = argc > 1 ? argv[1] : "layered";
   const std::string out = argc > 2 ? argv[2] : "own_renderer.png";
   try {
+    register_letterbox();
     auto context = foveate::gpu::create_headless_context();
     const int w = 640, h = 360;
     foveate::TechniqueConfig config;
@@ -53,19 +109,24 @@ int main(int argc, char** argv) {
     config.acuity = foveate::AcuityModel::quality("A");
     auto t = foveate::make_technique(technique, config);
 
-    auto color = foveate::gpu::Texture::create_2d(GL_RGBA8, w, h);
-    auto fbo = foveate::gpu::Framebuffer::create();
-    fbo.attach(GL_COLOR_ATTACHMENT0, color);
-
     RingsScene scene;
-    foveate::FrameInput frame;
-    frame.width = w;
-    frame.height = h;
-    frame.time_s = 1.0;
-    scene.update(frame);
-    const foveate::FrameStats stats =
-        t->render(scene, frame, foveate::GazeState{{200, 150}}, fbo.id());
-    foveate::write_png(out, foveate::gpu::read_texture(color));
+    foveate::RendererOptions options;
+    options.width = w;
+    options.height = h;
+    options.start_time_s = 1.0;
+    foveate::Renderer renderer(scene, options);
+    // The gaze: a fixed point here; "trace:FILE", "synthetic:7" or
+    // "pupil" work the same way.
+    foveate::gaze::GazeContext gc;
+    gc.display = config.display;
+    foveate::gaze::GazeTracker tracker("200,150", gc);
+
+    foveate::FrameStats stats;
+    for (int frame = 0; frame < 3; ++frame) {
+      const foveate::GazeState gaze = tracker.at(renderer.frame_input(frame).time_s);
+      stats = renderer.render(*t, frame, gaze);
+    }
+    foveate::write_png(out, renderer.read_output());
     std::printf("%s: shaded %.0f of %.0f pixels (%.1f %%), wrote %s\n", technique.c_str(),
                 stats.shaded_pixels, stats.native_pixels,
                 100.0 * stats.shaded_pixels / stats.native_pixels, out.c_str());

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "bars_technique.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/techniques/renderer.hpp"
@@ -18,6 +19,8 @@ namespace {
 
 const std::string kGolden = FOVEATE_GOLDEN_DIR;
 const std::string kData = FOVEATE_TEST_DATA;
+// A technique registered at run time goes through the same golden loop.
+const bool kBarsRegistered = (test::register_bars_technique(), true);
 
 class Golden : public test::GlTest {
  protected:
