@@ -148,7 +148,7 @@ BenchResult run_bench(const BenchOptions& o) {
     AcuityModel acuity;
     std::unique_ptr<Technique> impl;
     TechniqueResult result;
-    std::unique_ptr<metrics::QualitySeries> quality;
+    std::unique_ptr<metrics::QualitySeries> series;
   };
   std::vector<Run> runs;
   auto add_run = [&](const std::string& t, double value, bool swept) {
@@ -166,10 +166,10 @@ BenchResult run_bench(const BenchOptions& o) {
     r.result.technique = t;
     r.result.sweep_value = value;
     r.result.parameters = r.impl->parameters();
-    if (o.quality) {
+    if (o.image_metrics) {
       metrics::QualityOptions qo;
       qo.acuity = r.acuity;
-      r.quality = std::make_unique<metrics::QualitySeries>(session.display(), qo);
+      r.series = std::make_unique<metrics::QualitySeries>(session.display(), qo);
     }
     runs.push_back(std::move(r));
   };
@@ -221,7 +221,7 @@ BenchResult run_bench(const BenchOptions& o) {
       else
         for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p)
           r.result.parts[p].pixels += s.parts[p].pixels;
-      if (o.quality || k + 1 == o.frames) {
+      if (o.image_metrics || k + 1 == o.frames) {
         Image img = renderer.read_output();
         if (&r == &runs[0]) native_image = img;
         images.emplace_back(static_cast<size_t>(&r - &runs[0]), std::move(img));
@@ -230,12 +230,12 @@ BenchResult run_bench(const BenchOptions& o) {
     }
     for (auto& [idx, img] : images) {
       Run& r = runs[idx];
-      if (o.quality && idx != 0) r.quality->add(native_image, img, g.gaze_px);
+      if (o.image_metrics && idx != 0) r.series->add(native_image, img, g.gaze_px);
       if (k + 1 == o.frames) {
-        if (o.quality && idx != 0) {
+        if (o.image_metrics && idx != 0) {
           r.result.heatmap = metrics::error_heatmap(native_image, img, 64.0);
           r.result.acuity_heatmap = metrics::acuity_error_heatmap(
-              native_image, img, r.quality->display(), g.gaze_px, r.quality->options());
+              native_image, img, r.series->display(), g.gaze_px, r.series->options());
         }
         r.result.sample = std::move(img);
         out.sample_gaze_px = g.gaze_px;
@@ -264,7 +264,7 @@ BenchResult run_bench(const BenchOptions& o) {
     for (PixelPart& p : res.parts) p.pixels /= o.frames;
     res.pixel_ratio = res.shaded_pixels / res.native_pixels;
     res.bound_share = res.speedup * res.pixel_ratio;
-    if (r.quality && r.quality->frames() > 0) res.quality = r.quality->summary();
+    if (r.series && r.series->frames() > 0) res.metrics = r.series->summary();
     out.results.push_back(std::move(res));
   }
   return out;

@@ -33,8 +33,8 @@ struct BenchOptions {
   std::string gaze;  ///< gaze spec (see --gaze)
   int frames = 10;
   int warmup = 2;
-  bool quality = true;
-  std::string out;  ///< output directory
+  bool image_metrics = true;  ///< compare every frame with native (PSNR, SSIM, acuity error, ...)
+  std::string out;            ///< output directory
   bool progress = true;
   Sweep sweep;
   std::string command_line;
@@ -53,8 +53,8 @@ struct TechniqueResult {
   double pixel_ratio = 1;        ///< shaded / native
   double bound_share = 1;        ///< speedup / (native / shaded)
   /// Quality against native over the measured frames; empty for native itself
-  /// and with --no-quality.
-  std::optional<metrics::QualitySummary> quality;
+  /// and with --no-metrics.
+  std::optional<metrics::QualitySummary> metrics;
   Image sample;  ///< last frame, for the report
   Image heatmap;
   Image acuity_heatmap;

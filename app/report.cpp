@@ -9,6 +9,7 @@
 #include "bench.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/core/stats.hpp"
 #include "svg_plot.hpp"
 
 namespace foveate::app {
@@ -32,9 +33,9 @@ constexpr QualityColumn kQualityColumns[] = {
      [](const metrics::QualitySummary& q) { return q.flicker.ratio; }},
 };
 
-/// A quality figure, or NaN where not measured (native itself, --no-quality).
+/// A quality figure, or NaN where not measured (native itself, --no-metrics).
 double quality_value(const TechniqueResult& r, double (*get)(const metrics::QualitySummary&)) {
-  return r.quality ? get(*r.quality) : std::nan("");
+  return r.metrics ? get(*r.metrics) : std::nan("");
 }
 double quality_value(const TechniqueResult& r, const QualityColumn& c) {
   return quality_value(r, c.get);
@@ -42,9 +43,9 @@ double quality_value(const TechniqueResult& r, const QualityColumn& c) {
 double mean_ssim(const metrics::QualitySummary& q) { return q.mean.ssim; }
 double mean_acuity_rmse(const metrics::QualitySummary& q) { return q.mean.acuity_rmse; }
 
-// `{}` where quality was not measured (native itself, --no-quality).
+// `{}` where quality was not measured (native itself, --no-metrics).
 nlohmann::json quality_json(const TechniqueResult& r) {
-  return r.quality ? metrics::to_json(*r.quality) : nlohmann::json::object();
+  return r.metrics ? metrics::to_json(*r.metrics) : nlohmann::json::object();
 }
 
 std::string quality_cell(const TechniqueResult& r, const QualityColumn& c) {
@@ -83,11 +84,7 @@ nlohmann::json to_json(const BenchResult& b) {
     if (!b.options.sweep.key.empty()) j["sweep_value"] = r.sweep_value;
     // GPU timer queries only where the renderer reports meaningful ones.
     j["gpu_median_ms"] = nullptr;
-    if (!r.gpu_ms.empty()) {
-      std::vector<double> g = r.gpu_ms;
-      std::sort(g.begin(), g.end());
-      j["gpu_median_ms"] = g[g.size() / 2];
-    }
+    if (!r.gpu_ms.empty()) j["gpu_median_ms"] = quantile(r.gpu_ms, 0.5);
     results.push_back(j);
   }
   nlohmann::json sweep = nullptr;
@@ -262,7 +259,7 @@ std::string html(const BenchResult& b) {
     << bar_chart(names, speed, bound, "measured speedup", "pixel bound (native / shaded pixels)",
                  "Speedup over native")
     << "</div>\n<h2>Quality</h2>\n";
-  if (b.options.quality) {
+  if (b.options.image_metrics) {
     h << "<div class=chart id=\"chart-quality\">"
       << bar_chart(qnames, ssim, {}, "SSIM against native (1 = identical)", "", "Image similarity")
       << "</div>\n"
@@ -271,7 +268,7 @@ std::string html(const BenchResult& b) {
                    "", "Error the eye can resolve")
       << "</div>\n";
   } else {
-    h << "<p class=note>Not measured (--no-quality).</p>\n";
+    h << "<p class=note>Not measured (--no-metrics).</p>\n";
   }
   if (!b.options.sweep.key.empty()) {
     std::map<std::string, Series> speed_series, quality_series;

@@ -143,7 +143,7 @@ void validate(const Scene& scene) {
 
 std::vector<Image> load_channels(const std::string& shader_path, const SceneOptions& o) {
   std::vector<std::string> files = o.channels;
-  if (files.size() > 4) throw Error("--channel: at most 4 channels (iChannel0..3)");
+  if (files.size() > 4) throw Error("at most 4 channel images (iChannel0..3), got " + std::to_string(files.size()));
   // A JSON file beside the shader: NAME.json with {"iChannel0": "file.png", ...}.
   if (!shader_path.empty() && files.empty()) {
     fs::path side = fs::path(shader_path).replace_extension(".json");

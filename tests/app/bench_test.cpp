@@ -51,11 +51,11 @@ TEST(Bench, ARunTimeTechniqueIsBenchmarkedBesideNative) {
   EXPECT_EQ(bars.parameters, (std::vector<std::pair<std::string, double>>{{"bar_px", 1.0}}));
   EXPECT_EQ(bars.frame_ms.size(), 2u);
   EXPECT_EQ(bars.shaded_pixels, 64.0 * 36.0);
-  ASSERT_TRUE(bars.quality.has_value());
-  EXPECT_EQ(bars.quality->frames, 2);
+  ASSERT_TRUE(bars.metrics.has_value());
+  EXPECT_EQ(bars.metrics->frames, 2);
   // Two black rows of 64 differ from native; the rest is identical.
-  EXPECT_LT(bars.quality->mean.psnr_db, 40.0);
-  EXPECT_FALSE(r.results[0].quality.has_value());  // native is the reference
+  EXPECT_LT(bars.metrics->mean.psnr_db, 40.0);
+  EXPECT_FALSE(r.results[0].metrics.has_value());  // native is the reference
   write_bench_outputs(r);
   std::ifstream in(out + "/results.json");
   const nlohmann::json j = nlohmann::json::parse(in);
@@ -90,7 +90,7 @@ TEST(Bench, SweptRunsOnlyForTechniquesWithTheKey) {
   BenchOptions o = tiny("");
   o.frames = 1;
   o.warmup = 0;
-  o.quality = false;
+  o.image_metrics = false;
   o.techniques = {"native", test::kBarsTechnique, "inset"};
   o.sweep = Sweep::parse("bar_px=0:2:2");
   const BenchResult r = run_bench(o);

@@ -60,7 +60,7 @@ expect_error "lodmask on a shader scene" "has no meshes" render --scene cheap --
 expect_error "bad camera path" "channels.json" render --scene cheap --size 32x32 --camera-path "$data/channels.json" --out "$tmp/x"
 check "no partial files left" '[[ -z "$(find "$tmp" -name "*.tmp-*")" ]]'
 
-"$FOVEATE" bench --scene cheap --size 96x54 --frames 3 --warmup 1 --no-quality --quiet --out "$tmp/b" > "$tmp/bench.txt"
+"$FOVEATE" bench --scene cheap --size 96x54 --frames 3 --warmup 1 --no-metrics --quiet --out "$tmp/b" > "$tmp/bench.txt"
 check "bench writes json, csv, md, html" '[[ -s "$tmp/b/results.json" && -s "$tmp/b/results.csv" && -s "$tmp/b/results.md" && -s "$tmp/b/report.html" ]]'
 check "bench json has the documented fields" 'python3 -c "
 import json,sys
@@ -74,7 +74,7 @@ for r in j[\"results\"]:
   assert r[\"speedup_ci95\"][0] <= r[\"speedup\"] <= r[\"speedup_ci95\"][1] + 1e-9
 assert j[\"results\"][0][\"speedup\"]==1.0
 " "$tmp/b/results.json"'
-"$FOVEATE" bench --scene cheap --size 96x54 --frames 2 --warmup 0 --no-quality --quiet --techniques layered --sweep slope=0.02:0.04:0.01 --out "$tmp/sw" > /dev/null
+"$FOVEATE" bench --scene cheap --size 96x54 --frames 2 --warmup 0 --no-metrics --quiet --techniques layered --sweep slope=0.02:0.04:0.01 --out "$tmp/sw" > /dev/null
 check "sweep runs each value" 'python3 -c "
 import json,sys
 j=json.load(open(sys.argv[1]))

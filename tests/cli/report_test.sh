@@ -6,8 +6,8 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [[ -z "$browser" ]]; then echo "FAIL: chromium is missing (scripts/setup.sh installs it)"; exit 1; fi
 "$FOVEATE" bench --scene cheap --size 96x54 --frames 2 --warmup 1 --quiet --out "$tmp/b" > /dev/null 2> "$tmp/err.txt" || {
-  # Without the metrics module the report is still produced with --no-quality.
-  "$FOVEATE" bench --scene cheap --size 96x54 --frames 2 --warmup 1 --quiet --no-quality --out "$tmp/b" > /dev/null || exit 1
+  # Without the metrics module the report is still produced with --no-metrics.
+  "$FOVEATE" bench --scene cheap --size 96x54 --frames 2 --warmup 1 --quiet --no-metrics --out "$tmp/b" > /dev/null || exit 1
 }
 timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
   --disable-background-networking --disable-component-update --disable-sync --user-data-dir="$tmp/profile" \

@@ -2,6 +2,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
 #include "foveate_embedded/gpu_test_shaders.hpp"
 #include "gl_fixture.hpp"
@@ -82,4 +83,91 @@ TEST_F(Gpu, DebugContextReportsErrors) {
   glEnable(0x1234);  // GL_INVALID_ENUM
   const auto errors = context().take_debug_errors();
   ASSERT_FALSE(errors.empty());
+}
+
+TEST_F(Gpu, AMisspelledUniformIsReportedUnderTheDebugContext) {
+  gpu::ShaderCompiler c({embedded::gpu_test_shaders()});
+  gpu::Program p = c.build("fullscreen.vert", "uses_include.frag");
+  p.set("u_no_such_uniform", 1.0f);
+  auto errors = context().take_debug_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].text.find("has no active uniform 'u_no_such_uniform'"), std::string::npos)
+      << errors[0].text;
+  EXPECT_NE(errors[0].text.find("uses_include.frag"), std::string::npos) << errors[0].text;
+  // Reported once per name, and not at all for names declared optional.
+  p.set("u_no_such_uniform", 2.0f);
+  p.allow_missing({"u_optional"});
+  p.set("u_optional", 1.0f);
+  EXPECT_TRUE(context().take_debug_errors().empty());
+}
+
+TEST_F(Gpu, PassStateSetsEverythingItNames) {
+  // (the stencil reference reads back clamped to the bound buffer's bits)
+  gpu::RenderTarget t = gpu::RenderTarget::create(4, 4, GL_RGBA8, true);
+  t.bind();
+  gpu::PassState s;
+  s.depth_func = GL_LESS;
+  s.depth_write = true;
+  s.stencil_func = GL_EQUAL;
+  s.stencil_ref = 3;
+  s.stencil_pass_op = GL_REPLACE;
+  s.stencil_write = true;
+  s.alpha_blend = true;
+  s.color_off = true;
+  gpu::apply(s);
+  GLint v = 0;
+  GLboolean mask[4] = {};
+  EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
+  EXPECT_TRUE(glIsEnabled(GL_STENCIL_TEST));
+  EXPECT_TRUE(glIsEnabled(GL_BLEND));
+  glGetIntegerv(GL_STENCIL_REF, &v);
+  EXPECT_EQ(v, 3);
+  glGetIntegerv(GL_STENCIL_PASS_DEPTH_PASS, &v);
+  EXPECT_EQ(v, GL_REPLACE);
+  glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+  EXPECT_FALSE(mask[0]);
+  // The default state turns every one of them off again: nothing leaks.
+  gpu::apply({});
+  EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST));
+  EXPECT_FALSE(glIsEnabled(GL_STENCIL_TEST));
+  EXPECT_FALSE(glIsEnabled(GL_BLEND));
+  glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+  EXPECT_TRUE(mask[0] && mask[1] && mask[2] && mask[3]);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, mask);
+  EXPECT_FALSE(mask[0]);
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &v);
+  EXPECT_EQ(v, 0);
+}
+
+TEST_F(Gpu, RenderTargetsOwnTheirViewportAndClearThroughMasks) {
+  gpu::RenderTarget a = gpu::RenderTarget::create(8, 4, GL_RGBA8, true);
+  gpu::RenderTarget b = gpu::RenderTarget::create(3, 5);
+  b.bind();
+  a.bind();
+  GLint vp[4] = {}, fb = 0;
+  glGetIntegerv(GL_VIEWPORT, vp);
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fb);
+  EXPECT_EQ(vp[2], 8);
+  EXPECT_EQ(vp[3], 4);
+  EXPECT_EQ(static_cast<GLuint>(fb), a.framebuffer());
+  // A clear reaches the target even after a pass that closed colour writes.
+  gpu::PassState closed;
+  closed.color_off = true;
+  gpu::apply(closed);
+  a.clear(1, 0, 0, 1);
+  EXPECT_EQ(gpu::read_texture(a.color()).at(7, 3)[0], 255);
+  // A wrapped framebuffer is bound with its own size.
+  gpu::RenderTarget w = gpu::RenderTarget::wrap(b.framebuffer(), 3, 5);
+  w.bind();
+  glGetIntegerv(GL_VIEWPORT, vp);
+  EXPECT_EQ(vp[2], 3);
+  EXPECT_EQ(vp[3], 5);
+  // What a prepass captures it restores.
+  const gpu::FramebufferBinding saved = gpu::FramebufferBinding::current();
+  a.bind();
+  saved.restore();
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fb);
+  glGetIntegerv(GL_VIEWPORT, vp);
+  EXPECT_EQ(static_cast<GLuint>(fb), b.framebuffer());
+  EXPECT_EQ(vp[2], 3);
 }

@@ -6,6 +6,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
 #include "gl_fixture.hpp"
 #include "mesh_common.hpp"
@@ -202,4 +203,34 @@ TEST_F(Meshes, BadModelFiles) {
   const std::string tex = load_error(kModels + "/missing_texture.obj");
   EXPECT_NE(tex.find("no-such-texture.png"), std::string::npos) << tex;
   EXPECT_NE(load_error(kModels).find("directory"), std::string::npos);
+}
+
+TEST_F(Meshes, PrepassRestoresTheFramebufferItFound) {
+  auto scene = load_scene(kModels + "/cube.obj");
+  FrameInput f;
+  f.width = 64;
+  f.height = 48;
+  scene->update(f);
+  gpu::RenderTarget mine = gpu::RenderTarget::create(64, 48);
+  mine.bind();
+  glViewport(1, 2, 30, 20);
+  scene->prepass(View::full(64, 48));
+  GLint fb = 0, vp[4] = {};
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fb);
+  glGetIntegerv(GL_VIEWPORT, vp);
+  EXPECT_EQ(static_cast<GLuint>(fb), mine.framebuffer());
+  EXPECT_EQ(vp[0], 1);
+  EXPECT_EQ(vp[3], 20);
+  // Shading bound for a view other than the prepass's is a technique bug, said so.
+  gpu::ShaderCompiler c({scene_shader_files()});
+  std::vector<gpu::StageSource::Piece> pieces = {
+      {"map", "vec2 foveate_map(vec2 f) { return f; }\n"}};
+  for (const auto& p : scene->shade_source()) pieces.push_back(p);
+  pieces.push_back(
+      {"main", "out vec4 o_color;\nvoid main() { o_color = scene_shade(gl_FragCoord.xy); }\n"});
+  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+                            gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
+                           "mesh test");
+  gpu::Samplers samplers;
+  EXPECT_THROW(scene->bind(p, View::full(32, 24), samplers), Error);
 }
