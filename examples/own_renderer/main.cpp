@@ -89,9 +89,7 @@ void register_letterbox() {
                [](const foveate::TechniqueConfig& c, const foveate::ParamValues&) {
                  return c.display.height_px / 8.0;
                }}};
-  t.make = [](const foveate::TechniqueConfig& c, const foveate::ParamValues& v) {
-    return std::make_unique<Letterbox>(c, v);
-  };
+  t.make = foveate::construct<Letterbox>();
   foveate::register_technique(std::move(t));
 }
 

@@ -159,9 +159,7 @@ TechniqueInfo checkerboard_info() {
       {"r3", "radius where region 3 (drop 3 of 4) begins", "px", ParamType::Real, 0, 1e6, 0,
        radius(2)},
   };
-  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
-    return std::make_unique<Checkerboard>(c, v);
-  };
+  t.make = construct<Checkerboard>();
   return t;
 }
 

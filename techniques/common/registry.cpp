@@ -153,6 +153,7 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   std::unique_ptr<Technique> t = info.make(config, values);
   t->name_ = info.name;
   t->values_ = values;
+  t->display_ = config.display;
   return t;
 }
 

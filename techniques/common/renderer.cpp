@@ -63,6 +63,13 @@ FrameStats Renderer::render(Technique& technique, const FrameInput& input, const
                 std::to_string(target_.width()) + "x" + std::to_string(target_.height()));
   }
   check_scene(technique_info(technique.name()), scene_.info());
+  const Display& d = technique.display();
+  if (d.width_px != target_.width() || d.height_px != target_.height()) {
+    throw Error("technique " + technique.name() + " is configured for a " +
+                std::to_string(d.width_px) + "x" + std::to_string(d.height_px) +
+                " display but the target is " + std::to_string(target_.width()) + "x" +
+                std::to_string(target_.height()) + " (use Display::resized)");
+  }
   scene_.update(input);
   FrameStats s = technique.render(scene_, input, gaze, target_);
   if (options_.overlay) {

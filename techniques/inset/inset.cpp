@@ -138,9 +138,7 @@ TechniqueInfo inset_info() {
       param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
             ParamType::Real, 0.0, 4.0, 1.0),
   };
-  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
-    return std::make_unique<Inset>(c, v);
-  };
+  t.make = construct<Inset>();
   return t;
 }
 

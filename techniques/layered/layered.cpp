@@ -267,9 +267,7 @@ TechniqueInfo layered_info() {
             "samples", ParamType::Integer, 1, 8, 1),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
-  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
-    return std::make_unique<Layered>(c, v);
-  };
+  t.make = construct<Layered>();
   return t;
 }
 

@@ -144,9 +144,7 @@ TechniqueInfo lodmask_info() {
     if (v.real("outer_deg") < v.real("inner_deg"))
       throw Error("lodmask parameter outer_deg must be >= inner_deg");
   };
-  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
-    return std::make_unique<LodMask>(c, v);
-  };
+  t.make = construct<LodMask>();
   return t;
 }
 

@@ -163,9 +163,7 @@ TechniqueInfo logpolar_info() {
       param("blur", "antialiasing Gaussian sigma in buffer texels (0 = off)", "texels",
             ParamType::Real, 0.0, 3.0, 0.6),
   };
-  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
-    return std::make_unique<LogPolar>(c, v);
-  };
+  t.make = construct<LogPolar>();
   return t;
 }
 

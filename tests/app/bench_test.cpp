@@ -10,20 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include "bars_technique.hpp"
+#include "errors.hpp"
 
 using namespace foveate;
+using foveate::test::error_of;
 using namespace foveate::app;
 
 namespace {
-
-std::string error_of(const std::function<void()>& fn) {
-  try {
-    fn();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 BenchOptions tiny(const std::string& out) {
   BenchOptions o;

@@ -54,9 +54,7 @@ inline void register_bars_technique() {
   t.params = {
       {"bar_px", "height of each bar", "px", ParamType::Integer, 0, 64, 0,
        [](const TechniqueConfig& c, const ParamValues&) { return c.display.height_px / 36.0; }}};
-  t.make = [](const TechniqueConfig& c, const ParamValues& v) {
-    return std::make_unique<BarsTechnique>(c, v);
-  };
+  t.make = construct<BarsTechnique>();
   register_technique(std::move(t));
 }
 

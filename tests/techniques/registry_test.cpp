@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "bars_technique.hpp"
+#include "errors.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
 
 using namespace foveate;
+using foveate::test::error_of;
 
 namespace {
 
@@ -16,15 +18,6 @@ TechniqueConfig config(int w, int h, std::map<std::string, double> params = {}) 
   c.acuity = AcuityModel::quality("A");
   c.params = std::move(params);
   return c;
-}
-
-std::string error_of(const std::function<void()>& fn) {
-  try {
-    fn();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TechniqueInfo minimal(const std::string& name) {
@@ -160,5 +153,9 @@ TEST_F(RegisteredAtRunTime, TheRendererRefusesAMismatchedScene) {
   f.width = 65;
   auto native = make_technique("native", config(64, 36));
   EXPECT_NE(error_of([&] { renderer.render(*native, f, GazeState{}); }).find("65x36"),
+            std::string::npos);
+  // So is a technique planned for another display size.
+  auto big = make_technique("native", config(128, 72));
+  EXPECT_NE(error_of([&] { renderer.render(*big, 0, GazeState{}); }).find("128x72 display"),
             std::string::npos);
 }

@@ -102,6 +102,8 @@ class Technique {
   [[nodiscard]] const std::string& name() const { return name_; }
   /// The resolved parameter values (declared defaults and overrides).
   [[nodiscard]] const ParamValues& values() const { return values_; }
+  /// The display it was configured for; it renders targets of that size.
+  [[nodiscard]] const Display& display() const { return display_; }
   /// The values in use, then figures derived from them (layer radii, buffer
   /// sizes) for reports.
   [[nodiscard]] std::vector<std::pair<std::string, double>> parameters() const;
@@ -124,6 +126,7 @@ class Technique {
                                                    const TechniqueConfig& config);
   std::string name_;
   ParamValues values_;
+  Display display_;
 };
 
 struct TechniqueInfo {
@@ -137,6 +140,14 @@ struct TechniqueInfo {
   /// Creates the technique from its configuration and resolved parameters.
   std::function<std::unique_ptr<Technique>(const TechniqueConfig&, const ParamValues&)> make;
 };
+
+/// TechniqueInfo::make for a technique constructed as T(config, values).
+template <class T>
+auto construct() {
+  return [](const TechniqueConfig& c, const ParamValues& v) -> std::unique_ptr<Technique> {
+    return std::make_unique<T>(c, v);
+  };
+}
 
 /// All techniques: the built-in ones (native, layered, logpolar, checkerboard,
 /// lodmask, inset) in that order, then those registered at run time.
