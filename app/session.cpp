@@ -176,6 +176,9 @@ std::unique_ptr<Technique> Session::make(const std::string& technique, const Par
 void Session::present() {
   if (!window_) return;
   const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
+  // The output holds sRGB-encoded bytes: copied as they are (no decode on
+  // read, no encode on write), whatever the window's framebuffer encoding.
+  glDisable(GL_FRAMEBUFFER_SRGB);
   glBlitNamedFramebuffer(renderer_->output().framebuffer(), 0, 0, 0, options_.size.width,
                          options_.size.height, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
   window_->swap_buffers();

@@ -38,6 +38,15 @@ void RenderTarget::ensure(int width, int height, GLenum format, bool depth_stenc
   fbo_.check("render target");
 }
 
+bool RenderTarget::srgb() const {
+  if (owned_) return color_.format() == GL_SRGB8_ALPHA8;
+  const GLuint fb = framebuffer();
+  GLint encoding = GL_LINEAR;
+  glGetNamedFramebufferAttachmentParameteriv(fb, fb == 0 ? GL_BACK_LEFT : GL_COLOR_ATTACHMENT0,
+                                             GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+  return encoding == GL_SRGB;
+}
+
 void RenderTarget::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer());
   glViewport(0, 0, width_, height_);
@@ -81,6 +90,7 @@ void apply(const PassState& s) {
   }
   const GLboolean c = s.color_off ? GL_FALSE : GL_TRUE;
   glColorMask(c, c, c, c);
+  glEnable(GL_FRAMEBUFFER_SRGB);
 }
 
 void Samplers::bind(const Program& program, const char* name, const Texture& texture) {

@@ -55,7 +55,7 @@ class Checkerboard final : public Technique {
     const auto t = thresholds(gaze);
     const View view = View::full(W, H);
     scene.prepass(view);
-    frame_.ensure(W, H, GL_RGBA8, true);
+    frame_.ensure(W, H, GL_SRGB8_ALPHA8, true);
     frame_.clear(0, 0, 0, 0);  // alpha 0 = not covered; stencil 0 = dropped
     // 1. Stencil mask: region k + 1 where a pixel of region k is kept, 0 where dropped.
     gpu::PassState mask_state;

@@ -36,6 +36,11 @@ Renderer::Renderer(Scene& scene, const RendererOptions& options, gpu::RenderTarg
                 std::to_string(options_.width) + "x" + std::to_string(options_.height));
   }
   if (!(options_.fps > 0.0)) throw Error("renderer: the frame rate must be positive");
+  if (!target_.srgb()) {
+    throw Error(
+        "renderer: the target must be sRGB-encoded (GL_SRGB8_ALPHA8, or an sRGB-capable window "
+        "framebuffer): techniques filter and blend in linear light and write linear values");
+  }
 }
 
 Renderer::~Renderer() = default;

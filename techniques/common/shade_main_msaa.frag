@@ -1,6 +1,7 @@
 // A shading pass over a multisampled G-buffer (MSAA for mesh scenes): pixels
 // whose samples all saw the same surface are shaded once; on edges every
 // sample is shaded and the results averaged.
+#include "color.glsl"
 uniform vec4 u_keep_rect;  // x0, y0, x1, y1; empty = keep everything
 out vec4 o_color;
 void main() {
@@ -11,11 +12,11 @@ void main() {
   }
   vec3 c = vec3(0.0);
   if (scene_samples_differ(p)) {
-    for (foveate_sample = 0; foveate_sample < FOVEATE_GBUFFER_SAMPLES; ++foveate_sample) c += scene_shade(p).rgb;
+    for (foveate_sample = 0; foveate_sample < FOVEATE_GBUFFER_SAMPLES; ++foveate_sample) c += foveate_linear(scene_shade(p).rgb);
     c /= float(FOVEATE_GBUFFER_SAMPLES);
   } else {
     foveate_sample = 0;
-    c = scene_shade(p).rgb;
+    c = foveate_linear(scene_shade(p).rgb);
   }
   o_color = vec4(c, 1.0);
 }

@@ -165,7 +165,7 @@ class Layered final : public Technique {
     const std::array<double, 4> rect{v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0};
     const int next = 1 - st.latest;
     gpu::RenderTarget& out = st.history[static_cast<size_t>(next)];
-    out.ensure(v.target_width, v.target_height);
+    out.ensure(v.target_width, v.target_height, GL_RGBA16F);  // precision for accumulation
     // The inner layer samples at native resolution and is not jittered:
     // blending its history would only add lag, so only subsampled layers blend.
     const bool blend = history_ > 0.0 && st.valid && v.pixel_scale > 1.0;

@@ -19,13 +19,19 @@ class Program;
 class RenderTarget {
  public:
   RenderTarget() = default;
-  /// A colour texture of `format` (and a depth-stencil renderbuffer when asked).
-  static RenderTarget create(int width, int height, GLenum format = GL_RGBA8,
+  /// A colour texture of `format` (and a depth-stencil renderbuffer when
+  /// asked). The default, GL_SRGB8_ALPHA8, stores sRGB-encoded bytes and
+  /// reads and blends as linear light; GL_RGBA16F where precision matters
+  /// (temporal history).
+  static RenderTarget create(int width, int height, GLenum format = GL_SRGB8_ALPHA8,
                              bool depth_stencil = false);
   /// A framebuffer owned elsewhere, `width` x `height` pixels.
   static RenderTarget wrap(GLuint framebuffer, int width, int height);
   /// Recreates the attachments when the size, format or depth-stencil changes.
-  void ensure(int width, int height, GLenum format = GL_RGBA8, bool depth_stencil = false);
+  void ensure(int width, int height, GLenum format = GL_SRGB8_ALPHA8, bool depth_stencil = false);
+  /// Whether writes are sRGB-encoded (owned GL_SRGB8_ALPHA8 targets, or a
+  /// wrapped framebuffer whose colour attachment says so).
+  [[nodiscard]] bool srgb() const;
   /// Binds the framebuffer and sets the viewport to the whole target.
   void bind() const;
   /// Clears colour to `rgba`, and depth to 1 and stencil to 0 where the
@@ -50,6 +56,8 @@ class RenderTarget {
 
 /// Fixed-function state of one pass. Zero (the default) means off: a
 /// default PassState draws colour with no depth, stencil or blending.
+/// Writes to sRGB-encoded targets are always encoded (GL_FRAMEBUFFER_SRGB):
+/// shaders output linear light.
 struct PassState {
   GLenum depth_func = 0;  ///< 0 = no depth test; otherwise GL_LESS, GL_ALWAYS, ...
   bool depth_write = false;
