@@ -137,6 +137,13 @@ void MeshSceneBase::update(const FrameInput& frame) {
   pose_ = camera_.at(frame.time_s);
 }
 
+std::optional<std::uint64_t> MeshSceneBase::image_key() const {
+  const double v[] = {pose_.position.x, pose_.position.y,     pose_.position.z,
+                      pose_.target.x,   pose_.target.y,       pose_.target.z,
+                      pose_.fov_deg,    double(frame_.width), double(frame_.height)};
+  return hash_bytes(1469598103934665603ull, v, sizeof v);
+}
+
 double MeshSceneBase::camera_focal_px() const {
   return 0.5 * frame_.height / std::tan(0.5 * pose_.fov_deg * std::numbers::pi / 180.0);
 }

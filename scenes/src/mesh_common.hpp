@@ -93,6 +93,9 @@ class MeshSceneBase : public Scene {
   void bind(const gpu::Program& program, const View& view, gpu::Samplers& samplers) override;
   [[nodiscard]] std::vector<Vec2d> object_positions() const override;
   [[nodiscard]] std::optional<std::array<float, 16>> view_projection() const override;
+  /// The camera and the frame size (the sky's slow drift is left to the
+  /// techniques' per-pixel change detection).
+  [[nodiscard]] std::optional<std::uint64_t> image_key() const override;
 
  protected:
   /// The items to draw for `view` with `lod` (0..2, or -1 = automatic).

@@ -11,6 +11,12 @@ namespace foveate {
 
 std::span<const embedded::EmbeddedFile> scene_shader_files() { return embedded::scenes_shaders(); }
 
+std::uint64_t hash_bytes(std::uint64_t hash, const void* bytes, std::size_t size) {
+  const auto* b = static_cast<const unsigned char*>(bytes);
+  for (std::size_t i = 0; i < size; ++i) hash = (hash ^ b[i]) * 1099511628211ull;
+  return hash;
+}
+
 void Scene::prepass(const View& view) {
   prepass_begin(view);
   prepass_draw(view, -1);

@@ -66,6 +66,11 @@ class ShadertoyScene final : public Scene {
         text_(std::move(user_text)),
         key_(std::move(key)),
         camera_(std::move(camera)) {
+    // A shader that reads the clock, the frame number or the date changes
+    // from frame to frame whatever the camera does.
+    for (const char* input : {"iTime", "iGlobalTime", "iTimeDelta", "iFrame", "iDate"}) {
+      animated_ = animated_ || text_.find(input) != std::string::npos;
+    }
     // Unbound channels read black, as on shadertoy.com.
     Image black(1, 1);
     black.rgba = {0, 0, 0, 255};
@@ -84,7 +89,28 @@ class ShadertoyScene final : public Scene {
     return {{"shadertoy_prelude.glsl", {}}, {label_, text_}, {"shadertoy_adapter.glsl", {}}};
   }
 
-  void update(const FrameInput& f) override { frame_ = f; }
+  void update(const FrameInput& f) override {
+    frame_ = f;
+    pose_ = camera_.at(f.time_s);
+  }
+  std::optional<std::uint64_t> image_key() const override {
+    std::uint64_t h = 1469598103934665603ull;
+    const double v[] = {pose_.position.x,
+                        pose_.position.y,
+                        pose_.position.z,
+                        pose_.target.x,
+                        pose_.target.y,
+                        pose_.target.z,
+                        pose_.fov_deg,
+                        frame_.mouse_px.x,
+                        frame_.mouse_px.y,
+                        frame_.mouse_down ? 1.0 : 0.0,
+                        double(frame_.width),
+                        double(frame_.height),
+                        animated_ ? frame_.time_s : 0.0,
+                        animated_ ? double(frame_.frame) : 0.0};
+    return hash_bytes(h, v, sizeof v);
+  }
 
   void bind(const gpu::Program& p, const View&, gpu::Samplers& samplers) override {
     // A shader uses the inputs it needs; the rest are optimised away.
@@ -116,7 +142,7 @@ class ShadertoyScene final : public Scene {
                        channel_size_[2][1], 1.0f);
     glProgramUniform3f(p.id(), p.uniform("iChannelResolution[3]"), channel_size_[3][0],
                        channel_size_[3][1], 1.0f);
-    const CameraPose pose = camera_.at(f.time_s);
+    const CameraPose& pose = pose_;
     p.set("foveate_cam_pos", float(pose.position.x), float(pose.position.y),
           float(pose.position.z));
     p.set("foveate_cam_target", float(pose.target.x), float(pose.target.y), float(pose.target.z));
@@ -129,6 +155,8 @@ class ShadertoyScene final : public Scene {
   gpu::Texture channels_[4];
   float channel_size_[4][2] = {};
   FrameInput frame_;
+  CameraPose pose_{};
+  bool animated_ = false;
 };
 
 // Compiles the scene's shading function alone so that errors surface at load.
@@ -143,7 +171,8 @@ void validate(const Scene& scene) {
 
 std::vector<Image> load_channels(const std::string& shader_path, const SceneOptions& o) {
   std::vector<std::string> files = o.channels;
-  if (files.size() > 4) throw Error("at most 4 channel images (iChannel0..3), got " + std::to_string(files.size()));
+  if (files.size() > 4)
+    throw Error("at most 4 channel images (iChannel0..3), got " + std::to_string(files.size()));
   // A JSON file beside the shader: NAME.json with {"iChannel0": "file.png", ...}.
   if (!shader_path.empty() && files.empty()) {
     fs::path side = fs::path(shader_path).replace_extension(".json");

@@ -139,7 +139,8 @@ TechniqueInfo checkerboard_info() {
   const auto radius = [](int k) {
     return [k](const TechniqueConfig& c, const ParamValues& v) {
       const double r = default_pattern(c, v).thresholds_px[static_cast<size_t>(k)];
-      return k == 0 ? r : std::max(r, v.real("r" + std::to_string(k)));
+      static const char* const previous[] = {"", "r1", "r2"};
+      return k == 0 ? r : std::max(r, v.real(previous[k]));
     };
   };
   t.params = {

@@ -1,12 +1,14 @@
-// Composites eccentricity layers: the outer layer everywhere, then each inner
-// layer blended in with a smoothstep mask over the outer 'transition' fraction
-// of its radius (Guenter et al., Figure 3). Layers are sampled bilinearly.
+// Composites eccentricity layers in linear light: the outer layer everywhere,
+// then each inner layer over it, fully out to its radius e_i and blended with a
+// smoothstep over the band from e_i to e_i (1 + band) (Guenter et al.,
+// Figure 3, with the band outside e_i so that a coarser layer only shows where
+// its sampling meets the acuity model). Layers are sampled bilinearly.
 uniform sampler2D u_layers[6];
 uniform vec4 u_rects[6];    // x0, y0, w, h in screen pixels
 uniform vec2 u_centres[6];  // unjittered gaze of each layer's render
 uniform float u_radii[6];
 uniform int u_count;
-uniform float u_transition;
+uniform float u_band;  // blend band width as a fraction of the radius
 out vec4 o_color;
 
 vec3 layer(int i, vec2 p) { return texture(u_layers[i], (p - u_rects[i].xy) / u_rects[i].zw).rgb; }
@@ -17,7 +19,7 @@ void main() {
   for (int i = u_count - 2; i >= 0; --i) {
     float r = u_radii[i];
     float d = distance(p, u_centres[i]);
-    float w = u_transition > 0.0 ? 1.0 - smoothstep((1.0 - u_transition) * r, r, d) : step(d, r);
+    float w = u_band > 0.0 ? 1.0 - smoothstep(r, (1.0 + u_band) * r, d) : step(d, r);
     if (w > 0.0) col = mix(col, layer(i, p), w);
   }
   o_color = vec4(col, 1.0);

@@ -1,13 +1,28 @@
 // layered: Guenter, Finch, Drucker, Tan, Snyder, "Foveated 3D Graphics" (2012),
 // section 4. Nested eccentricity layers from the planner, each rendered with
-// an off-centre sub-frustum around the gaze at its sampling factor, jittered by
-// up to half a layer pixel per frame, blended with its reprojected history,
-// bilinearly upsampled and composited with smoothstep masks. Outer layers are
-// updated at half rate, staggered.
+// an off-centre sub-frustum around the gaze at its sampling factor, bilinearly
+// upsampled and composited with smoothstep masks; outer layers are updated at
+// half rate, staggered.
+//
+// Antialiasing (section 4.2), in linear light:
+//  * each subsampled layer is jittered over its own updates by a Halton (2, 3)
+//    sequence of N positions covering the whole layer pixel (N from the
+//    sampling factor, at most 8);
+//  * the layer's history lives on its unjittered grid. While the scene's
+//    image and the layer's rectangle stay the same, the last N jittered
+//    samples of a pixel are averaged (a box filter over its footprint that
+//    converges exactly: the same N samples, the same mean); a sample that
+//    differs from the one of the same phase a cycle ago restarts the pixel.
+//    When anything moves, the history is reprojected (through the scene's depth
+//    and previous camera where it has them), clipped to the current samples'
+//    neighbourhood in YCoCg (variance clipping) and blended exponentially;
+//  * a coarser layer only shows where its sampling meets the acuity model:
+//    inner layers are rendered beyond their planned radius e_i by the blend
+//    band, and the blend runs from e_i outwards. The planner weighs the inner
+//    layers' pixels by what that band costs, so the radii are re-planned for it.
 #include <array>
 #include <cmath>
-#include <numbers>
-#include <tuple>
+#include <optional>
 
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
@@ -18,11 +33,12 @@ namespace foveate::tech {
 namespace {
 
 constexpr int kMaxLayers = 6;
+constexpr int kMaxSlots = 8;
 
-// Radical inverse in base b: a low-discrepancy jitter sequence in [0, 1).
+// Radical inverse in base b of i >= 1: a low-discrepancy sequence in (0, 1).
 double halton(int i, int b) {
   double f = 1.0, r = 0.0;
-  for (int k = i + 1; k > 0; k /= b) {
+  for (int k = i; k > 0; k /= b) {
     f /= b;
     r += f * (k % b);
   }
@@ -36,25 +52,47 @@ class Layered final : public Technique {
         transition_(v.real("transition")),
         half_rate_(v.boolean("half_rate")),
         jitter_(v.boolean("jitter")),
+        samples_(v.integer("samples")),
         history_(v.real("history")),
         reproject_(v.boolean("reproject")),
         msaa_(v.integer("msaa")) {
     PlannerOptions po;
     po.layers = v.integer("layers");
     po.grid_step_deg = v.real("grid_step");
+    // Inner layers are rendered out to (1 + transition) of their radius: the
+    // planner weighs their pixels by the area that adds.
+    po.weights.assign(static_cast<size_t>(po.layers), (1 + transition_) * (1 + transition_));
+    po.weights.back() = 1.0;
     plan_ = plan_layers(display_, c.acuity, po);
   }
 
-  void reset() override { frames_ = 0; }
+  void reset() override {
+    frames_ = 0;
+    for (LayerState& st : state_) st.valid = false;
+  }
 
-  // On-screen half side (native pixels) and target side of inner layer i for this gaze.
-  std::pair<double, int> inner_size(size_t i, const GazeState& g) const {
+  // Temporal samples (jitter positions) per pixel of layer i.
+  int slots(size_t i) const {
+    const double s = plan_.layers[i].sampling_factor;
+    if (!jitter_ || s <= 1.0) return 1;
+    if (samples_ > 0) return samples_;
+    return std::clamp(static_cast<int>(std::ceil(s * s)), 2, kMaxSlots);
+  }
+
+  // Blend radius (where the coarser layer starts to show: e_i, native pixels)
+  // and the rendered half side and target side of inner layer i for this gaze.
+  struct InnerSize {
+    double blend_from = 0;  ///< e_i on screen
+    double half = 0;        ///< rendered half side, >= blend_from * (1 + transition)
+    int side = 1;           ///< target pixels per side
+  };
+  InnerSize inner_size(size_t i, const GazeState& g) const {
     const Layer& L = plan_.layers[i];
     const double e = L.radius_deg * g.fovea_scale + latency_margin_deg(g);
-    if (e == L.radius_deg) return {0.5 * L.width_px * L.sampling_factor, L.width_px};
     const double r = display_.radius_px_at(e);
-    const int side = std::max(1, static_cast<int>(std::lround(2.0 * r / L.sampling_factor)));
-    return {0.5 * side * L.sampling_factor, side};
+    const int side =
+        std::max(1, static_cast<int>(std::ceil(2.0 * r * (1 + transition_) / L.sampling_factor)));
+    return {r, 0.5 * side * L.sampling_factor, side};
   }
 
   FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
@@ -62,6 +100,7 @@ class Layered final : public Technique {
     const int W = target.width(), H = target.height();
     const size_t n = plan_.layers.size();
     const Vec2d g = to_gl(gaze.gaze_px, H);
+    const std::optional<std::uint64_t> key = scene.image_key();
     FrameStats stats;
     stats.native_pixels = double(W) * H;
     for (size_t i = 0; i < n; ++i) {
@@ -75,42 +114,57 @@ class Layered final : public Technique {
         continue;
       }
       const double s = L.sampling_factor;
-      View v;
+      View v;  // unjittered
       v.pixel_scale = s;
       if (i + 1 < n) {
-        const auto [half, side] = inner_size(i, gaze);
+        const InnerSize sz = inner_size(i, gaze);
         // Origins on the native pixel grid: a layer at s = 1 samples exactly
         // the native pixel centres.
-        v.x0 = std::round(g.x - half);
-        v.y0 = std::round(g.y - half);
-        v.x1 = v.x0 + 2.0 * half;
-        v.y1 = v.y0 + 2.0 * half;
-        v.target_width = v.target_height = side;
-        st.radius = half;
+        v.x0 = std::round(g.x - sz.half);
+        v.y0 = std::round(g.y - sz.half);
+        v.x1 = v.x0 + 2.0 * sz.half;
+        v.y1 = v.y0 + 2.0 * sz.half;
+        v.target_width = v.target_height = sz.side;
+        st.radius = sz.blend_from;
       } else {
         v = View{0, 0, double(W), double(H), L.width_px, L.height_px, s};
         st.radius = 0;
       }
       st.centre = g;
-      if (jitter_ && s > 1.0) {
-        const double jx = (halton(frame.frame, 2) - 0.5) * s,
-                     jy = (halton(frame.frame, 3) - 0.5) * s;
-        v.x0 += jx, v.x1 += jx, v.y0 += jy, v.y1 += jy;
+      const int slots_i = slots(i);
+      const std::array<double, 4> rect{v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0};
+      const bool moved = !st.valid || rect != st.rect || st.slot_count != slots_i ||
+                         st.side != std::array<int, 2>{v.target_width, v.target_height};
+      if (moved) st.updates = 0;
+      const int phase = st.updates % slots_i;
+      View jv = v;  // this update's samples
+      if (slots_i > 1) {
+        const double jx = (halton(phase + 1, 2) - 0.5) * s, jy = (halton(phase + 1, 3) - 0.5) * s;
+        jv.x0 += jx, jv.x1 += jx, jv.y0 += jy, jv.y1 += jy;
       }
-      if (msaa_ > 1 && scene.info().has_meshes) v.samples = msaa_;
-      scene.prepass(v);
-      st.current.ensure(v.target_width, v.target_height);
-      st.current.clear(0, 0, 0, 1);
+      if (msaa_ > 1 && scene.info().has_meshes) jv.samples = msaa_;
+      scene.prepass(jv);
+      st.spare.ensure(v.target_width, v.target_height);
+      st.spare.clear(0, 0, 0, 1);
       const double margin = 1.5 * s;
       const double shaded =
-          kit_.shade(scene, v, kMapRect, st.current, [&](const gpu::Program& p, gpu::Samplers&) {
-            set_rect_mapping(p, v);
+          kit_.shade(scene, jv, kMapRect, st.spare, [&](const gpu::Program& p, gpu::Samplers&) {
+            set_rect_mapping(p, jv);
             p.set("u_keep_rect", float(-margin), float(-margin), float(W + margin),
                   float(H + margin));
           });
       stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
       stats.shaded_pixels += shaded;
-      accumulate(scene, st, v);
+      if (slots_i > 1 || (history_ > 0 && s > 1.0)) {
+        accumulate(scene, st, jv, rect, slots_i, phase, !moved && key && key == st.image_key);
+      }
+      st.image_key = key;
+      st.rect = rect;
+      st.side = {v.target_width, v.target_height};
+      st.slot_count = slots_i;
+      st.temporal = slots_i > 1 || (history_ > 0 && s > 1.0);
+      ++st.updates;
+      st.valid = true;
     }
     composite(target);
     ++frames_;
@@ -120,12 +174,12 @@ class Layered final : public Technique {
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     std::vector<OverlayShape> out;
     for (size_t i = 0; i + 1 < plan_.layers.size(); ++i) {
-      const double half = inner_size(i, gaze).first;
+      const InnerSize sz = inner_size(i, gaze);
       const auto* c = kRingColours[i];
-      out.push_back({OverlayShape::Kind::Rect, gaze.gaze_px.x - half, gaze.gaze_px.y - half,
-                     2 * half, 2 * half, c[0], c[1], c[2]});
-      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y,
-                     (1 - transition_) * half, 0, c[0], c[1], c[2]});
+      out.push_back({OverlayShape::Kind::Rect, gaze.gaze_px.x - sz.half, gaze.gaze_px.y - sz.half,
+                     2 * sz.half, 2 * sz.half, c[0], c[1], c[2]});
+      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, sz.blend_from, 0,
+                     c[0], c[1], c[2]});
     }
     const auto* c = kRingColours[plan_.layers.size() - 1];
     out.push_back({OverlayShape::Kind::Rect, 1, 1, display_.width_px - 2.0,
@@ -138,59 +192,76 @@ class Layered final : public Technique {
   std::vector<std::pair<std::string, double>> derived() const override {
     std::vector<std::pair<std::string, double>> v;
     for (size_t i = 0; i < plan_.layers.size(); ++i) {
-      v.emplace_back("layer" + std::to_string(i + 1) + ".radius_deg", plan_.layers[i].radius_deg);
-      v.emplace_back("layer" + std::to_string(i + 1) + ".sampling_factor",
-                     plan_.layers[i].sampling_factor);
+      const std::string k = "layer" + std::to_string(i + 1);
+      v.emplace_back(k + ".radius_deg", plan_.layers[i].radius_deg);
+      v.emplace_back(k + ".sampling_factor", plan_.layers[i].sampling_factor);
+      v.emplace_back(k + ".temporal_samples", slots(i));
     }
     return v;
   }
 
  private:
   struct LayerState {
-    gpu::RenderTarget current;
-    std::array<gpu::RenderTarget, 2> history;
-    int latest = 0;  // index of the newest history
+    // The last N samples, one per jitter phase (slot j = phase j), and this
+    // update's render, swapped into its slot after the temporal pass.
+    std::array<gpu::RenderTarget, kMaxSlots> ring;
+    gpu::RenderTarget spare;
+    // The resolved layer (rgb, linear) and the pixel's count of consecutive
+    // same-image samples (a), on the unjittered grid.
+    std::array<gpu::RenderTarget, 2> display;
+    int latest = 0;
+    int updates = 0;  // since the rectangle last changed: the jitter phase is updates % N
+    int slot_count = 0;
     bool valid = false;
-    std::array<double, 4> rect{};  // x0, y0, w, h of the newest history
-    Vec2d centre{};                // unjittered gaze of the newest render
+    bool temporal = false;
+    std::array<double, 4> rect{};  // unjittered x0, y0, w, h of the newest display
+    std::array<int, 2> side{};
+    Vec2d centre{};     // gaze of the newest render (GL pixels)
+    double radius = 0;  // where the blend to the next layer starts (native pixels)
+    std::optional<std::uint64_t> image_key;
     bool has_view_proj = false;
     std::array<float, 16> view_proj{};  // the scene camera of the newest render
-    double radius = 0;                  // blend radius (half side), native pixels
   };
 
-  // Temporal reverse reprojection in screen space: the previous result is
-  // resampled at this frame's sample positions and clamped to the current
-  // 3x3 neighbourhood (rejecting disoccluded or changed samples), then blended.
-  void accumulate(Scene& scene, LayerState& st, const View& v) {
-    const std::array<double, 4> rect{v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0};
+  // Resolves this update's samples (st.spare, taken at jittered view `jv`)
+  // with the layer's history into st.display, then files them in the ring.
+  void accumulate(Scene& scene, LayerState& st, const View& jv, const std::array<double, 4>& rect,
+                  int slots_i, int phase, bool same_image) {
     const int next = 1 - st.latest;
-    gpu::RenderTarget& out = st.history[static_cast<size_t>(next)];
-    out.ensure(v.target_width, v.target_height, GL_RGBA16F);  // precision for accumulation
-    // The inner layer samples at native resolution and is not jittered:
-    // blending its history would only add lag, so only subsampled layers blend.
-    const bool blend = history_ > 0.0 && st.valid && v.pixel_scale > 1.0;
-    // With scene depth and a camera, reverse reprojection through the
-    // previous camera; otherwise in screen space.
+    gpu::RenderTarget& out = st.display[static_cast<size_t>(next)];
+    out.ensure(jv.target_width, jv.target_height, GL_RGBA16F);  // precision for accumulation
+    const bool have_history = st.valid && st.temporal;
     const auto vp = scene.view_projection();
-    const bool reproject = blend && reproject_ && vp && st.has_view_proj;
-    const auto& pr = blend ? st.rect : rect;
+    const bool reproject = have_history && reproject_ && vp && st.has_view_proj;
+    const auto& prev = have_history ? st.rect : rect;
     const auto set = [&](const gpu::Program& p, gpu::Samplers& samplers) {
-      samplers.bind(p, "u_current", st.current.color());
+      static const char* names[kMaxSlots] = {"u_slots[0]", "u_slots[1]", "u_slots[2]",
+                                             "u_slots[3]", "u_slots[4]", "u_slots[5]",
+                                             "u_slots[6]", "u_slots[7]"};
+      samplers.bind(p, "u_sample", st.spare.color());
       samplers.bind(
-          p, "u_history",
-          blend ? st.history[static_cast<size_t>(st.latest)].color() : st.current.color());
+          p, "u_prev",
+          have_history ? st.display[static_cast<size_t>(st.latest)].color() : st.spare.color());
+      for (int k = 0; k < kMaxSlots; ++k) {
+        const gpu::RenderTarget& slot = st.ring[static_cast<size_t>(k)];
+        samplers.bind(p, names[k], slot ? slot.color() : st.spare.color());
+      }
+      p.set("u_slot_count", slots_i);
+      p.set("u_phase", phase);
+      p.set("u_have_history", have_history ? 1 : 0);
+      p.set("u_same_image", same_image ? 1 : 0);
       p.set("u_rect", float(rect[0]), float(rect[1]), float(rect[2]), float(rect[3]));
-      p.set("u_prev_rect", float(pr[0]), float(pr[1]), float(pr[2]), float(pr[3]));
-      p.set("u_history_weight", blend ? float(history_) : 0.0f);
+      p.set("u_prev_rect", float(prev[0]), float(prev[1]), float(prev[2]), float(prev[3]));
+      p.set("u_blend", float(1.0 - history_));
       if (reproject) {
-        glProgramUniformMatrix4fv(p.id(), p.uniform("u_prev_view_proj"), 1, GL_FALSE,
-                                  st.view_proj.data());
+        p.set_mat4("u_view_proj", vp->data());
+        p.set_mat4("u_prev_view_proj", st.view_proj.data());
         p.set("u_frame_size", float(display_.width_px), float(display_.height_px));
       }
     };
     if (reproject) {
-      kit_.scene_pass(scene, v,
-                      kit_.scene_program(scene, "layered/temporal_reproject.frag", v.samples), out,
+      kit_.scene_pass(scene, jv,
+                      kit_.scene_program(scene, "layered/temporal_reproject.frag", jv.samples), out,
                       {}, set);
     } else {
       kit_.pass(kit_.fullscreen("layered/temporal.frag"), out, {}, set);
@@ -198,8 +269,7 @@ class Layered final : public Technique {
     st.has_view_proj = vp.has_value();
     if (vp) st.view_proj = *vp;
     st.latest = next;
-    st.rect = rect;
-    st.valid = true;
+    std::swap(st.spare, st.ring[static_cast<size_t>(phase)]);
   }
 
   void composite(const gpu::RenderTarget& target) {
@@ -211,7 +281,11 @@ class Layered final : public Technique {
                                               "u_layers[3]", "u_layers[4]", "u_layers[5]"};
       for (int i = 0; i < n; ++i) {
         const LayerState& st = state_[static_cast<size_t>(i)];
-        samplers.bind(prog, names[i], st.history[static_cast<size_t>(st.latest)].color());
+        // A layer without temporal resolve (the native-rate inner one) is
+        // its last render; the others their resolved display.
+        const gpu::RenderTarget& src =
+            st.temporal ? st.display[static_cast<size_t>(st.latest)] : st.spare;
+        samplers.bind(prog, names[i], src.color());
         for (int k = 0; k < 4; ++k) rects[i * 4 + k] = float(st.rect[static_cast<size_t>(k)]);
         centres[i * 2] = float(st.centre.x);
         centres[i * 2 + 1] = float(st.centre.y);
@@ -221,13 +295,14 @@ class Layered final : public Technique {
       glProgramUniform2fv(prog.id(), prog.uniform("u_centres[0]"), n, centres);
       glProgramUniform1fv(prog.id(), prog.uniform("u_radii[0]"), n, radii);
       prog.set("u_count", n);
-      prog.set("u_transition", float(transition_));
+      prog.set("u_band", float(transition_));
     });
   }
 
   Display display_;
   double transition_;
   bool half_rate_, jitter_;
+  int samples_;
   double history_;
   bool reproject_;
   int msaa_;
@@ -243,27 +318,34 @@ TechniqueInfo layered_info() {
   TechniqueInfo t;
   t.name = "layered";
   t.summary =
-      "Nested eccentricity layers from the acuity model, composited with smoothstep masks; "
-      "jitter + temporal reprojection; outer layers at half rate.";
+      "Nested eccentricity layers from the acuity model, composited with smoothstep masks outside "
+      "each layer's radius; per-layer jitter with temporal accumulation and reprojection; outer "
+      "layers at half rate.";
   t.source = "Guenter et al., Foveated 3D Graphics, 2012";
   t.params = {
       param("layers", "number of layers n (1 = native)", "", ParamType::Integer, 1, kMaxLayers, 3),
-      param("transition", "blend transition as a fraction of the layer radius", "", ParamType::Real,
-            0, 1, 0.4),
+      param("transition",
+            "width of the smoothstep blend band outside each inner layer's radius, as a fraction "
+            "of that radius (the inner layer is rendered out to its end)",
+            "", ParamType::Real, 0, 1, 0.2),
       param("half_rate", "update outer layers at half rate, staggered", "", ParamType::Boolean, 0,
             1, 1),
-      param("jitter", "jitter each layer by up to half its pixel per frame", "", ParamType::Boolean,
-            0, 1, 1),
-      param("history", "weight of the reprojected history in the temporal blend (0 = off)", "",
-            ParamType::Real, 0, 0.95, 0.5),
+      param("jitter", "jitter subsampled layers over their own updates (Halton 2, 3)", "",
+            ParamType::Boolean, 0, 1, 1),
+      param("samples",
+            "jitter positions per subsampled layer pixel, averaged while the image holds still (0 "
+            "= from the sampling factor: ceil(s^2), 2..8)",
+            "", ParamType::Integer, 0, kMaxSlots, 0),
+      param("history",
+            "weight of the reprojected history when the image moves (1 - the new sample's weight)",
+            "", ParamType::Real, 0, 0.95, 0.75),
       param("reproject",
             "reverse-reproject history through the scene camera and depth when the scene has them "
             "(0 = screen space)",
             "", ParamType::Boolean, 0, 1, 1),
       param("msaa",
             "MSAA samples of mesh scenes' layers (1 = off; 4 as in the paper; native has none, so "
-            "off "
-            "by default)",
+            "off by default)",
             "samples", ParamType::Integer, 1, 8, 1),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };

@@ -45,7 +45,7 @@ TEST(Registry, ParametersResolveFromTheirDeclarations) {
   const ParamValues v = resolve_parameters(layered, config(640, 360));
   EXPECT_EQ(v.integer("layers"), 3);
   EXPECT_TRUE(v.boolean("half_rate"));
-  EXPECT_DOUBLE_EQ(v.real("transition"), 0.4);
+  EXPECT_DOUBLE_EQ(v.real("transition"), 0.2);
   // Overrides, typed.
   const ParamValues o =
       resolve_parameters(layered, config(640, 360, {{"layers", 2}, {"jitter", 0}}));

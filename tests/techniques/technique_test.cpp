@@ -166,16 +166,27 @@ TEST_F(Techniques, LayeredFoveaMatchesNativeAndCountsMatchThePlan) {
   FrameStats s;
   const Vec2d gaze{kW / 2.0, kH / 2.0};
   const Image img = run(*t, *scene, gaze, &s);
+  // The plan the technique uses: inner layers weighed by the blend band they
+  // are rendered out to, (1 + transition)^2 with the default transition 0.2.
   PlannerOptions po;
+  po.weights = {1.44, 1.44, 1.0};
   const LayerPlan plan = plan_layers(config().display, AcuityModel::quality("A"), po);
+  const Display d = config().display;
   ASSERT_EQ(s.parts.size(), plan.layers.size());
   for (size_t i = 0; i < plan.layers.size(); ++i) {
-    EXPECT_EQ(s.parts[i].pixels, plan.layers[i].pixels) << "layer " << i + 1;
+    const Layer& L = plan.layers[i];
+    // Inner layers: square targets reaching 1.2 e_i; the outer one as planned.
+    const double side = std::ceil(2.0 * d.radius_px_at(L.radius_deg) * 1.2 / L.sampling_factor);
+    const double expect = i + 1 < plan.layers.size() ? side * side : L.pixels;
+    EXPECT_EQ(s.parts[i].pixels, expect) << "layer " << i + 1;
   }
-  EXPECT_NEAR(s.shaded_pixels / s.native_pixels, 1.0 / plan.pixel_ratio(), 1e-9);
-  // Inside the unblended part of the inner layer the image is native's, exactly.
-  const double r = 0.6 * 0.5 * plan.layers[0].width_px - 1;
-  EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, r));
+  // Out to the radius where the first subsampled layer begins to show, the
+  // image is native's, exactly (and that is at least 2.5 degrees).
+  double exact_deg = 0;
+  for (size_t i = 0; i + 1 < plan.layers.size() && plan.layers[i].sampling_factor == 1.0; ++i)
+    exact_deg = plan.layers[i].radius_deg;
+  EXPECT_GE(exact_deg, 2.5);
+  EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, d.radius_px_at(exact_deg) - 1));
   // The periphery is a lower-resolution version: different, but not wildly.
   const Diff all = compare_all(ref, img);
   EXPECT_GT(all.mean, 0.5);

@@ -12,6 +12,7 @@
 // into a screen position. That split is what lets any technique run on any
 // scene, and what a user implements to foveate their own renderer.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -114,7 +115,16 @@ class Scene {
   [[nodiscard]] virtual std::optional<std::array<float, 16>> view_projection() const {
     return std::nullopt;
   }
+
+  /// A value that changes whenever the image could (camera, animation, size,
+  /// mouse) at the current frame: a temporal technique compares it across
+  /// its own frames and keeps accumulating samples without reprojection while
+  /// it stays the same. Empty, the default, means "unknown: assume it changed".
+  [[nodiscard]] virtual std::optional<std::uint64_t> image_key() const { return std::nullopt; }
 };
+
+/// Folds `bytes` into an FNV-1a hash (for image_key()).
+std::uint64_t hash_bytes(std::uint64_t hash, const void* bytes, std::size_t size);
 
 /// The scenes module's embedded GLSL files (shade_source() names resolve here).
 std::span<const embedded::EmbeddedFile> scene_shader_files();

@@ -1,0 +1,72 @@
+// Temporal resolve of one subsampled layer, on its unjittered grid, in linear
+// light. While the scene's image and the layer's rectangle hold still
+// (u_same_image), a pixel averages its last N jittered samples, one per
+// phase: a box filter over the pixel's footprint that converges exactly. A
+// sample that differs from the one of the same phase a cycle ago means the
+// image changed there, and the pixel restarts. When the image moves, the
+// history found at `prev_screen` is clipped to the current samples'
+// neighbourhood in YCoCg (mean +- 1.25 sigma) and blended exponentially.
+// Output: rgb = the resolved colour, a = the pixel's count of same-image samples.
+uniform sampler2D u_sample;    // this update's samples (jittered; sRGB decoded to linear)
+uniform sampler2D u_prev;      // the previous resolve
+uniform sampler2D u_slots[8];  // the last N samples by jitter phase
+uniform int u_slot_count;      // N
+uniform int u_phase;           // this update's phase, 0..N-1
+uniform int u_have_history;
+uniform int u_same_image;
+uniform vec4 u_rect;       // this update's unjittered screen rectangle x0, y0, w, h
+uniform vec4 u_prev_rect;  // the previous resolve's
+uniform float u_blend;     // the new sample's weight when the image moves
+out vec4 o_color;
+
+const float kChangeTolerance = 1.5 / 255.0;  // linear; identical renders differ by 0
+
+vec3 slot(int k) {
+  ivec2 ip = ivec2(gl_FragCoord.xy);
+  // k is dynamically uniform: sampler arrays may be indexed with it.
+  return texelFetch(u_slots[k], ip, 0).rgb;
+}
+
+vec3 to_ycocg(vec3 c) {
+  return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b,
+              -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+vec3 from_ycocg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+vec4 foveate_temporal(vec2 prev_screen) {
+  ivec2 size = textureSize(u_sample, 0);
+  ivec2 ip = ivec2(gl_FragCoord.xy);
+  vec3 x = texelFetch(u_sample, ip, 0).rgb;
+  if (u_have_history == 0) return vec4(x, 1.0);
+  vec2 huv = (prev_screen - u_prev_rect.xy) / u_prev_rect.zw;
+  if (any(lessThan(huv, vec2(0.0))) || any(greaterThan(huv, vec2(1.0)))) return vec4(x, 1.0);
+  vec4 prev = texture(u_prev, huv);
+  if (u_same_image != 0) {
+    int n = u_slot_count;
+    float count = prev.a;
+    vec3 d = abs(x - slot(u_phase));
+    if (count < float(n) || max(d.r, max(d.g, d.b)) <= kChangeTolerance) {
+      int c = int(min(count, float(n - 1))) + 1;
+      vec3 sum = x;
+      for (int k = 1; k < c; ++k) sum += slot((u_phase - k + n) % n);
+      return vec4(sum / float(c), float(c));
+    }
+  }
+  vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      vec3 q = to_ycocg(texelFetch(u_sample, clamp(ip + ivec2(dx, dy), ivec2(0), size - 1), 0).rgb);
+      m1 += q;
+      m2 += q * q;
+    }
+  }
+  m1 /= 9.0;
+  vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
+  vec3 h = to_ycocg(prev.rgb);
+  vec3 extent = 1.25 * sigma + vec3(1e-4);
+  vec3 off = h - m1;
+  vec3 a = abs(off / extent);
+  float worst = max(a.x, max(a.y, a.z));
+  if (worst > 1.0) h = m1 + off / worst;
+  return vec4(max(from_ycocg(mix(h, to_ycocg(x), u_blend)), vec3(0.0)), 1.0);
+}
