@@ -15,6 +15,7 @@
 #include "foveate/core/stats.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/metrics/metrics.hpp"
+#include "foveate/techniques/reference.hpp"
 
 namespace foveate::app {
 
@@ -140,6 +141,17 @@ BenchResult run_bench(const BenchOptions& o) {
   }
   Renderer& renderer = session.renderer();
   gaze::GazeTracker& gaze = session.gaze();
+  std::unique_ptr<Scene> reference_scene;
+  std::unique_ptr<SupersampledReference> reference;
+  if (o.reference > 1) {
+    SceneOptions so;
+    so.channels = o.session.channels;
+    so.camera_path = o.session.camera_path;
+    reference_scene = load_scene(o.session.scene, so);
+    reference = with_flag("--reference", [&] {
+      return std::make_unique<SupersampledReference>(session.display(), o.reference);
+    });
+  }
 
   // The runs: each technique once, or once per swept value.
   struct Run {
@@ -205,7 +217,13 @@ BenchResult run_bench(const BenchOptions& o) {
     const int frame = o.warmup + k;
     const double t = renderer.frame_input(frame).time_s;
     const GazeState g = gaze.at(t);
-    Image native_image;
+    // The image every run is judged against: native, or the supersampled
+    // reference (untimed, rendered from a scene of its own).
+    Image reference_image;
+    if (reference) {
+      reference->render(*reference_scene, renderer.frame_input(frame));
+      reference_image = reference->read();
+    }
     std::vector<std::pair<size_t, Image>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
@@ -223,25 +241,29 @@ BenchResult run_bench(const BenchOptions& o) {
           r.result.parts[p].pixels += s.parts[p].pixels;
       if (o.image_metrics || k + 1 == o.frames) {
         Image img = renderer.read_output();
-        if (&r == &runs[0]) native_image = img;
+        if (&r == &runs[0] && !reference) reference_image = img;
         images.emplace_back(static_cast<size_t>(&r - &runs[0]), std::move(img));
       }
       progress.step(r.technique + (o.sweep.empty() ? "" : " @" + fmt(r.sweep_value, 4)));
     }
     for (auto& [idx, img] : images) {
       Run& r = runs[idx];
-      if (o.image_metrics && idx != 0) r.series->add(native_image, img, g.gaze_px);
+      const bool judged = o.image_metrics && (idx != 0 || reference);
+      if (judged) r.series->add(reference_image, img, g.gaze_px);
       if (k + 1 == o.frames) {
-        if (o.image_metrics && idx != 0) {
-          r.result.heatmap = metrics::error_heatmap(native_image, img, 64.0);
+        if (judged) {
+          r.result.heatmap = metrics::error_heatmap(reference_image, img, 64.0);
           r.result.acuity_heatmap = metrics::acuity_error_heatmap(
-              native_image, img, r.series->display(), g.gaze_px, r.series->options());
+              reference_image, img, r.series->display(), g.gaze_px, r.series->options());
         }
         r.result.sample = std::move(img);
         out.sample_gaze_px = g.gaze_px;
       }
     }
-    if (k + 1 == o.frames) out.native_sample = runs[0].result.sample;
+    if (k + 1 == o.frames) {
+      out.native_sample = runs[0].result.sample;
+      if (reference) out.reference_sample = reference_image;
+    }
   }
 
   out.gaze_report = gaze.report();

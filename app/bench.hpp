@@ -33,6 +33,10 @@ struct BenchOptions {
   std::string gaze;  ///< gaze spec (see --gaze)
   int frames = 10;
   int warmup = 2;
+  /// What the image metrics judge against: 1 = native itself, N > 1 = native
+  /// with N x N supersampling (SupersampledReference), which native is then
+  /// judged against too.
+  int reference = 1;
   bool image_metrics = true;  ///< compare every frame with native (PSNR, SSIM, acuity error, ...)
   std::string out;            ///< output directory
   bool progress = true;
@@ -67,6 +71,7 @@ struct BenchResult {
   Display display;
   std::vector<TechniqueResult> results;
   Image native_sample;
+  Image reference_sample;  ///< the supersampled reference's last frame (empty when native is)
   Vec2d sample_gaze_px;
   std::string gaze_report;
 };

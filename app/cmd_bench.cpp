@@ -10,6 +10,7 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/techniques/reference.hpp"
 
 namespace foveate::app {
 
@@ -22,6 +23,7 @@ struct BenchArgs {
   int warmup = 2;
   std::string sweep;
   std::string out = "bench-out";
+  std::string reference = "native";
   bool no_metrics = false;
   bool quiet = false;
   BenchArgs() { session.size = "960x540"; }
@@ -49,6 +51,7 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
   o.frames = a.frames;
   o.warmup = a.warmup;
   o.image_metrics = !a.no_metrics;
+  o.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.out = a.out;
   o.progress = !a.quiet;
   o.command_line = command_line;
@@ -66,6 +69,10 @@ void add_common(CLI::App* sub, BenchArgs& a) {
       ->capture_default_str();
   sub->add_option("--out", a.out,
                   "Output directory: results.json, results.csv, results.md, report.html")
+      ->capture_default_str();
+  sub->add_option("--reference", a.reference,
+                  "What the image metrics judge against: native, or ssaa[:N] = native with NxN "
+                  "supersampling (default N = 4), against which native is judged too")
       ->capture_default_str();
   sub->add_flag("--no-metrics", a.no_metrics,
                 "Skip the image metrics against native (PSNR, SSIM, acuity error, FLIP; faster)");

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/techniques/reference.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -22,6 +23,7 @@ struct RenderArgs {
   std::string out;
   std::string technique = "native";
   std::string mouse;
+  std::string reference = "native";
   bool overlay = false;
   RenderArgs() { session.size = "640x360"; }
 };
@@ -35,6 +37,7 @@ void run_render(const RenderArgs& a) {
     o.mouse_down = true;
   }
   with_flag("--technique", [&] { return technique_info(a.technique); });
+  const int reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   const ParamArgs params = parse_params(a.session.params);
   validate_params(params, {a.technique});
   std::filesystem::create_directories(a.out);
@@ -42,6 +45,17 @@ void run_render(const RenderArgs& a) {
   Renderer& renderer = session.renderer();
   renderer.set_overlay(a.overlay);
   auto technique = session.make(a.technique, params);
+  std::unique_ptr<Scene> reference_scene;
+  std::unique_ptr<SupersampledReference> supersampled;
+  if (reference > 1) {
+    SceneOptions so;
+    so.channels = o.channels;
+    so.camera_path = o.camera_path;
+    reference_scene = load_scene(o.scene, so);
+    supersampled = with_flag("--reference", [&] {
+      return std::make_unique<SupersampledReference>(session.display(), reference);
+    });
+  }
   double shaded = 0, native = 0;
   for (int k = 0; k < a.frames; ++k) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
@@ -51,6 +65,11 @@ void run_render(const RenderArgs& a) {
     char name[64];
     std::snprintf(name, sizeof name, "frame-%04d.png", k);
     write_png((std::filesystem::path(a.out) / name).string(), renderer.read_output());
+    if (supersampled) {
+      supersampled->render(*reference_scene, renderer.frame_input(k));
+      std::snprintf(name, sizeof name, "reference-%04d.png", k);
+      write_png((std::filesystem::path(a.out) / name).string(), supersampled->read());
+    }
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
             << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out
@@ -74,6 +93,10 @@ void register_render(CLI::App& app) {
   sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
       ->capture_default_str();
   sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");
+  sub->add_option("--reference", a->reference,
+                  "Also write reference-NNNN.png: ssaa[:N] = native with NxN supersampling "
+                  "(default N = 4), box-filtered in linear light (native = none)")
+      ->capture_default_str();
   sub->callback([a] { run_render(*a); });
 }
 

@@ -100,6 +100,8 @@ nlohmann::json to_json(const BenchResult& b) {
       {"acuity",
        {{"slope", b.options.session.acuity.slope}, {"w0_deg", b.options.session.acuity.w0_deg}}},
       {"gaze", b.options.gaze.empty() ? "centre" : b.options.gaze},
+      {"reference", b.options.reference > 1 ? "ssaa:" + std::to_string(b.options.reference)
+                                            : std::string("native")},
       {"frames", b.options.frames},
       {"warmup", b.options.warmup},
       {"fps_clock", b.options.session.fps},

@@ -81,6 +81,17 @@ j=json.load(open(sys.argv[1]))
 vals=[r[\"sweep_value\"] for r in j[\"results\"] if r[\"technique\"]==\"layered\"]
 assert [round(v,3) for v in vals]==[0.02,0.03,0.04], vals
 " "$tmp/sw/results.json"'
+"$FOVEATE" bench --scene cheap --size 64x36 --frames 2 --warmup 0 --quiet --techniques native,inset --reference ssaa:2 --out "$tmp/ref" > /dev/null
+check "bench judges native too against a supersampled reference" 'python3 -c "
+import json,sys
+j=json.load(open(sys.argv[1]))
+assert j[\"reference\"]==\"ssaa:2\", j[\"reference\"]
+for r in j[\"results\"]:
+  assert r[\"quality\"].get(\"frames\")==2, (r[\"technique\"], r[\"quality\"])
+" "$tmp/ref/results.json"'
+"$FOVEATE" render --scene cheap --size 64x36 --frames 2 --reference ssaa:2 --out "$tmp/rr" > /dev/null
+check "render writes the reference frames beside its own" '[[ -s "$tmp/rr/reference-0000.png" && -s "$tmp/rr/reference-0001.png" && -s "$tmp/rr/frame-0001.png" ]]'
+expect_error "bad reference" "--reference" bench --scene cheap --size 32x32 --reference ssaa:12 --out "$tmp/x"
 expect_error "bad sweep" "--sweep" bench --scene cheap --size 32x32 --sweep layers=1:2 --out "$tmp/x"
 expect_error "sweep of an unknown key" "no technique has" bench --scene cheap --size 32x32 --sweep warp=1:2:1 --out "$tmp/x"
 exit $fail

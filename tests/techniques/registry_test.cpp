@@ -4,6 +4,7 @@
 
 #include "bars_technique.hpp"
 #include "errors.hpp"
+#include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
 
@@ -158,4 +159,37 @@ TEST_F(RegisteredAtRunTime, TheRendererRefusesAMismatchedScene) {
   auto big = make_technique("native", config(128, 72));
   EXPECT_NE(error_of([&] { renderer.render(*big, 0, GazeState{}); }).find("128x72 display"),
             std::string::npos);
+}
+
+TEST_F(RegisteredAtRunTime, SupersampledReferenceIsTheBoxFilteredBigFrame) {
+  // The reference of a fine grating is its mean in linear light, where native
+  // at one sample per pixel aliases.
+  auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/shadertoy/grating.glsl");
+  const Display d = Display::load("desktop-1080p").resized(64, 36);
+  SupersampledReference ref(d, 4);
+  RendererOptions o;
+  o.width = 64;
+  o.height = 36;
+  Renderer renderer(*scene, o);
+  ref.render(*scene, renderer.frame_input(0));
+  const Image img = ref.read();
+  double sum = 0;
+  for (int y = 0; y < 36; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      const double v = img.at(x, y)[1] / 255.0;
+      sum += v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+    }
+  }
+  EXPECT_NEAR(sum / (64 * 36), 0.5, 0.03);
+  // Every pixel is a mix, none pure black or white (16 samples of a grating
+  // with a 1.37 px period always see both).
+  int pure = 0;
+  for (int y = 0; y < 36; ++y)
+    for (int x = 0; x < 64; ++x) pure += img.at(x, y)[1] == 0 || img.at(x, y)[1] == 255;
+  EXPECT_EQ(pure, 0);
+  EXPECT_EQ(parse_reference("native"), 1);
+  EXPECT_EQ(parse_reference("ssaa"), 4);
+  EXPECT_EQ(parse_reference("ssaa:2"), 2);
+  EXPECT_NE(error_of([] { parse_reference("ssaa:9"); }).find("2 to 8"), std::string::npos);
+  EXPECT_NE(error_of([] { parse_reference("msaa"); }).find("'msaa'"), std::string::npos);
 }
