@@ -6,11 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/models.hpp"
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/metrics/metrics.hpp"
+#include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
 
@@ -191,6 +195,57 @@ TEST_F(Techniques, LayeredFoveaMatchesNativeAndCountsMatchThePlan) {
   const Diff all = compare_all(ref, img);
   EXPECT_GT(all.mean, 0.5);
   EXPECT_LT(all.mean, 60.0);
+}
+
+TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
+  // A still camera and a fixed gaze: the periphery stops changing once every
+  // layer has seen all its jitter positions, and what it converges to is as
+  // close to the supersampled reference as native is (after the eye's acuity
+  // filter), within 1 code.
+  const auto path = std::filesystem::temp_directory_path() / "foveate-still-camera.json";
+  {
+    std::ofstream(path) << R"({"loop": false, "keyframes": [{"t": 0, "position": [0, 1.5, 6],
+                             "target": [0, 1, 0], "fov_deg": 55}]})";
+  }
+  SceneOptions so;
+  so.camera_path = path.string();
+  auto scene = load_scene("detail", so);
+  auto t = make_technique("layered", config());
+  const Vec2d gaze{kW / 2.0, kH / 2.0};
+  std::vector<Image> frames;
+  for (int k = 0; k < 33; ++k) frames.push_back(run(*t, *scene, gaze, nullptr, k));
+  auto change = [&](int k) {  // mean absolute change beyond 5 degrees, codes
+    const Display d = config().display;
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        if (d.eccentricity_deg({x + 0.5, y + 0.5}, gaze) < 5) continue;
+        for (int c = 0; c < 3; ++c)
+          sum += std::abs(frames[k].at(x, y)[c] - frames[k - 1].at(x, y)[c]);
+        ++n;
+      }
+    }
+    return sum / (3.0 * n);
+  };
+  EXPECT_GT(change(1), 1.0);  // it does start out moving (jitter)
+  EXPECT_LT(change(17), 0.5);
+  EXPECT_EQ(change(32), 0.0);
+  auto reference_scene = load_scene("detail", so);
+  SupersampledReference ref(config().display, 4);
+  ref.render(*reference_scene, renderer(*scene).frame_input(32));
+  const Image truth = ref.read();
+  auto acuity_rmse = [&](const Image& img) {
+    const metrics::Map m =
+        metrics::acuity_difference(truth, img, config().display, gaze, AcuityModel::quality("A"));
+    double sum = 0;
+    for (float v : m.values) sum += double(v) * v;
+    return std::sqrt(sum / double(m.values.size()));
+  };
+  const double layered_error = acuity_rmse(frames[32]),
+               native_error = acuity_rmse(native(*scene, 32));
+  EXPECT_LE(layered_error, native_error + 1.0) << layered_error << " vs native " << native_error;
+  std::filesystem::remove(path);
 }
 
 TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
