@@ -9,9 +9,28 @@ uniform vec2 u_centres[6];  // unjittered gaze of each layer's render
 uniform float u_radii[6];
 uniform int u_count;
 uniform float u_band;  // blend band width as a fraction of the radius
+// Layers not updated this frame (half rate) on mesh scenes: the world point
+// each of their pixels saw, and the camera they were rendered with.
+uniform int u_warp[6];
+uniform sampler2D u_positions[6];
+uniform mat4 u_layer_view_proj[6];
+uniform mat4 u_view_proj;  // this frame's camera
+uniform vec2 u_frame_size;
 out vec4 o_color;
 
-vec3 layer(int i, vec2 p) { return texture(u_layers[i], (p - u_rects[i].xy) / u_rects[i].zw).rgb; }
+vec3 layer(int i, vec2 p) {
+  vec2 uv = (p - u_rects[i].xy) / u_rects[i].zw;
+  if (u_warp[i] != 0) {
+    // Reverse reprojection by the motion of the point found at p (one fixed-point step).
+    vec4 x = vec4(texture(u_positions[i], uv).xyz, 1.0);
+    vec4 now = u_view_proj * x, then = u_layer_view_proj[i] * x;
+    if (now.w > 0.0 && then.w > 0.0) {
+      vec2 q = p - (now.xy / now.w - then.xy / then.w) * 0.5 * u_frame_size;
+      uv = (q - u_rects[i].xy) / u_rects[i].zw;
+    }
+  }
+  return texture(u_layers[i], uv).rgb;
+}
 
 void main() {
   vec2 p = gl_FragCoord.xy;

@@ -109,6 +109,7 @@ class Layered final : public Technique {
       // Staggered half rate: layer 2 (middle) on even frames, 3 (outer) on odd, and so on.
       const bool update = i == 0 || !half_rate_ || frames_ == 0 || !st.valid ||
                           (frame.frame % 2) == static_cast<int>((i + 1) % 2);
+      st.updated = update;
       if (!update) {
         stats.parts.push_back({"layer " + std::to_string(i + 1), 0.0});
         continue;
@@ -158,6 +159,7 @@ class Layered final : public Technique {
       if (slots_i > 1 || (history_ > 0 && s > 1.0)) {
         accumulate(scene, st, jv, rect, slots_i, phase, !moved && key && key == st.image_key);
       }
+      keep_positions(scene, st, jv, rect, i > 0 && half_rate_);
       st.image_key = key;
       st.rect = rect;
       st.side = {v.target_width, v.target_height};
@@ -166,7 +168,7 @@ class Layered final : public Technique {
       ++st.updates;
       st.valid = true;
     }
-    composite(target);
+    composite(scene, target);
     ++frames_;
     return stats;
   }
@@ -221,6 +223,11 @@ class Layered final : public Technique {
     std::optional<std::uint64_t> image_key;
     bool has_view_proj = false;
     std::array<float, 16> view_proj{};  // the scene camera of the newest render
+    // The world points of the newest render (mesh scenes), to reproject the
+    // layer on the frames it is not updated.
+    gpu::RenderTarget positions;
+    bool has_positions = false;
+    bool updated = false;  // this frame
   };
 
   // Resolves this update's samples (st.spare, taken at jittered view `jv`)
@@ -272,7 +279,24 @@ class Layered final : public Technique {
     std::swap(st.spare, st.ring[static_cast<size_t>(phase)]);
   }
 
-  void composite(const gpu::RenderTarget& target) {
+  // Stores the world points of the layer's grid where it will be shown stale.
+  void keep_positions(Scene& scene, LayerState& st, const View& jv,
+                      const std::array<double, 4>& rect, bool will_be_stale) {
+    const auto vp = scene.view_projection();
+    st.has_positions = will_be_stale && reproject_ && vp.has_value();
+    if (!st.has_positions) return;
+    st.view_proj = *vp;
+    st.has_view_proj = true;
+    st.positions.ensure(jv.target_width, jv.target_height, GL_RGBA32F);
+    kit_.scene_pass(scene, jv, kit_.scene_program(scene, "layered/positions.frag", jv.samples),
+                    st.positions, {}, [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                      samplers.bind(p, "u_sample", st.positions.color());
+                      p.set("u_rect", float(rect[0]), float(rect[1]), float(rect[2]),
+                            float(rect[3]));
+                    });
+  }
+
+  void composite(Scene& scene, const gpu::RenderTarget& target) {
     const int n = static_cast<int>(plan_.layers.size());
     const gpu::Program& p = kit_.fullscreen("layered/composite.frag");
     kit_.pass(p, target, {}, [&](const gpu::Program& prog, gpu::Samplers& samplers) {
@@ -291,6 +315,27 @@ class Layered final : public Technique {
         centres[i * 2 + 1] = float(st.centre.y);
         radii[i] = float(st.radius);
       }
+      // Layers shown stale (half rate) move with the camera: each pixel is
+      // read where its world point was when the layer was rendered.
+      const auto vp = scene.view_projection();
+      static const char* position_names[kMaxLayers] = {"u_positions[0]", "u_positions[1]",
+                                                       "u_positions[2]", "u_positions[3]",
+                                                       "u_positions[4]", "u_positions[5]"};
+      int warp[kMaxLayers] = {};
+      float layer_vp[kMaxLayers * 16] = {};
+      for (int i = 0; i < n; ++i) {
+        const LayerState& st = state_[static_cast<size_t>(i)];
+        warp[i] = !st.updated && st.has_positions && vp ? 1 : 0;
+        samplers.bind(prog, position_names[i],
+                      warp[i] ? st.positions.color() : state_[0].spare.color());
+        std::copy_n(st.view_proj.data(), 16, layer_vp + i * 16);
+      }
+      prog.allow_missing({"u_view_proj", "u_layer_view_proj[0]", "u_frame_size"});
+      glProgramUniform1iv(prog.id(), prog.uniform("u_warp[0]"), n, warp);
+      glProgramUniformMatrix4fv(prog.id(), prog.uniform_if_present("u_layer_view_proj[0]"), n,
+                                GL_FALSE, layer_vp);
+      if (vp) prog.set_mat4("u_view_proj", vp->data());
+      prog.set("u_frame_size", float(display_.width_px), float(display_.height_px));
       glProgramUniform4fv(prog.id(), prog.uniform("u_rects[0]"), n, rects);
       glProgramUniform2fv(prog.id(), prog.uniform("u_centres[0]"), n, centres);
       glProgramUniform1fv(prog.id(), prog.uniform("u_radii[0]"), n, radii);

@@ -489,6 +489,23 @@ TEST_F(Techniques, ReverseReprojectionFollowsTheCamera) {
   EXPECT_LT(reprojected, 0.8 * screen_space) << reprojected << " vs " << screen_space;
 }
 
+TEST_F(Techniques, StaleHalfRateLayersFollowTheCamera) {
+  // On frame 40 the outer layer is the one rendered on frame 39 (it updates
+  // on odd frames). Reprojected
+  // through its world points it lands where native shows the scene now;
+  // shown as it was, the periphery trails the camera's motion.
+  auto scene = load_scene("guenter");
+  auto error_on_stale_frame = [&](double reproject) {
+    auto t = make_technique("layered",
+                            config({{"jitter", 0}, {"history", 0}, {"reproject", reproject}}));
+    Image img;
+    for (int k : {0, 39, 40}) img = run(*t, *scene, {320, 180}, nullptr, k);
+    return compare_all(native(*scene, 40), img).mean;
+  };
+  const double warped = error_on_stale_frame(1), stale = error_on_stale_frame(0);
+  EXPECT_LT(warped, 0.8 * stale) << warped << " vs " << stale;
+}
+
 TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
   // A supersampled truth: native at twice the resolution, box-filtered 2x2.
   auto scene = load_scene("guenter");
