@@ -138,6 +138,7 @@ class AssimpScene final : public MeshSceneBase {
     return out;
   }
   void bind_extra(const gpu::Program& p) override {
+    p.allow_missing({"u_lights[0]", "u_light_colors[0]"});  // unused where only depth is read
     glProgramUniform4fv(p.id(), p.uniform("u_lights[0]"), 6, glm::value_ptr(lights_[0]));
     glProgramUniform3fv(p.id(), p.uniform("u_light_colors[0]"), 6,
                         glm::value_ptr(light_colors_[0]));
