@@ -141,17 +141,8 @@ BenchResult run_bench(const BenchOptions& o) {
   }
   Renderer& renderer = session.renderer();
   gaze::GazeTracker& gaze = session.gaze();
-  std::unique_ptr<Scene> reference_scene;
-  std::unique_ptr<SupersampledReference> reference;
-  if (o.reference > 1) {
-    SceneOptions so;
-    so.channels = o.session.channels;
-    so.camera_path = o.session.camera_path;
-    reference_scene = load_scene(o.session.scene, so);
-    reference = with_flag("--reference", [&] {
-      return std::make_unique<SupersampledReference>(session.display(), o.reference);
-    });
-  }
+  const std::unique_ptr<Reference> reference =
+      o.reference > 1 ? session.make_reference(o.reference) : nullptr;
 
   // The runs: each technique once, or once per swept value.
   struct Run {
@@ -220,10 +211,7 @@ BenchResult run_bench(const BenchOptions& o) {
     // The image every run is judged against: native, or the supersampled
     // reference (untimed, rendered from a scene of its own).
     Image reference_image;
-    if (reference) {
-      reference->render(*reference_scene, renderer.frame_input(frame));
-      reference_image = reference->read();
-    }
+    if (reference) reference_image = reference->render(renderer.frame_input(frame));
     std::vector<std::pair<size_t, Image>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];

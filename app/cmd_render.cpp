@@ -45,17 +45,8 @@ void run_render(const RenderArgs& a) {
   Renderer& renderer = session.renderer();
   renderer.set_overlay(a.overlay);
   auto technique = session.make(a.technique, params);
-  std::unique_ptr<Scene> reference_scene;
-  std::unique_ptr<SupersampledReference> supersampled;
-  if (reference > 1) {
-    SceneOptions so;
-    so.channels = o.channels;
-    so.camera_path = o.camera_path;
-    reference_scene = load_scene(o.scene, so);
-    supersampled = with_flag("--reference", [&] {
-      return std::make_unique<SupersampledReference>(session.display(), reference);
-    });
-  }
+  const std::unique_ptr<Reference> supersampled =
+      reference > 1 ? session.make_reference(reference) : nullptr;
   double shaded = 0, native = 0;
   for (int k = 0; k < a.frames; ++k) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
@@ -66,9 +57,9 @@ void run_render(const RenderArgs& a) {
     std::snprintf(name, sizeof name, "frame-%04d.png", k);
     write_png((std::filesystem::path(a.out) / name).string(), renderer.read_output());
     if (supersampled) {
-      supersampled->render(*reference_scene, renderer.frame_input(k));
       std::snprintf(name, sizeof name, "reference-%04d.png", k);
-      write_png((std::filesystem::path(a.out) / name).string(), supersampled->read());
+      write_png((std::filesystem::path(a.out) / name).string(),
+                supersampled->render(renderer.frame_input(k)));
     }
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "

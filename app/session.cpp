@@ -173,6 +173,22 @@ std::unique_ptr<Technique> Session::make(const std::string& technique, const Par
   return with_flag("--param", [&] { return make_technique(technique, c); });
 }
 
+Image Reference::render(const FrameInput& input) {
+  supersampled->render(*scene, input);
+  return supersampled->read();
+}
+
+std::unique_ptr<Reference> Session::make_reference(int factor) const {
+  auto r = std::make_unique<Reference>();
+  SceneOptions so;
+  so.channels = options_.channels;
+  so.camera_path = options_.camera_path;
+  r->scene = load_scene(options_.scene, so);
+  r->supersampled = with_flag(
+      "--reference", [&] { return std::make_unique<SupersampledReference>(display_, factor); });
+  return r;
+}
+
 void Session::present() {
   if (!window_) return;
   const int w = window_->framebuffer_width(), h = window_->framebuffer_height();

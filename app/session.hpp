@@ -16,6 +16,7 @@
 #include "foveate/core/image.hpp"
 #include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
+#include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
 
 namespace foveate::app {
@@ -77,6 +78,15 @@ auto with_flag(const std::string& flag, Fn&& fn) -> decltype(fn()) {
   }
 }
 
+/// Native with N x N supersampling for a session's scene: its own copy of
+/// the scene (so neither reallocates per frame) and the resolve.
+struct Reference {
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<SupersampledReference> supersampled;
+  /// The reference image of frame `input`.
+  Image render(const FrameInput& input);
+};
+
 class Session {
  public:
   /// Creates the context, loads the scene, the renderer and the gaze tracker
@@ -94,6 +104,8 @@ class Session {
   /// refused with a clear error when it cannot render this scene.
   std::unique_ptr<Technique> make(const std::string& technique, const ParamArgs& params,
                                   std::optional<AcuityModel> acuity = std::nullopt) const;
+  /// The supersampled reference (`factor` from parse_reference, > 1).
+  [[nodiscard]] std::unique_ptr<Reference> make_reference(int factor) const;
   /// The window, when SessionOptions::window was set.
   [[nodiscard]] gpu::Window* window() const { return window_; }
   /// Copies the output to the window and swaps.
