@@ -150,8 +150,9 @@ Map eccentricity_map(const Display& display, Vec2d gaze_px);
 Map acuity_cutoff_map(const Display& display, Vec2d gaze_px, const AcuityModel& acuity);
 
 /// The acuity filter's response to a grating of `frequency` at a pixel whose
-/// cutoff is `cutoff` (both in cycles per pixel; any other unit, the same for
-/// both, when the cutoff lies below 0.42 cycles per pixel): 1 below
+/// cutoff is `cutoff`, both in cycles per pixel (the filter's ladder of
+/// half-octave steps is fixed in cycles per pixel; where the cutoff falls
+/// between two steps sets the value within these ranges): 1 below
 /// 0.595 cutoff, >= 0.965 at 0.7 cutoff, 0.36..0.64 at the cutoff, <= 0.049 at
 /// 1.4 cutoff, 0 from 1.68 cutoff (metrics/README.md). Throws unless cutoff > 0.
 double acuity_response(double frequency, double cutoff);
