@@ -29,9 +29,12 @@ struct CompareArgs {
   bool no_flip = false;
   std::string heatmap;
   std::string acuity_heatmap;
+  std::string jnd_heatmap;
   double heatmap_max = 64.0;
   double acuity_heatmap_max = 16.0;
-  double threshold = 3.0;
+  double jnd_heatmap_max = 4.0;
+  double threshold = 1.0;
+  double peak = 100.0;
 };
 
 std::string db(double v) {
@@ -50,26 +53,35 @@ void run_compare(const CompareArgs& a) {
                 std::to_string(ref.height) + ", " + a.test + " is " + std::to_string(test.width) +
                 "x" + std::to_string(test.height));
   }
-  if (!(a.heatmap_max > 0) || !(a.acuity_heatmap_max > 0)) {
-    throw Error("--heatmap-max / --acuity-heatmap-max: must be > 0");
+  if (!(a.heatmap_max > 0) || !(a.acuity_heatmap_max > 0) || !(a.jnd_heatmap_max > 0)) {
+    throw Error("--heatmap-max / --acuity-heatmap-max / --jnd-heatmap-max: must be > 0");
   }
   if (!(a.threshold >= 0) || !std::isfinite(a.threshold)) {
-    throw Error("--threshold: must be >= 0, got " + std::to_string(a.threshold));
+    throw Error("--threshold: must be >= 0 JND, got " + std::to_string(a.threshold));
+  }
+  metrics::QualityOptions opt;
+  if (!(a.peak > opt.contrast.black_cd_m2) || !std::isfinite(a.peak)) {
+    throw Error("--peak-luminance: must be above the black level (" +
+                fmt(opt.contrast.black_cd_m2, 2) + " cd/m^2), got " + std::to_string(a.peak));
   }
   // The display's field of view at the images' resolution.
   const Display display = Display::load(a.display).resized(ref.width, ref.height);
   const Vec2d gaze = a.gaze.empty() ? Vec2d{0.5 * ref.width, 0.5 * ref.height}
                                     : parse_point(a.gaze, ref.width, ref.height, "--gaze");
-  metrics::QualityOptions opt;
   opt.acuity = acuity_from_options(a.quality, a.slope);
   opt.flip = !a.no_flip;
-  opt.visible_threshold = a.threshold;
+  opt.jnd_threshold = a.threshold;
+  opt.contrast.peak_cd_m2 = a.peak;
   const metrics::QualityReport r = metrics::compare(ref, test, display, gaze, opt);
 
   if (!a.heatmap.empty()) write_png(a.heatmap, metrics::error_heatmap(ref, test, a.heatmap_max));
   if (!a.acuity_heatmap.empty()) {
     write_png(a.acuity_heatmap,
               metrics::acuity_error_heatmap(ref, test, display, gaze, opt, a.acuity_heatmap_max));
+  }
+  if (!a.jnd_heatmap.empty()) {
+    write_png(a.jnd_heatmap,
+              metrics::heatmap(metrics::jnd_map(ref, test, display, gaze, opt), a.jnd_heatmap_max));
   }
 
   if (a.json) {
@@ -93,21 +105,25 @@ void run_compare(const CompareArgs& a) {
   if (opt.flip)
     std::cout << "   FLIP " << num(r.flip_mean, 4) << " (at " << fmt(r.flip_ppd, 1) << " px/deg)";
   std::cout << "\nacuity-filtered error: RMSE " << num(r.acuity_rmse, 3)
-            << " (8-bit luminance codes), visible (> " << fmt(r.acuity_threshold, 1) << ") "
-            << num(100.0 * r.acuity_visible_fraction, 3) << " % of pixels\n\n";
-  std::printf("%-12s %8s %9s %8s %12s%s\n", "eccentricity", "pixels", "PSNR dB", "SSIM",
-              "acuity RMSE", opt.flip ? "     FLIP" : "");
+            << " (8-bit luminance codes)\nvisibility: mean " << num(r.jnd_mean, 3)
+            << " JND, visible (>= " << fmt(r.jnd_threshold, 2) << " JND) "
+            << num(100.0 * r.visible_fraction, 3) << " % of pixels (Barten CSF, white "
+            << fmt(opt.contrast.peak_cd_m2, 0) << " cd/m^2)\n\n";
+  std::printf("%-12s %8s %9s %8s %12s %9s %9s%s\n", "eccentricity", "pixels", "PSNR dB", "SSIM",
+              "acuity RMSE", "JND mean", "visible", opt.flip ? "     FLIP" : "");
   for (const metrics::BandStats& b : r.bands) {
     const std::string range = std::isinf(b.to_deg)
                                   ? fmt(b.from_deg, 0) + "+ deg"
                                   : fmt(b.from_deg, 0) + "-" + fmt(b.to_deg, 0) + " deg";
-    std::printf("%-12s %7.1f%% %9s %8s %12s", range.c_str(), 100.0 * b.pixels_fraction,
-                db(b.psnr_db).c_str(), num(b.ssim, 4).c_str(), num(b.acuity_rmse, 3).c_str());
+    std::printf("%-12s %7.1f%% %9s %8s %12s %9s %8s%%", range.c_str(), 100.0 * b.pixels_fraction,
+                db(b.psnr_db).c_str(), num(b.ssim, 4).c_str(), num(b.acuity_rmse, 3).c_str(),
+                num(b.jnd_mean, 3).c_str(), num(100.0 * b.visible_fraction, 2).c_str());
     if (opt.flip) std::printf(" %8s", num(b.flip_mean, 4).c_str());
     std::printf("\n");
   }
   if (!a.heatmap.empty()) std::cout << "\nwrote " << a.heatmap << '\n';
   if (!a.acuity_heatmap.empty()) std::cout << "wrote " << a.acuity_heatmap << '\n';
+  if (!a.jnd_heatmap.empty()) std::cout << "wrote " << a.jnd_heatmap << '\n';
 }
 
 }  // namespace
@@ -120,7 +136,7 @@ void register_compare(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "compare",
       "Image-quality metrics of TEST against REFERENCE: PSNR, SSIM, per eccentricity band, "
-      "acuity-filtered error and FLIP");
+      "acuity-filtered error, visibility in JND (Barten's CSF) and FLIP");
   sub->add_option("reference", a->reference, "Reference image (the native frame), PNG")->required();
   sub->add_option("test", a->test, "Test image (e.g. the foveated frame), same size")->required();
   sub->add_option("--display", a->display,
@@ -133,7 +149,11 @@ void register_compare(CLI::App& app) {
                   "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
   sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
   sub->add_option("--threshold", a->threshold,
-                  "Acuity-filtered difference counted as visible, in 8-bit luminance codes")
+                  "Pooled visibility (JND) from which a pixel counts as visibly different")
+      ->capture_default_str();
+  sub->add_option("--peak-luminance", a->peak,
+                  "Luminance of the display's white in cd/m^2 (the contrast sensitivity depends "
+                  "on it)")
       ->capture_default_str();
   sub->add_flag("--no-flip", a->no_flip, "Skip FLIP (the slowest metric)");
   sub->add_flag("--json", a->json,
@@ -146,6 +166,10 @@ void register_compare(CLI::App& app) {
                   "Write the acuity-filtered difference as a PNG heatmap");
   sub->add_option("--acuity-heatmap-max", a->acuity_heatmap_max,
                   "Filtered difference at the top of that heatmap's scale")
+      ->capture_default_str();
+  sub->add_option("--jnd-heatmap", a->jnd_heatmap,
+                  "Write the pooled visibility of the difference (JND) as a PNG heatmap");
+  sub->add_option("--jnd-heatmap-max", a->jnd_heatmap_max, "JND at the top of that heatmap's scale")
       ->capture_default_str();
   sub->callback([a] { run_compare(*a); });
 }

@@ -29,6 +29,9 @@ constexpr QualityColumn kQualityColumns[] = {
     {"ssim", "SSIM", 4, [](const metrics::QualitySummary& q) { return q.mean.ssim; }},
     {"acuity_rmse", "acuity RMSE", 3,
      [](const metrics::QualitySummary& q) { return q.mean.acuity_rmse; }},
+    {"jnd_mean", "JND mean", 3, [](const metrics::QualitySummary& q) { return q.mean.jnd_mean; }},
+    {"visible_fraction", "visible (JND ≥ 1)", 4,
+     [](const metrics::QualitySummary& q) { return q.mean.visible_fraction; }},
     {"flicker_ratio", "flicker", 2,
      [](const metrics::QualitySummary& q) { return q.flicker.ratio; }},
 };
@@ -160,6 +163,51 @@ Image crop(const Image& img, int cx, int cy, int size) {
   return out;
 }
 
+// The window of size x size (centre returned) whose mean |acuity error| is
+// largest among those centred at least `min_ecc` degrees from the gaze (or,
+// when none is, anywhere), on a grid of size / 4; and that mean.
+struct Worst {
+  int x = 0, y = 0;
+  double mean_error = 0;
+  double ecc_deg = 0;
+};
+Worst worst_window(const metrics::Map& error, const Display& display, Vec2d gaze, int size,
+                   double min_ecc) {
+  const int w = error.width, h = error.height;
+  size = std::min({size, w, h});
+  // Summed-area table of |error|.
+  std::vector<double> sat(static_cast<size_t>(w + 1) * (h + 1), 0.0);
+  for (int y = 0; y < h; ++y) {
+    double row = 0;
+    for (int x = 0; x < w; ++x) {
+      row += std::fabs(double(error.at(x, y)));
+      sat[static_cast<size_t>(y + 1) * (w + 1) + x + 1] =
+          sat[static_cast<size_t>(y) * (w + 1) + x + 1] + row;
+    }
+  }
+  auto sum = [&](int x0, int y0) {
+    const int x1 = x0 + size, y1 = y0 + size;
+    auto at = [&](int x, int y) { return sat[static_cast<size_t>(y) * (w + 1) + x]; };
+    return at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0);
+  };
+  const int step = std::max(1, size / 4);
+  Worst best, best_any;
+  bool found = false;
+  best_any.mean_error = best.mean_error = -1;
+  for (int y0 = 0;; y0 = std::min(y0 + step, h - size)) {
+    for (int x0 = 0;; x0 = std::min(x0 + step, w - size)) {
+      const double m = sum(x0, y0) / (double(size) * size);
+      const int cx = x0 + size / 2, cy = y0 + size / 2;
+      const double e = display.eccentricity_deg({cx + 0.5, cy + 0.5}, gaze);
+      if (m > best_any.mean_error) best_any = {cx, cy, m, e};
+      if (e >= min_ecc && m > best.mean_error) best = {cx, cy, m, e}, found = true;
+      if (x0 == w - size) break;
+    }
+    if (y0 == h - size) break;
+  }
+  return found ? best : best_any;
+}
+
 std::string img_tag(const Image& img, const std::string& alt, int display_width) {
   if (img.empty()) return "<span class=missing>(no image)</span>";
   return "<img alt=\"" + alt + "\" width=\"" + std::to_string(display_width) +
@@ -269,6 +317,72 @@ std::string html(const BenchResult& b) {
       << bar_chart(qnames, acuity, {}, "acuity-filtered RMSE (8-bit units; 0 = no visible loss)",
                    "", "Error the eye can resolve")
       << "</div>\n";
+    // Error and visibility against eccentricity, from the summaries' profiles.
+    const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                             "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+    std::vector<Series> rmse_series, jnd_series;
+    int c = 0;
+    for (const TechniqueResult& r : b.results) {
+      if (!r.metrics) continue;  // native, when it is the reference, has none
+      const metrics::EccentricityProfile& p = r.metrics->mean.profile;
+      Series e{label(b, r), colours[c % 10], {}, {}, c >= 10};
+      Series v = e;
+      ++c;
+      for (size_t i = 0; i < p.acuity_rmse.size(); ++i) {
+        // Bins with almost no pixels (the screen's far corners) are noise.
+        if (!(p.pixels_fraction[i] >= 1e-3)) continue;
+        const double x = (static_cast<double>(i) + 0.5) * p.bin_deg;
+        e.x.push_back(x);
+        e.y.push_back(p.acuity_rmse[i]);
+        v.x.push_back(x);
+        v.y.push_back(p.jnd_mean[i]);
+      }
+      rmse_series.push_back(std::move(e));
+      jnd_series.push_back(std::move(v));
+    }
+    if (!rmse_series.empty()) {
+      const double bin = b.results.size() > 1 && b.results.back().metrics
+                             ? b.results.back().metrics->mean.profile.bin_deg
+                             : 1.0;
+      ChartOptions oe{"Acuity-filtered error against eccentricity (mean over the frames, " +
+                          fmt(bin, 1) + "-degree bins)",
+                      "eccentricity (degrees)", "acuity RMSE (8-bit luminance codes)", false};
+      ChartOptions ov{"Visibility against eccentricity (Barten CSF, Minkowski beta " +
+                          fmt(b.results.back().metrics->mean.contrast.pooling_beta, 0) + ")",
+                      "eccentricity (degrees)", "mean JND (1 = just noticeable)", false};
+      h << "<div class=chart id=\"chart-eccentricity\">" << svg_line_chart(rmse_series, oe)
+        << "</div>\n<div class=chart id=\"chart-eccentricity-jnd\">"
+        << svg_line_chart(jnd_series, ov) << "</div>\n";
+    }
+    // Frame-to-frame change per eccentricity band.
+    if (!b.results.empty()) {
+      std::vector<const TechniqueResult*> rows;
+      for (const TechniqueResult& r : b.results)
+        if (r.metrics && !r.metrics->flicker.bands.empty()) rows.push_back(&r);
+      if (!rows.empty()) {
+        const auto& bands = rows.front()->metrics->flicker.bands;
+        h << "<h3>Temporal change per eccentricity band</h3>\n<p class=note>Mean absolute "
+             "frame-to-frame change of the luminance codes, technique (native) and their ratio; "
+             "with a static camera the technique's change is its convergence, the last pair's "
+             "value whether it has settled.</p>\n<table id=\"flicker\"><tr><th>technique</th>";
+        for (const metrics::FlickerBand& fb : bands) {
+          h << "<th>" << fmt(fb.from_deg, 0)
+            << (std::isinf(fb.to_deg) ? "+" : "&ndash;" + fmt(fb.to_deg, 0)) << "&deg;</th>";
+        }
+        h << "</tr>\n";
+        auto cell = [](double v, int digits) { return std::isfinite(v) ? fmt(v, digits) : "-"; };
+        for (const TechniqueResult* r : rows) {
+          h << "<tr><td>" << label(b, *r) << "</td>";
+          for (const metrics::FlickerBand& fb : r->metrics->flicker.bands) {
+            h << "<td>" << cell(fb.test_change, 2) << " (" << cell(fb.reference_change, 2)
+              << "), &times;" << cell(fb.ratio, 2) << ", last " << cell(fb.test_change_last, 2)
+              << "</td>";
+          }
+          h << "</tr>\n";
+        }
+        h << "</table>\n";
+      }
+    }
   } else {
     h << "<p class=note>Not measured (--no-metrics).</p>\n";
   }
@@ -302,21 +416,42 @@ std::string html(const BenchResult& b) {
       << "</div>\n<div class=chart id=\"chart-sweep-quality\">" << svg_line_chart(s2, o2)
       << "</div>\n";
   }
-  // Crops: at the fovea and in the periphery (the screen corner farthest from the gaze).
+  // Crops: at the gaze, and in the periphery where the technique's acuity
+  // error in the last frame is largest (native cropped at the same place).
   const int gx = static_cast<int>(b.sample_gaze_px.x), gy = static_cast<int>(b.sample_gaze_px.y);
-  const int px = gx < W / 2 ? W - 1 : 0, py = gy < H / 2 ? H - 1 : 0;
   const int cs = std::clamp(std::min(W, H) / 4, 16, 160);
+  constexpr double kPeripheryDeg = 10.0;
   h << "<h2>Native and foveated, side by side</h2>\n<p class=note>Last measured frame; crops of "
-    << cs << "&times;" << cs
-    << " pixels at the gaze and in the farthest corner, shown at 2&times;.</p>\n<div class=crops>";
-  auto figure = [&](const Image& img, const std::string& name) {
-    h << "<figure>" << img_tag(crop(img, gx, gy, cs), name + " fovea", 2 * cs) << " "
-      << img_tag(crop(img, px, py, cs), name + " periphery", 2 * cs) << "<figcaption>" << name
-      << ": fovea | periphery</figcaption></figure>\n";
-  };
-  figure(b.native_sample, "native");
+    << cs << "&times;" << cs << " pixels shown at 2&times;: at the gaze, and where the "
+    << "technique's acuity-filtered error is largest at least " << fmt(kPeripheryDeg, 0)
+    << "&deg; from the gaze (anywhere when nothing lies that far), native beside it.</p>\n"
+       "<div class=crops>";
+  h << "<figure>" << img_tag(crop(b.native_sample, gx, gy, cs), "native fovea", 2 * cs)
+    << "<figcaption>native: fovea</figcaption></figure>\n";
   for (const TechniqueResult& r : b.results) {
-    if (r.technique != "native") figure(r.sample, label(b, r));
+    if (r.technique == "native") continue;
+    const std::string name = label(b, r);
+    std::string where;
+    int px = gx < W / 2 ? W - 1 : 0, py = gy < H / 2 ? H - 1 : 0;  // without images: the corner
+    if (!b.native_sample.empty() && r.sample.width == b.native_sample.width &&
+        r.sample.height == b.native_sample.height && b.display.width_px == W &&
+        b.display.height_px == H) {
+      AcuityModel model = b.options.session.acuity;
+      if (b.options.sweep.key == "slope" && r.sweep_value > 0) model.slope = r.sweep_value;
+      const metrics::Map err =
+          metrics::acuity_difference(b.native_sample, r.sample, b.display, b.sample_gaze_px, model);
+      const Worst worst = worst_window(err, b.display, b.sample_gaze_px, cs, kPeripheryDeg);
+      px = worst.x;
+      py = worst.y;
+      where = " at (" + std::to_string(px) + ", " + std::to_string(py) + "), " +
+              fmt(worst.ecc_deg, 1) + "&deg;, mean |acuity error| " + fmt(worst.mean_error, 2) +
+              " codes";
+    }
+    h << "<figure>" << img_tag(crop(r.sample, gx, gy, cs), name + " fovea", 2 * cs) << " "
+      << img_tag(crop(b.native_sample, px, py, cs), "native periphery", 2 * cs) << " "
+      << img_tag(crop(r.sample, px, py, cs), name + " periphery", 2 * cs) << "<figcaption>" << name
+      << ": fovea | native and " << name << " in the periphery" << where
+      << "</figcaption></figure>\n";
   }
   h << "</div>\n<h2>Error heat maps</h2>\n<p class=note>Left: absolute difference to native (black "
        "= none, white = "

@@ -1,52 +1,316 @@
-// The acuity-aware comparison: both images low-passed at every pixel to the
-// finest detail the eye resolves at that pixel's eccentricity, w(e) = m e + w0
-// degrees per cycle (Guenter et al. 2012, eq. 1), then compared.
+// The acuity-aware comparison: both images' linear luminance is split into
+// half-octave frequency bands, every pixel keeps the bands the eye resolves at
+// its eccentricity and drops the others, and the reconstructions are compared.
 //
-// The spatially varying Gaussian is built from a pyramid of Gaussian blurs in
-// half-octave steps of sigma. Level k (k >= 1) has sigma_k = 0.5 sqrt(2)^(k-1)
-// full-resolution pixels and is stored on a grid of step d_k, the largest power
-// of two not above sigma_k (so the level is sampled with at most ~1.7 %
-// aliasing). Reading a coarse level back with bilinear interpolation adds on
-// average d^2 / 6 of variance, which is subtracted from what the level itself
-// gets. Each level is made from the previous one with the missing variance (a
-// cascade: variances of Gaussians add), decimating by two when the grid step
-// doubles. A pixel whose sigma lies between sigma_k and sigma_k+1 blends the two
-// levels with weights chosen so that the blended variance equals sigma^2.
+// The eye resolves at eccentricity e detail down to w(e) = m e + w0 degrees per
+// cycle (Guenter et al. 2012, eq. 1, w in degrees per cycle as in the paper:
+// w0 = 1/48 deg is 48 cycles per degree), so the cutoff at a pixel is
+// f_c = 1 / (w(e) ppd) cycles per pixel, ppd the pixels per degree there.
+//
+// The ladder. Entry j (j >= 0) is the isotropic low-pass L_j with cutoff
+// c_j = c_0 2^(-j/2), c_0 = 0.5 * 2^(-1/4) cycles per pixel: 1 up to
+// c_j 2^(-1/4), 0 from c_j 2^(1/4), 0.5 - 0.5 sin(2 pi log2(f / c_j)) between
+// (a raised cosine over half an octave). Entry -1 is the image itself. A pixel
+// at ladder position lambda = 2 log2(c_0 / f_c) = m + s (m integer, s in
+// [0, 1)) takes (1 - s) E_m + s E_(m+1). As bands D_j = E_j - E_(j+1) this is:
+// weight 1 for the bands below the cutoff, 0 above it, 1 - s for the band D_m
+// that straddles it. The response to frequency f is 1 below 0.595 f_c, >= 0.965
+// at 0.7 f_c, <= 0.049 at 1.4 f_c and 0 from 1.68 f_c (acuity_response).
+//
+// The pyramid. Level n >= 1 is a grid of step 2^n pixels holding A_n = E_(2n+1)
+// and B_n = E_(2n+2), whose low-passes end at 0.354 and 0.25 cycles per sample:
+// level n's samples X_n come from level n-1 by a separable half-band filter and
+// decimation (24 taps, Kaiser-windowed sinc: flat to 0.15 % up to 0.177 cycles
+// per input sample, below 0.15 % from 0.323, so nothing aliases onto what A_n
+// keeps), and A_n, B_n are the exact radial filters applied with an FFT over a
+// mirror-padded domain. Level 0 (full resolution) holds E_0, E_1 and E_2, only
+// around the gaze where some pixel needs them (lambda < 3). Reconstruction runs
+// coarse to fine: R_N blends A_N and B_N; R_n blends A_n, B_n and
+// C_n = up(R_(n+1)) (the half-band filter as an interpolator); R_0 blends the
+// image, E_0, E_1, E_2 and C_0.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
 
+#include "fft.hpp"
 #include "foveate/core/error.hpp"
 #include "internal.hpp"
 
 namespace foveate::metrics {
 
+namespace detail {
+
 namespace {
 
-constexpr double kSigma1 = 0.5;  // sigma of level 1; level 0 is the image itself
-constexpr int kMaxLevels = 48;
+constexpr double kC0 = 0.42044820762685725;  // 0.5 * 2^(-1/4)
+constexpr int kMargin = 16;      // FFT domain: mirror padding around a level, in samples
+constexpr int kTileMargin = 24;  // level-0 tile: real neighbours kept around it, in pixels
+constexpr int kHalfTaps = 12;    // half-band filter: 2 * kHalfTaps taps
+constexpr double kKaiserBeta = 5.5;
 
-double level_sigma(int k) {
-  static const std::array<double, kMaxLevels + 2> table = [] {
-    std::array<double, kMaxLevels + 2> t{};
-    for (int i = 1; i < kMaxLevels + 2; ++i) t[i] = kSigma1 * std::pow(std::sqrt(2.0), i - 1);
+double bessel_i0(double x) {
+  double sum = 1.0, term = 1.0;
+  for (int k = 1; k < 100; ++k) {
+    term *= (0.5 * x / k) * (0.5 * x / k);
+    sum += term;
+    if (term < 1e-14 * sum) break;
+  }
+  return sum;
+}
+
+// The half-band kernel at distance d in fine samples: sinc(d / 2) under a Kaiser
+// window reaching zero at |d| = kHalfTaps (unnormalised).
+double half_band(double d) {
+  const double x = 0.5 * d;
+  const double sinc = x == 0.0 ? 1.0 : std::sin(std::numbers::pi * x) / (std::numbers::pi * x);
+  const double r = d / kHalfTaps;
+  if (std::fabs(r) >= 1.0) return 0.0;
+  return sinc * bessel_i0(kKaiserBeta * std::sqrt(1.0 - r * r)) / bessel_i0(kKaiserBeta);
+}
+
+struct HalfBandTaps {
+  // Decimation: out[j] = sum_t down[t] in[2 j + t + 1 - kHalfTaps], t < 2 kHalfTaps
+  // (output sample j lies half-way between inputs 2j and 2j + 1).
+  std::array<float, 2 * kHalfTaps> down{};
+  // Interpolation: fine 2j reads coarse j - kHalfTaps/2 .. j + kHalfTaps/2 - 1
+  // (it lies at coarse coordinate j - 1/4), fine 2j + 1 reads
+  // j - kHalfTaps/2 + 1 .. j + kHalfTaps/2 (coordinate j + 1/4).
+  std::array<float, kHalfTaps> up_even{}, up_odd{};
+};
+
+const HalfBandTaps& half_band_taps() {
+  static const HalfBandTaps taps = [] {
+    HalfBandTaps t;
+    double s = 0;
+    for (int i = 0; i < 2 * kHalfTaps; ++i) s += half_band(i + 1 - kHalfTaps - 0.5);
+    for (int i = 0; i < 2 * kHalfTaps; ++i) {
+      t.down[i] = static_cast<float>(half_band(i + 1 - kHalfTaps - 0.5) / s);
+    }
+    // Fine sample 2j at coarse coordinate j - 1/4 reads coarse j + u,
+    // u = -kHalfTaps/2 .. kHalfTaps/2 - 1, at fine distance 2 (u + 1/4).
+    double se = 0, so = 0;
+    for (int i = 0; i < kHalfTaps; ++i) {
+      se += half_band(2.0 * (i - kHalfTaps / 2 + 0.25));
+      so += half_band(2.0 * (i - kHalfTaps / 2 + 1 - 0.25));
+    }
+    for (int i = 0; i < kHalfTaps; ++i) {
+      t.up_even[i] = static_cast<float>(half_band(2.0 * (i - kHalfTaps / 2 + 0.25)) / se);
+      t.up_odd[i] = static_cast<float>(half_band(2.0 * (i - kHalfTaps / 2 + 1 - 0.25)) / so);
+    }
     return t;
   }();
-  return table[k];
+  return taps;
 }
 
-int level_step(int k) {
-  const double s = level_sigma(k);
-  int d = 1;
-  while (2.0 * d <= s + 1e-9) d *= 2;
-  return d;
+// Index into [0, n) by repeated whole-sample-symmetric reflection (x[-i] =
+// x[i]), which keeps a pixel checkerboard a checkerboard across the border.
+int mirror(int i, int n) {
+  if (n == 1) return 0;
+  const int p = 2 * (n - 1);
+  i %= p;
+  if (i < 0) i += p;
+  return i < n ? i : p - i;
 }
 
-double level_stored_variance(int k) {
-  const double s = level_sigma(k);
-  const int d = level_step(k);
-  return s * s - (d > 1 ? d * d / 6.0 : 0.0);
+// Halves a map in both directions (sizes rounded up) with the half-band filter.
+Map down(const Map& in) {
+  const HalfBandTaps& hb = half_band_taps();
+  const int w = in.width, h = in.height;
+  const int ow = (w + 1) / 2, oh = (h + 1) / 2;
+  constexpr int n = 2 * kHalfTaps;
+  const int lo = 1 - kHalfTaps;  // first input index read for output 0
+  Map rows(ow, h);
+  std::vector<float> pad(static_cast<size_t>(2 * ow + n));
+  for (int y = 0; y < h; ++y) {
+    const float* src = &in.values[static_cast<size_t>(y) * w];
+    for (int i = 0; i < static_cast<int>(pad.size()); ++i) pad[i] = src[mirror(i + lo, w)];
+    float* o = &rows.values[static_cast<size_t>(y) * ow];
+    for (int t = 0; t < n; ++t) {
+      const float c = hb.down[t];
+      const float* q = pad.data() + t;
+      for (int j = 0; j < ow; ++j) o[j] += c * q[2 * j];
+    }
+  }
+  Map out(ow, oh);
+  for (int j = 0; j < oh; ++j) {
+    float* o = &out.values[static_cast<size_t>(j) * ow];
+    for (int t = 0; t < n; ++t) {
+      const float c = hb.down[t];
+      const float* r = &rows.values[static_cast<size_t>(mirror(2 * j + t + lo, h)) * ow];
+      for (int x = 0; x < ow; ++x) o[x] += c * r[x];
+    }
+  }
+  return out;
+}
+
+// Doubles a map to (w, h) (each w, h at most twice the input's) with the
+// half-band interpolator.
+Map up(const Map& in, int w, int h) {
+  const HalfBandTaps& hb = half_band_taps();
+  const int cw = in.width, ch = in.height;
+  constexpr int half = kHalfTaps / 2;
+  // Columns first: (cw, ch) -> (cw, h).
+  Map cols(cw, h);
+  for (int y = 0; y < h; ++y) {
+    const int j = y / 2;
+    const bool odd = (y & 1) != 0;
+    const float* taps = odd ? hb.up_odd.data() : hb.up_even.data();
+    const int first = j - half + (odd ? 1 : 0);
+    float* o = &cols.values[static_cast<size_t>(y) * cw];
+    for (int t = 0; t < kHalfTaps; ++t) {
+      const float c = taps[t];
+      const float* r = &in.values[static_cast<size_t>(mirror(first + t, ch)) * cw];
+      for (int x = 0; x < cw; ++x) o[x] += c * r[x];
+    }
+  }
+  // Rows: (cw, h) -> (w, h), even and odd outputs separately.
+  Map out(w, h);
+  const int ne = (w + 1) / 2, no = w / 2;
+  std::vector<float> pad(static_cast<size_t>(ne + kHalfTaps + 1)), even(ne), oddv(no);
+  for (int y = 0; y < h; ++y) {
+    const float* src = &cols.values[static_cast<size_t>(y) * cw];
+    // pad[k] = coarse (k - half)
+    for (int k = 0; k < static_cast<int>(pad.size()); ++k) pad[k] = src[mirror(k - half, cw)];
+    std::fill(even.begin(), even.end(), 0.0f);
+    std::fill(oddv.begin(), oddv.end(), 0.0f);
+    for (int t = 0; t < kHalfTaps; ++t) {
+      const float ce = hb.up_even[t], co = hb.up_odd[t];
+      const float* qe = pad.data() + t;
+      const float* qo = pad.data() + t + 1;
+      for (int j = 0; j < ne; ++j) even[j] += ce * qe[j];
+      for (int j = 0; j < no; ++j) oddv[j] += co * qo[j];
+    }
+    float* o = &out.values[static_cast<size_t>(y) * w];
+    for (int j = 0; j < ne; ++j) o[2 * j] = even[j];
+    for (int j = 0; j < no; ++j) o[2 * j + 1] = oddv[j];
+  }
+  return out;
+}
+
+// The ladder low-passes of the given cutoffs (cycles per sample) of a w x h
+// region (row stride `stride`), by FFT over a mirror-padded domain.
+std::vector<Map> lowpass_bank(const float* src, int stride, int w, int h,
+                              const std::vector<double>& cutoffs) {
+  const int pw = fft_size(w + 2 * kMargin), ph = fft_size(h + 2 * kMargin);
+  std::vector<float> dom(static_cast<size_t>(pw) * ph);
+  std::vector<int> mx(pw);
+  for (int p = 0; p < pw; ++p) mx[p] = mirror(p - kMargin, w);
+  for (int q = 0; q < ph; ++q) {
+    const float* row = src + static_cast<size_t>(mirror(q - kMargin, h)) * stride;
+    float* d = &dom[static_cast<size_t>(q) * pw];
+    for (int p = 0; p < pw; ++p) d[p] = row[mx[p]];
+  }
+  const HalfSpectrum spectrum = rfft2(dom.data(), pw, ph);
+  const int hw = spectrum.stride();
+  // Radial frequency of every bin, in cycles per sample.
+  std::vector<float> rho(static_cast<size_t>(hw) * ph);
+  for (int ky = 0; ky < ph; ++ky) {
+    const double fy = static_cast<double>(ky <= ph / 2 ? ky : ky - ph) / ph;
+    for (int kx = 0; kx < hw; ++kx) {
+      const double fx = static_cast<double>(kx) / pw;
+      rho[static_cast<size_t>(ky) * hw + kx] = static_cast<float>(std::sqrt(fx * fx + fy * fy));
+    }
+  }
+  const float scale = 1.0f / (static_cast<float>(pw) * static_cast<float>(ph));
+  std::vector<Map> out;
+  for (double c : cutoffs) {
+    HalfSpectrum s = spectrum;
+    const float pass = static_cast<float>(c * std::exp2(-0.25));
+    const float stop = static_cast<float>(c * std::exp2(0.25));
+    for (size_t i = 0; i < rho.size(); ++i) {
+      const float r = rho[i];
+      float g = scale;
+      if (r >= stop) {
+        g = 0.0f;
+      } else if (r > pass) {
+        g *= static_cast<float>(ladder_lowpass(r, c));
+      }
+      s.re[i] *= g;
+      s.im[i] *= g;
+    }
+    irfft2(std::move(s), dom.data());
+    Map m(w, h);
+    for (int y = 0; y < h; ++y) {
+      std::copy_n(&dom[static_cast<size_t>(y + kMargin) * pw + kMargin], w,
+                  &m.values[static_cast<size_t>(y) * w]);
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+// Pixels per degree on a 16-pixel grid, interpolated bilinearly (it changes
+// slowly across the screen).
+class PpdGrid {
+ public:
+  PpdGrid(const Display& d, Vec2d gaze) {
+    nx_ = (d.width_px - 1) / kStep + 2;
+    ny_ = (d.height_px - 1) / kStep + 2;
+    v_.resize(static_cast<size_t>(nx_) * ny_);
+    for (int j = 0; j < ny_; ++j) {
+      for (int i = 0; i < nx_; ++i) {
+        v_[static_cast<size_t>(j) * nx_ + i] =
+            d.pixels_per_degree({i * kStep + 0.5, j * kStep + 0.5}, gaze);
+      }
+    }
+  }
+  // At image coordinates (u, v) (pixel centres at + 0.5).
+  [[nodiscard]] double at(double u, double v) const {
+    const double gx = std::clamp((u - 0.5) / kStep, 0.0, nx_ - 1.0);
+    const double gy = std::clamp((v - 0.5) / kStep, 0.0, ny_ - 1.0);
+    const int i = std::min(static_cast<int>(gx), nx_ - 2);
+    const int j = std::min(static_cast<int>(gy), ny_ - 2);
+    const double fx = gx - i, fy = gy - j;
+    const double* p0 = &v_[static_cast<size_t>(j) * nx_ + i];
+    const double* p1 = p0 + nx_;
+    const double top = p0[0] + fx * (p0[1] - p0[0]);
+    const double bot = p1[0] + fx * (p1[1] - p1[0]);
+    return top + fy * (bot - top);
+  }
+
+ private:
+  static constexpr int kStep = 16;
+  int nx_ = 0, ny_ = 0;
+  std::vector<double> v_;
+};
+
+float ladder_position(double mar_deg, double ppd) {
+  // lambda = 2 log2(c_0 / f_c) with f_c = 1 / (mar ppd) cycles per pixel.
+  return 2.0f * std::log2(static_cast<float>(kC0 * mar_deg * ppd));
+}
+
+// Bilinear read of a full-resolution map at image coordinates (u, v).
+float sample_at(const Map& m, double u, double v) {
+  const double gx = std::clamp(u - 0.5, 0.0, m.width - 1.0);
+  const double gy = std::clamp(v - 0.5, 0.0, m.height - 1.0);
+  const int i = std::min(static_cast<int>(gx), std::max(0, m.width - 2));
+  const int j = std::min(static_cast<int>(gy), std::max(0, m.height - 2));
+  const int i1 = std::min(i + 1, m.width - 1), j1 = std::min(j + 1, m.height - 1);
+  const float fx = static_cast<float>(gx - i), fy = static_cast<float>(gy - j);
+  const float top = m.at(i, j) + fx * (m.at(i1, j) - m.at(i, j));
+  const float bot = m.at(i, j1) + fx * (m.at(i1, j1) - m.at(i, j1));
+  return top + fy * (bot - top);
+}
+
+// Blend of a level's entries at position l (0 = first entry, 1 = second, ...).
+inline float blend(float l, const float* e, int count) {
+  if (!(l > 0.0f)) return e[0];
+  if (l >= static_cast<float>(count - 1)) return e[count - 1];
+  const int k = static_cast<int>(l);
+  const float s = l - static_cast<float>(k);
+  return e[k] + s * (e[k + 1] - e[k]);
+}
+
+}  // namespace
+
+double ladder_cutoff(int j) { return kC0 * std::exp2(-0.5 * j); }
+
+double ladder_lowpass(double rho, double c) {
+  if (!(rho > 0.0)) return 1.0;
+  const double t = std::log2(rho / c);
+  if (t <= -0.25) return 1.0;
+  if (t >= 0.25) return 0.0;
+  return 0.5 - 0.5 * std::sin(2.0 * std::numbers::pi * t);
 }
 
 void check_display(const Display& display, int width, int height, const char* what) {
@@ -58,128 +322,148 @@ void check_display(const Display& display, int width, int height, const char* wh
   }
 }
 
-// For every pixel: the lower bracketing level and the weight of the upper one.
-struct LevelChoice {
-  std::vector<std::uint8_t> lo;
-  std::vector<float> t;
-  int top = 0;  // highest level any pixel needs
-};
-
-LevelChoice choose_levels(const Map& sigma) {
-  LevelChoice c;
-  const size_t n = sigma.values.size();
-  c.lo.resize(n);
-  c.t.resize(n);
-  const int max_side = std::max(sigma.width, sigma.height);
-  int top = 0;
-  float smax = 0.0f;
-  for (float s : sigma.values) smax = std::max(smax, s);
-  while (top < kMaxLevels && level_sigma(top) < smax && level_step(top + 1) <= max_side) ++top;
-  c.top = top;
-  const double top_sigma = level_sigma(top);
-  for (size_t i = 0; i < n; ++i) {
-    const double s = sigma.values[i];
-    if (s >= top_sigma) {
-      c.lo[i] = static_cast<std::uint8_t>(top);
-      c.t[i] = 0.0f;
-      continue;
-    }
-    int k = 0;
-    if (s >= kSigma1) {
-      // floor(2 log2(s / sigma_1)) = floor(log2((s / sigma_1)^2)), the binary exponent.
-      k = 1 + std::ilogb((s / kSigma1) * (s / kSigma1));
-      k = std::clamp(k, 1, top - 1);
-      // Guard against rounding in log2 at exact level sigmas.
-      while (k > 1 && level_sigma(k) > s) --k;
-      while (k + 1 < top && level_sigma(k + 1) <= s) ++k;
-    }
-    const double a = level_sigma(k), b = level_sigma(k + 1);
-    c.lo[i] = static_cast<std::uint8_t>(k);
-    c.t[i] = static_cast<float>((s * s - a * a) / (b * b - a * a));
+PyramidGeometry pyramid_geometry(const Display& display, Vec2d gaze, const AcuityModel& acuity,
+                                 const Map* eccentricity) {
+  PyramidGeometry g;
+  const int w = display.width_px, h = display.height_px;
+  const PpdGrid ppd(display, gaze);
+  Map own;
+  if (!eccentricity) {
+    own = eccentricity_map(display, gaze);
+    eccentricity = &own;
   }
-  return c;
-}
-
-// Bilinear read-back of a level stored on a grid of step `step`: level sample j
-// sits at full-resolution coordinate (j + 0.5) * step.
-struct ReadBack {
-  std::vector<int> x0, y0;
-  std::vector<float> fx, fy;
-};
-
-void taps(int step, int n, int size, std::vector<int>& i0, std::vector<float>& f) {
-  i0.resize(n);
-  f.resize(n);
-  for (int x = 0; x < n; ++x) {
-    const double u = (x + 0.5) / step - 0.5;
-    const double fu = std::floor(u);
-    int a = static_cast<int>(fu);
-    double fr = u - fu;
-    if (a < 0) a = 0, fr = 0.0;
-    if (a >= size - 1) a = size - 1, fr = 0.0;
-    i0[x] = a;
-    f[x] = static_cast<float>(fr);
-  }
-}
-
-// Filters several linear-luminance maps with the same per-pixel sigma.
-std::vector<Map> filter_varying(const std::vector<const Map*>& inputs, const Map& sigma) {
-  const LevelChoice c = choose_levels(sigma);
-  const int w = sigma.width, h = sigma.height;
-  std::vector<int> steps(c.top + 1, 1);
-  for (int k = 1; k <= c.top; ++k) steps[k] = level_step(k);
-  std::vector<Map> outs;
-  for (const Map* in : inputs) {
-    // The whole pyramid (levels above 0); level 0 is the input.
-    std::vector<Map> levels(c.top + 1);
-    std::vector<ReadBack> rb(c.top + 1);
-    const Map* cur = in;
-    double var = 0.0;
-    int step = 1;
-    for (int k = 1; k <= c.top; ++k) {
-      const double target = level_stored_variance(k);
-      const double sigma_grid = std::sqrt(std::max(0.0, target - var)) / step;
-      const detail::Kernel kern = detail::gaussian_kernel(sigma_grid, steps[k] > step);
-      levels[k] = detail::filter2d(*cur, kern, kern);
-      cur = &levels[k];
-      var = target;
-      step = steps[k];
-      if (step > 1) {
-        taps(step, w, levels[k].width, rb[k].x0, rb[k].fx);
-        taps(step, h, levels[k].height, rb[k].y0, rb[k].fy);
+  LevelGeometry l0;
+  l0.w = w;
+  l0.h = h;
+  l0.lambda.resize(static_cast<size_t>(w) * h);
+  l0.ppd.resize(l0.lambda.size());
+  float lambda_max = -1e30f;
+  int bx0 = w, by0 = h, bx1 = 0, by1 = 0;  // bounding box of lambda < 3
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      const double e = eccentricity->values[i];
+      const double p = ppd.at(x + 0.5, y + 0.5);
+      const float lam = ladder_position(acuity.mar_deg(e), p);
+      l0.lambda[i] = lam;
+      l0.ppd[i] = static_cast<float>(p);
+      lambda_max = std::max(lambda_max, lam);
+      if (lam < 3.0f) {
+        bx0 = std::min(bx0, x), by0 = std::min(by0, y);
+        bx1 = std::max(bx1, x + 1), by1 = std::max(by1, y + 1);
       }
     }
-    auto sample = [&](int k, int x, int y) -> float {
-      const Map& m = k == 0 ? *in : levels[k];
-      if (steps[k] == 1) return m.values[static_cast<size_t>(y) * w + x];
-      const ReadBack& r = rb[k];
-      const int lw = m.width;
-      const float* r0 = &m.values[static_cast<size_t>(r.y0[y]) * lw];
-      const float* r1 = r.y0[y] + 1 < m.height ? r0 + lw : r0;
-      const int a = r.x0[x];
-      const int a1 = a + 1 < lw ? a + 1 : a;
-      const float fx = r.fx[x];
-      const float t0 = r0[a] + fx * (r0[a1] - r0[a]);
-      const float t1 = r1[a] + fx * (r1[a1] - r1[a]);
-      return t0 + r.fy[y] * (t1 - t0);
-    };
-    Map out(w, h);
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const size_t i = static_cast<size_t>(y) * w + x;
-        const int lo = c.lo[i];
-        const float t = c.t[i];
-        float v = sample(lo, x, y);
-        if (t != 0.0f) v += t * (sample(lo + 1, x, y) - v);
-        out.values[i] = v;
+  }
+  if (bx1 > bx0) {
+    g.tx0 = std::max(0, bx0 - kTileMargin);
+    g.ty0 = std::max(0, by0 - kTileMargin);
+    g.tx1 = std::min(w, bx1 + kTileMargin);
+    g.ty1 = std::min(h, by1 + kTileMargin);
+  }
+  // Levels up to N with 2N + 2 >= lambda_max (B_N's cutoff below every
+  // pixel's), while the grid keeps at least 2 x 2 samples.
+  int levels = std::max(1, static_cast<int>(std::ceil((lambda_max - 2.0f) / 2.0f)));
+  g.levels.push_back(std::move(l0));
+  for (int n = 1; n <= levels; ++n) {
+    const LevelGeometry& prev = g.levels.back();
+    if (n > 1 && (prev.w < 4 || prev.h < 4)) break;
+    LevelGeometry l;
+    l.w = (prev.w + 1) / 2;
+    l.h = (prev.h + 1) / 2;
+    l.lambda.resize(static_cast<size_t>(l.w) * l.h);
+    l.ppd.resize(l.lambda.size());
+    const double step = std::exp2(n);
+    for (int j = 0; j < l.h; ++j) {
+      for (int i = 0; i < l.w; ++i) {
+        const Vec2d p{(i + 0.5) * step, (j + 0.5) * step};
+        const double pp = ppd.at(p.x, p.y);
+        const size_t k = static_cast<size_t>(j) * l.w + i;
+        // Eccentricity is smooth at this scale: interpolated from the pixels'.
+        l.lambda[k] = ladder_position(acuity.mar_deg(sample_at(*eccentricity, p.x, p.y)), pp);
+        l.ppd[k] = static_cast<float>(pp);
       }
     }
-    outs.push_back(std::move(out));
+    g.levels.push_back(std::move(l));
   }
-  return outs;
+  return g;
 }
 
-}  // namespace
+AcuityPyramid acuity_pyramid(Map linear, const PyramidGeometry& g) {
+  AcuityPyramid p;
+  p.x0 = std::move(linear);
+  const int top = g.top();
+  p.a.resize(top + 1);
+  p.b.resize(top + 1);
+  p.c.resize(top + 1);
+  // Analysis: X_n by halving, A_n and B_n by the exact radial low-passes.
+  {
+    Map x = down(p.x0);
+    for (int n = 1; n <= top; ++n) {
+      std::vector<Map> bank = lowpass_bank(x.values.data(), x.width, x.width, x.height,
+                                           {ladder_cutoff(1), ladder_cutoff(2)});
+      p.a[n] = std::move(bank[0]);
+      p.b[n] = std::move(bank[1]);
+      if (n < top) x = down(x);
+    }
+  }
+  if (g.has_tile()) {
+    const int W = p.x0.width;
+    p.tile = lowpass_bank(&p.x0.values[static_cast<size_t>(g.ty0) * W + g.tx0], W, g.tx1 - g.tx0,
+                          g.ty1 - g.ty0, {ladder_cutoff(0), ladder_cutoff(1), ladder_cutoff(2)});
+  }
+  // Synthesis, coarse to fine.
+  Map r;
+  {
+    const LevelGeometry& lg = g.levels[top];
+    r = Map(lg.w, lg.h);
+    const float first = static_cast<float>(2 * top + 1);
+    for (size_t i = 0; i < r.values.size(); ++i) {
+      const float e[2] = {p.a[top].values[i], p.b[top].values[i]};
+      r.values[i] = blend(lg.lambda[i] - first, e, 2);
+    }
+  }
+  for (int n = top - 1; n >= 1; --n) {
+    const LevelGeometry& lg = g.levels[n];
+    p.c[n] = up(r, lg.w, lg.h);
+    r = Map(lg.w, lg.h);
+    const float first = static_cast<float>(2 * n + 1);
+    for (size_t i = 0; i < r.values.size(); ++i) {
+      const float e[3] = {p.a[n].values[i], p.b[n].values[i], p.c[n].values[i]};
+      r.values[i] = blend(lg.lambda[i] - first, e, 3);
+    }
+  }
+  const LevelGeometry& l0 = g.levels[0];
+  p.filtered = up(r, l0.w, l0.h);
+  if (g.has_tile()) {
+    const int tw = g.tx1 - g.tx0, th = g.ty1 - g.ty0;
+    p.c0_tile = Map(tw, th);
+    for (int y = 0; y < th; ++y) {
+      for (int x = 0; x < tw; ++x) {
+        const size_t i = static_cast<size_t>(g.ty0 + y) * l0.w + (g.tx0 + x);
+        const size_t t = static_cast<size_t>(y) * tw + x;
+        const float c0 = p.filtered.values[i];
+        p.c0_tile.values[t] = c0;
+        const float e[5] = {p.x0.values[i], p.tile[0].values[t], p.tile[1].values[t],
+                            p.tile[2].values[t], c0};
+        p.filtered.values[i] = blend(l0.lambda[i] + 1.0f, e, 5);
+      }
+    }
+  }
+  return p;
+}
+
+}  // namespace detail
+
+double acuity_response(double frequency, double cutoff) {
+  if (!(cutoff > 0.0)) throw Error("acuity_response: the cutoff must be > 0");
+  const double lambda = std::max(-1.0, 2.0 * std::log2(detail::ladder_cutoff(0) / cutoff));
+  const int m = static_cast<int>(std::floor(lambda));
+  const double s = lambda - m;
+  auto entry = [&](int j) {
+    return j < 0 ? 1.0 : detail::ladder_lowpass(frequency, detail::ladder_cutoff(j));
+  };
+  return (1.0 - s) * entry(m) + s * entry(m + 1);
+}
 
 Map eccentricity_map(const Display& display, Vec2d gaze) {
   Map m(display.width_px, display.height_px);
@@ -191,40 +475,12 @@ Map eccentricity_map(const Display& display, Vec2d gaze) {
   return m;
 }
 
-Map acuity_sigma_map(const Display& display, Vec2d gaze, const AcuityModel& acuity) {
-  return detail::acuity_sigma_from_eccentricity(eccentricity_map(display, gaze), display, gaze,
-                                                acuity);
-}
-
-Map detail::acuity_sigma_from_eccentricity(const Map& ecc, const Display& display, Vec2d gaze,
-                                           const AcuityModel& acuity) {
-  // Pixels per degree changes slowly across the screen: evaluate it exactly on
-  // a 16-pixel grid and interpolate bilinearly.
-  constexpr int kStep = 16;
-  const int w = display.width_px, h = display.height_px;
-  const int nx = (w - 1) / kStep + 2, ny = (h - 1) / kStep + 2;
-  std::vector<double> ppd(static_cast<size_t>(nx) * ny);
-  for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i < nx; ++i) {
-      ppd[static_cast<size_t>(j) * nx + i] =
-          display.pixels_per_degree({i * kStep + 0.5, j * kStep + 0.5}, gaze);
-    }
-  }
-  Map out(w, h);
-  for (int y = 0; y < h; ++y) {
-    const int j = y / kStep;
-    const double fy = double(y % kStep) / kStep;
-    for (int x = 0; x < w; ++x) {
-      const int i = x / kStep;
-      const double fx = double(x % kStep) / kStep;
-      const double* p0 = &ppd[static_cast<size_t>(j) * nx + i];
-      const double* p1 = p0 + nx;
-      const double top = p0[0] + fx * (p0[1] - p0[0]);
-      const double bot = p1[0] + fx * (p1[1] - p1[0]);
-      const double px_per_deg = top + fy * (bot - top);
-      const double period_px = acuity.mar_deg(double(ecc.at(x, y))) * px_per_deg;
-      out.at(x, y) = static_cast<float>(period_px / std::numbers::pi);
-    }
+Map acuity_cutoff_map(const Display& display, Vec2d gaze, const AcuityModel& acuity) {
+  const detail::PyramidGeometry g = detail::pyramid_geometry(display, gaze, acuity);
+  Map out(display.width_px, display.height_px);
+  const auto& l0 = g.levels[0];
+  for (size_t i = 0; i < out.values.size(); ++i) {
+    out.values[i] = static_cast<float>(detail::ladder_cutoff(0) * std::exp2(-0.5 * l0.lambda[i]));
   }
   return out;
 }
@@ -232,10 +488,9 @@ Map detail::acuity_sigma_from_eccentricity(const Map& ecc, const Display& displa
 Map acuity_filtered(const Image& image, const Display& display, Vec2d gaze,
                     const AcuityModel& acuity) {
   if (image.empty()) throw Error("acuity_filtered: the image is empty");
-  check_display(display, image.width, image.height, "acuity_filtered");
-  const Map lin = detail::luminance_linear(image);
-  const Map sigma = acuity_sigma_map(display, gaze, acuity);
-  Map out = std::move(filter_varying({&lin}, sigma)[0]);
+  detail::check_display(display, image.width, image.height, "acuity_filtered");
+  const detail::PyramidGeometry g = detail::pyramid_geometry(display, gaze, acuity);
+  Map out = detail::acuity_pyramid(detail::luminance_linear(image), g).filtered;
   for (float& v : out.values) v = detail::luminance_to_code(v);
   return out;
 }
@@ -243,20 +498,13 @@ Map acuity_filtered(const Image& image, const Display& display, Vec2d gaze,
 Map acuity_difference(const Image& reference, const Image& test, const Display& display, Vec2d gaze,
                       const AcuityModel& acuity) {
   detail::check_same_size(reference, test, "acuity_difference");
-  check_display(display, reference.width, reference.height, "acuity_difference");
-  return detail::acuity_difference_with_sigma(reference, test,
-                                              acuity_sigma_map(display, gaze, acuity));
-}
-
-Map detail::acuity_difference_with_sigma(const Image& reference, const Image& test,
-                                         const Map& sigma) {
-  const Map a = detail::luminance_linear(reference);
-  const Map b = detail::luminance_linear(test);
-  std::vector<Map> f = filter_varying({&a, &b}, sigma);
+  detail::check_display(display, reference.width, reference.height, "acuity_difference");
+  const detail::PyramidGeometry g = detail::pyramid_geometry(display, gaze, acuity);
+  const Map a = detail::acuity_pyramid(detail::luminance_linear(reference), g).filtered;
+  const Map b = detail::acuity_pyramid(detail::luminance_linear(test), g).filtered;
   Map out(reference.width, reference.height);
   for (size_t i = 0; i < out.values.size(); ++i) {
-    out.values[i] =
-        detail::luminance_to_code(f[0].values[i]) - detail::luminance_to_code(f[1].values[i]);
+    out.values[i] = detail::luminance_to_code(a.values[i]) - detail::luminance_to_code(b.values[i]);
   }
   return out;
 }

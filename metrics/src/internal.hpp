@@ -44,11 +44,58 @@ inline Map filter2d(const Map& in, const Kernel& kx, const Kernel& ky) {
   return filter_cols(filter_rows(in, kx), ky);
 }
 
-/// acuity_sigma_map from a precomputed eccentricity_map.
-Map acuity_sigma_from_eccentricity(const Map& eccentricity, const Display& display, Vec2d gaze,
-                                   const AcuityModel& acuity);
-/// acuity_difference with a precomputed acuity_sigma_map (sizes already checked).
-Map acuity_difference_with_sigma(const Image& reference, const Image& test, const Map& sigma);
+// ---- The acuity-aware band-pass pyramid (acuity.cpp, contrast.cpp) ----------
+
+/// Cutoff of ladder entry j in cycles per pixel: c_j = c_0 2^(-j/2) with
+/// c_0 = 0.5 * 2^(-1/4), so that the entry's low-pass ends at 0.5 cycles per
+/// sample on the grid that stores it.
+double ladder_cutoff(int j);
+/// The ladder's low-pass at radial frequency rho for cutoff c (same units): 1
+/// up to c 2^(-1/4), 0 from c 2^(1/4), a raised cosine in log2(rho) between.
+double ladder_lowpass(double rho, double c);
+
+/// Where every sample of every pyramid level lies on the ladder. Level n has
+/// (w, h) samples; sample (i, j) is the centre of pixels [i 2^n, (i+1) 2^n) x
+/// [j 2^n, (j+1) 2^n), at image coordinates ((i + 0.5) 2^n, (j + 0.5) 2^n).
+struct LevelGeometry {
+  int w = 0, h = 0;
+  std::vector<float> lambda;  ///< ladder position 2 log2(c_0 / f_c) of the sample
+  std::vector<float> ppd;     ///< pixels per degree there
+};
+
+struct PyramidGeometry {
+  std::vector<LevelGeometry> levels;  ///< 0 (the image's pixels) .. N
+  /// Level-0 region holding every pixel with lambda < 3 (plus a margin): only
+  /// there are the full-resolution ladder entries computed.
+  int tx0 = 0, ty0 = 0, tx1 = 0, ty1 = 0;
+  [[nodiscard]] int top() const { return static_cast<int>(levels.size()) - 1; }
+  [[nodiscard]] bool has_tile() const { return tx1 > tx0 && ty1 > ty0; }
+};
+
+/// The geometry for a display and gaze; `eccentricity` (optional) is the
+/// display's eccentricity_map, reused for level 0.
+PyramidGeometry pyramid_geometry(const Display& display, Vec2d gaze, const AcuityModel& acuity,
+                                 const Map* eccentricity = nullptr);
+
+/// One image's ladder entries and its acuity-filtered reconstruction (linear).
+struct AcuityPyramid {
+  Map x0;                    ///< the image's linear luminance (entry -1, the identity)
+  std::vector<Map> tile;     ///< entries 0, 1, 2 over the tile (full resolution)
+  Map c0_tile;               ///< C_0 over the tile
+  std::vector<Map> a, b, c;  ///< per level n >= 1: A_n, B_n and C_n = up(R_(n+1)) (n < N)
+  Map filtered;              ///< the reconstruction: linear luminance low-passed per pixel
+};
+
+/// Decomposes linear luminance and reconstructs it with every pixel's weights.
+AcuityPyramid acuity_pyramid(Map linear, const PyramidGeometry& geometry);
+
+/// Pooled JND per pixel (Barten's CSF on Peli's band-limited contrast, see
+/// contrast.cpp) from the two images' pyramids.
+Map jnd_from_pyramids(const AcuityPyramid& reference, const AcuityPyramid& test,
+                      const PyramidGeometry& geometry, const ContrastModel& contrast);
+
+/// Throws foveate::Error unless the display has the size w x h.
+void check_display(const Display& display, int width, int height, const char* what);
 
 /// Throws foveate::Error unless both images are non-empty and have the same size.
 void check_same_size(const Image& a, const Image& b, const std::string& what);

@@ -23,9 +23,24 @@ void detail::check_options(const QualityOptions& o) {
     if (i > 0 && e[i] <= e[i - 1]) throw Error("quality options: band edges must be ascending");
   }
   if (e.size() > 250) throw Error("quality options: at most 250 bands");
-  if (!(o.visible_threshold >= 0.0)) throw Error("quality options: visible_threshold must be >= 0");
+  if (!(o.jnd_threshold >= 0.0) || !std::isfinite(o.jnd_threshold)) {
+    throw Error("quality options: jnd_threshold must be finite and >= 0");
+  }
+  if (!(o.profile_bin_deg >= 0.1) || !std::isfinite(o.profile_bin_deg)) {
+    throw Error("quality options: profile_bin_deg must be finite and >= 0.1 degrees");
+  }
   if (!(o.acuity.slope > 0.0) || !(o.acuity.w0_deg > 0.0)) {
     throw Error("quality options: the acuity model needs slope > 0 and w0 > 0");
+  }
+  const ContrastModel& c = o.contrast;
+  if (!std::isfinite(c.peak_cd_m2) || !(c.black_cd_m2 > 0.0) || !(c.peak_cd_m2 > c.black_cd_m2)) {
+    throw Error("quality options: the contrast model needs 0 < black < peak (cd/m^2)");
+  }
+  if (!(c.field_deg > 0.0) || !std::isfinite(c.field_deg)) {
+    throw Error("quality options: the CSF field size must be > 0 degrees");
+  }
+  if (!(c.pooling_beta >= 1.0) || !std::isfinite(c.pooling_beta)) {
+    throw Error("quality options: the pooling exponent must be >= 1");
   }
 }
 
@@ -44,18 +59,14 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
                       const QualityOptions& options) {
   detail::check_same_size(reference, test, "compare");
   detail::check_options(options);
-  if (display.width_px != reference.width || display.height_px != reference.height) {
-    throw Error("compare: display '" + display.name + "' is " + std::to_string(display.width_px) +
-                "x" + std::to_string(display.height_px) + " but the images are " +
-                std::to_string(reference.width) + "x" + std::to_string(reference.height) +
-                " (use Display::resized)");
-  }
+  detail::check_display(display, reference.width, reference.height, "compare");
   const int w = reference.width, h = reference.height;
   const size_t n = static_cast<size_t>(w) * h;
   QualityReport r;
   r.width = w;
   r.height = h;
-  r.acuity_threshold = options.visible_threshold;
+  r.jnd_threshold = options.jnd_threshold;
+  r.contrast = options.contrast;
 
   // Per-pixel squared error (RGB mean) for the global and per-band PSNR.
   std::vector<float> sq(n);
@@ -70,8 +81,17 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
   }
   const Map ssim = ssim_map(reference, test);
   const Map ecc = eccentricity_map(display, gaze);
-  const Map diff = detail::acuity_difference_with_sigma(
-      reference, test, detail::acuity_sigma_from_eccentricity(ecc, display, gaze, options.acuity));
+  Map diff(w, h), jnd;
+  {
+    const detail::PyramidGeometry g = detail::pyramid_geometry(display, gaze, options.acuity, &ecc);
+    const detail::AcuityPyramid a = detail::acuity_pyramid(detail::luminance_linear(reference), g);
+    const detail::AcuityPyramid b = detail::acuity_pyramid(detail::luminance_linear(test), g);
+    for (size_t i = 0; i < n; ++i) {
+      diff.values[i] = detail::luminance_to_code(a.filtered.values[i]) -
+                       detail::luminance_to_code(b.filtered.values[i]);
+    }
+    jnd = detail::jnd_from_pyramids(a, b, g, options.contrast);
+  }
   Map flip;
   if (options.flip) {
     r.flip_ppd = display.pixels_per_degree(gaze, gaze);
@@ -81,22 +101,31 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
   const std::vector<std::uint8_t> band = band_indices(ecc, options.band_edges_deg);
   const size_t nb = options.band_edges_deg.size();
   struct Acc {
-    double sq = 0, ssim = 0, flip = 0, acu = 0, count = 0;
+    double sq = 0, ssim = 0, flip = 0, acu = 0, jnd = 0, visible = 0, count = 0;
   };
   std::vector<Acc> acc(nb + 1);  // the last one is the whole image
-  double visible = 0;
+  std::vector<Acc> bins;         // the eccentricity profile
+  const double bin_deg = options.profile_bin_deg;
   for (size_t i = 0; i < n; ++i) {
     const double d = diff.values[i];
-    visible += std::fabs(d) > options.visible_threshold ? 1.0 : 0.0;
+    const double j = jnd.values[i];
+    const double vis = j >= options.jnd_threshold ? 1.0 : 0.0;
     for (size_t k : {size_t(band[i]), nb}) {
       if (k > nb) continue;  // pixel below the first band edge
       Acc& x = acc[k];
       x.sq += sq[i];
       x.ssim += ssim.values[i];
       x.acu += d * d;
+      x.jnd += j;
+      x.visible += vis;
       x.count += 1;
       if (options.flip) x.flip += flip.values[i];
     }
+    const size_t bin = static_cast<size_t>(std::max(0.0, double(ecc.values[i]) / bin_deg));
+    if (bin >= bins.size()) bins.resize(bin + 1);
+    bins[bin].acu += d * d;
+    bins[bin].jnd += j;
+    bins[bin].count += 1;
   }
   auto psnr = [](const Acc& x) {
     if (x.count == 0) return kNaN;
@@ -107,7 +136,8 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
   r.psnr_db = psnr(all);
   r.ssim = all.ssim / all.count;
   r.acuity_rmse = std::sqrt(all.acu / all.count);
-  r.acuity_visible_fraction = visible / all.count;
+  r.jnd_mean = all.jnd / all.count;
+  r.visible_fraction = all.visible / all.count;
   r.flip_mean = options.flip ? all.flip / all.count : kNaN;
   for (size_t k = 0; k < nb; ++k) {
     BandStats b;
@@ -119,9 +149,17 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
       b.psnr_db = psnr(x);
       b.ssim = x.ssim / x.count;
       b.acuity_rmse = std::sqrt(x.acu / x.count);
+      b.jnd_mean = x.jnd / x.count;
+      b.visible_fraction = x.visible / x.count;
       if (options.flip) b.flip_mean = x.flip / x.count;
     }
     r.bands.push_back(b);
+  }
+  r.profile.bin_deg = bin_deg;
+  for (const Acc& x : bins) {
+    r.profile.pixels_fraction.push_back(x.count / all.count);
+    r.profile.acuity_rmse.push_back(x.count > 0 ? std::sqrt(x.acu / x.count) : kNaN);
+    r.profile.jnd_mean.push_back(x.count > 0 ? x.jnd / x.count : kNaN);
   }
   return r;
 }
@@ -134,10 +172,27 @@ nlohmann::json to_json(const QualityReport& r) {
   j["psnr_db"] = number(r.psnr_db);
   j["ssim"] = number(r.ssim);
   j["acuity_rmse"] = number(r.acuity_rmse);
-  j["acuity_visible_fraction"] = number(r.acuity_visible_fraction);
-  j["acuity_threshold"] = r.acuity_threshold;
+  j["jnd_mean"] = number(r.jnd_mean);
+  j["visible_fraction"] = number(r.visible_fraction);
+  j["jnd_threshold"] = r.jnd_threshold;
+  j["contrast_model"] = {{"csf", "Barten 1999 (simplified)"},
+                         {"peak_cd_m2", r.contrast.peak_cd_m2},
+                         {"black_cd_m2", r.contrast.black_cd_m2},
+                         {"field_deg", r.contrast.field_deg},
+                         {"pooling_beta", r.contrast.pooling_beta}};
   j["flip_mean"] = number(r.flip_mean);
   j["flip_ppd"] = number(r.flip_ppd);
+  nlohmann::json fractions = nlohmann::json::array(), rmse = nlohmann::json::array(),
+                 jnd = nlohmann::json::array();
+  for (size_t i = 0; i < r.profile.acuity_rmse.size(); ++i) {
+    fractions.push_back(number(r.profile.pixels_fraction[i]));
+    rmse.push_back(number(r.profile.acuity_rmse[i]));
+    jnd.push_back(number(r.profile.jnd_mean[i]));
+  }
+  j["eccentricity_profile"] = {{"bin_deg", r.profile.bin_deg},
+                               {"pixels_fraction", fractions},
+                               {"acuity_rmse", rmse},
+                               {"jnd_mean", jnd}};
   nlohmann::json bands = nlohmann::json::array();
   for (const BandStats& b : r.bands) {
     bands.push_back({{"from_deg", b.from_deg},
@@ -147,6 +202,8 @@ nlohmann::json to_json(const QualityReport& r) {
                      {"psnr_db", number(b.psnr_db)},
                      {"ssim", number(b.ssim)},
                      {"acuity_rmse", number(b.acuity_rmse)},
+                     {"jnd_mean", number(b.jnd_mean)},
+                     {"visible_fraction", number(b.visible_fraction)},
                      {"flip_mean", number(b.flip_mean)}});
   }
   j["bands"] = bands;
@@ -160,6 +217,17 @@ nlohmann::json to_json(const QualitySummary& s) {
   j["flicker_ratio"] = number(s.flicker.ratio);
   j["flicker_reference_change"] = number(s.flicker.reference_change);
   j["flicker_test_change"] = number(s.flicker.test_change);
+  nlohmann::json bands = nlohmann::json::array();
+  for (const FlickerBand& b : s.flicker.bands) {
+    bands.push_back({{"from_deg", b.from_deg},
+                     {"to_deg", number(b.to_deg)},
+                     {"reference_change", number(b.reference_change)},
+                     {"test_change", number(b.test_change)},
+                     {"test_change_last", number(b.test_change_last)},
+                     {"excess_change", number(b.excess_change)},
+                     {"ratio", number(b.ratio)}});
+  }
+  j["flicker_bands"] = bands;
   return j;
 }
 

@@ -1,5 +1,6 @@
 // Quality over a sequence of frames: the per-frame reports averaged field by
 // field, and peripheral flicker.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -14,18 +15,29 @@ namespace {
 // QualityReport or BandStats goes into one of these lists (or, when it is the
 // same in every frame, is copied in mean_report); the static_asserts count the
 // fields so that none is left out. to_json then writes it.
-constexpr std::array kReportMeans{
-    &QualityReport::psnr_db,     &QualityReport::ssim,
-    &QualityReport::acuity_rmse, &QualityReport::acuity_visible_fraction,
-    &QualityReport::flip_mean,   &QualityReport::flip_ppd};
-constexpr std::array kBandMeans{&BandStats::psnr_db, &BandStats::ssim, &BandStats::pixels_fraction,
-                                &BandStats::flip_mean, &BandStats::acuity_rmse};
+constexpr std::array kReportMeans{&QualityReport::psnr_db,          &QualityReport::ssim,
+                                  &QualityReport::acuity_rmse,      &QualityReport::jnd_mean,
+                                  &QualityReport::visible_fraction, &QualityReport::flip_mean,
+                                  &QualityReport::flip_ppd};
+constexpr std::array kBandMeans{&BandStats::psnr_db,         &BandStats::ssim,
+                                &BandStats::pixels_fraction, &BandStats::flip_mean,
+                                &BandStats::acuity_rmse,     &BandStats::jnd_mean,
+                                &BandStats::visible_fraction};
+constexpr std::array kProfileMeans{&EccentricityProfile::pixels_fraction,
+                                   &EccentricityProfile::acuity_rmse,
+                                   &EccentricityProfile::jnd_mean};
 
 // Besides the averaged numbers: from_deg and to_deg.
 static_assert(sizeof(BandStats) == (kBandMeans.size() + 2) * sizeof(double),
               "a field was added to BandStats: average it in kBandMeans (series.cpp)");
-// Besides the averaged numbers: acuity_threshold, width, height and the bands.
+// Besides the averaged vectors: bin_deg.
+static_assert(sizeof(EccentricityProfile) ==
+                  sizeof(double) + kProfileMeans.size() * sizeof(std::vector<double>),
+              "a field was added to EccentricityProfile: average it in kProfileMeans (series.cpp)");
+// Besides the averaged numbers: jnd_threshold, the profile, the contrast
+// model, width, height and the bands.
 static_assert(sizeof(QualityReport) == (kReportMeans.size() + 1) * sizeof(double) +
+                                           sizeof(EccentricityProfile) + sizeof(ContrastModel) +
                                            2 * sizeof(int) + sizeof(std::vector<BandStats>),
               "a field was added to QualityReport: average it in kReportMeans (series.cpp)");
 
@@ -69,7 +81,8 @@ QualityReport mean_report(const std::vector<QualityReport>& reports) {
   const QualityReport& first = reports.front();
   out.width = first.width;
   out.height = first.height;
-  out.acuity_threshold = first.acuity_threshold;
+  out.jnd_threshold = first.jnd_threshold;
+  out.contrast = first.contrast;
   out.bands = first.bands;  // the edges; the numbers are replaced below
   std::vector<const QualityReport*> all;
   for (const QualityReport& r : reports) all.push_back(&r);
@@ -79,6 +92,24 @@ QualityReport mean_report(const std::vector<QualityReport>& reports) {
     for (const QualityReport& r : reports) band.push_back(&r.bands[b]);
     average(band, kBandMeans, out.bands[b]);
   }
+  // The profile, bin by bin; frames whose eccentricities end earlier (the gaze
+  // moved) have no value for the outer bins.
+  out.profile.bin_deg = first.profile.bin_deg;
+  size_t bins = 0;
+  for (const QualityReport& r : reports) bins = std::max(bins, r.profile.acuity_rmse.size());
+  for (auto field : kProfileMeans) {
+    std::vector<double>& dst = out.profile.*field;
+    dst.assign(bins, kNaN);
+    for (size_t i = 0; i < bins; ++i) {
+      Mean m;
+      for (const QualityReport& r : reports) {
+        const std::vector<double>& v = r.profile.*field;
+        // A frame without the bin has no pixels there.
+        m.add(i < v.size() ? v[i] : (field == &EccentricityProfile::pixels_fraction ? 0.0 : kNaN));
+      }
+      dst[i] = m.value();
+    }
+  }
   return out;
 }
 
@@ -87,7 +118,7 @@ QualityReport mean_report(const std::vector<QualityReport>& reports) {
 QualitySeries::QualitySeries(Display display, QualityOptions options, double flicker_min_ecc_deg)
     : display_(std::move(display)),
       options_(std::move(options)),
-      flicker_(display_, flicker_min_ecc_deg) {
+      flicker_(display_, flicker_min_ecc_deg, options_.band_edges_deg) {
   detail::check_options(options_);
 }
 
@@ -106,6 +137,7 @@ QualitySummary QualitySeries::summary() const {
   s.flicker.reference_change = flicker_.reference_change();
   s.flicker.test_change = flicker_.test_change();
   s.flicker.frame_pairs = flicker_.frame_pairs();
+  s.flicker.bands = flicker_.bands();
   return s;
 }
 

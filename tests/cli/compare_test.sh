@@ -42,10 +42,12 @@ check "identical: says so, PSNR inf, SSIM 1" '[[ "$out" == *"identical images"* 
 check "identical: acuity error 0" '[[ "$out" == *"RMSE 0.000"* ]]'
 
 json=$("$F" compare "$tmp/ref.png" "$tmp/same.png" --json)
-check "identical json: psnr null, identical true, ssim 1, acuity 0, flip 0" 'python3 -c "
+check "identical json: psnr null, identical true, ssim 1, acuity 0, JND 0, flip 0" 'python3 -c "
 import json,sys; j=json.loads(sys.argv[1])
 assert j[\"psnr_db\"] is None and j[\"identical\"] is True and j[\"ssim\"] == 1.0
-assert j[\"acuity_rmse\"] == 0 and j[\"acuity_visible_fraction\"] == 0 and j[\"flip_mean\"] == 0
+assert j[\"acuity_rmse\"] == 0 and j[\"jnd_mean\"] == 0 and j[\"visible_fraction\"] == 0 and j[\"flip_mean\"] == 0
+assert j[\"jnd_threshold\"] == 1 and j[\"contrast_model\"][\"peak_cd_m2\"] == 100
+assert all(v in (0, None) for v in j[\"eccentricity_profile\"][\"acuity_rmse\"])
 assert len(j[\"bands\"]) == 4 and all(b[\"identical\"] and b[\"psnr_db\"] is None for b in j[\"bands\"])
 assert j[\"bands\"][3][\"to_deg\"] is None and abs(sum(b[\"pixels_fraction\"] for b in j[\"bands\"]) - 1) < 1e-9
 " "$json"'
@@ -56,6 +58,7 @@ import json,sys,math; j=json.loads(sys.argv[1]); p=10*math.log10(255**2/25)
 assert abs(j[\"psnr_db\"]-p) < 1e-6 and j[\"identical\"] is False, j[\"psnr_db\"]
 assert all(abs(b[\"psnr_db\"]-p) < 1e-6 for b in j[\"bands\"])
 assert 0.9 < j[\"ssim\"] < 1 and j[\"acuity_rmse\"] > 0 and 0 < j[\"flip_mean\"] < 1
+assert j[\"jnd_mean\"] > 0 and 0 <= j[\"visible_fraction\"] <= 1
 assert j[\"acuity\"][\"slope\"] == 0.022 and j[\"display\"][\"width_px\"] == 320
 " "$json"'
 
@@ -68,12 +71,12 @@ assert r[\"flip_mean\"] is None and r[\"psnr_db\"] == l[\"psnr_db\"]
 assert r[\"acuity_rmse\"] < l[\"acuity_rmse\"]
 " "$right" "$left"'
 
-"$F" compare "$tmp/ref.png" "$tmp/noise5.png" --heatmap "$tmp/h.png" --acuity-heatmap "$tmp/a.png" >/dev/null
+"$F" compare "$tmp/ref.png" "$tmp/noise5.png" --heatmap "$tmp/h.png" --acuity-heatmap "$tmp/a.png" --jnd-heatmap "$tmp/j.png" >/dev/null
 check "heatmaps written as PNG of the image size" 'python3 -c "
 import struct,sys
 for p in sys.argv[1:]:
     b=open(p,\"rb\").read(24); assert b[:8]==b\"\\x89PNG\\r\\n\\x1a\\n\"; assert struct.unpack(\">II\", b[16:24])==(320,180)
-" "$tmp/h.png" "$tmp/a.png"'
+" "$tmp/h.png" "$tmp/a.png" "$tmp/j.png"'
 check "no temporary files left" '[[ -z $(ls "$tmp" | grep -v "\.png$") ]]'
 
 err=$("$F" compare "$tmp/ref.png" "$tmp/small.png" 2>&1); rc=$?
@@ -82,12 +85,21 @@ err=$("$F" compare "$tmp/ref.png" "$tmp/missing.png" 2>&1); rc=$?
 check "missing file: non-zero exit, file named" '[[ $rc -ne 0 && "$err" == *missing.png* ]]'
 err=$("$F" compare "$tmp/corrupt.png" "$tmp/ref.png" 2>&1); rc=$?
 check "corrupt file: non-zero exit, file named" '[[ $rc -ne 0 && "$err" == *corrupt.png* ]]'
-for args in "--gaze 12" "--quality Z" "--quality A --slope 0.02" "--slope -1" "--display nope" "--threshold -1" "--heatmap-max 0"; do
+lo=$("$F" compare "$tmp/ref.png" "$tmp/noise5.png" --json --no-flip --threshold 0.5)
+hi=$("$F" compare "$tmp/ref.png" "$tmp/noise5.png" --json --no-flip --threshold 50)
+dim=$("$F" compare "$tmp/ref.png" "$tmp/noise5.png" --json --no-flip --peak-luminance 5)
+check "--threshold sets the JND counted as visible; --peak-luminance the CSF's adaptation" 'python3 -c "
+import json,sys; lo,hi,dim=(json.loads(a) for a in sys.argv[1:])
+assert lo[\"jnd_threshold\"] == 0.5 and hi[\"jnd_threshold\"] == 50
+assert lo[\"visible_fraction\"] > hi[\"visible_fraction\"] and lo[\"jnd_mean\"] == hi[\"jnd_mean\"]
+assert dim[\"contrast_model\"][\"peak_cd_m2\"] == 5 and dim[\"jnd_mean\"] < lo[\"jnd_mean\"]
+" "$lo" "$hi" "$dim"'
+for args in "--gaze 12" "--quality Z" "--quality A --slope 0.02" "--slope -1" "--display nope" "--threshold -1" "--heatmap-max 0" "--jnd-heatmap-max 0" "--peak-luminance 0.1"; do
   err=$("$F" compare "$tmp/ref.png" "$tmp/same.png" $args 2>&1); rc=$?
   check "bad value '$args' fails with a message" '[[ $rc -ne 0 && -n "$err" ]]'
 done
 err=$("$F" compare "$tmp/ref.png" 2>&1); rc=$?
 check "missing argument fails" '[[ $rc -ne 0 ]]'
-"$F" compare --help | grep -q -- --acuity-heatmap
+"$F" compare --help | grep -q -- --jnd-heatmap
 check "help lists options" '[[ $? -eq 0 ]]'
 exit $fail

@@ -22,5 +22,15 @@ check = json.loads(html.unescape(m.group(1)))
 print("report self-check:", check)
 ok = check["errors"] == 0 and check["broken"] == 0 and check["images"] >= 8 and check["charts"] >= 1 and check["bars"] >= 5
 print("ok: report loads, images decode, charts draw" if ok else "FAIL: report self-check")
+if "Not measured" not in dom:  # the --no-metrics fallback has no quality sections
+    # The error against eccentricity, the temporal table, and periphery crops
+    # placed where the error is largest, at least 10 degrees from the gaze.
+    places = re.findall(r"in the periphery at \(\d+, \d+\), ([0-9.]+)(?:&deg;|\u00b0)", dom)
+    degrees = [float(p) for p in places]
+    good = ('id="chart-eccentricity"' in dom and 'id="flicker"' in dom and len(degrees) >= 4
+            and all(d >= 10 for d in degrees))
+    print(("ok: " if good else "FAIL: ") + "eccentricity chart, temporal table, periphery crops at "
+          + str(degrees) + " degrees")
+    ok = ok and good
 sys.exit(0 if ok else 1)
 PY

@@ -1,6 +1,7 @@
 // QualitySeries: means over frames, computed against compare() frame by frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -99,7 +100,7 @@ TEST(Series, MeansOverFramesOfEveryField) {
   o.acuity = AcuityModel::quality("A");
   QualitySeries series(d, o);
   std::vector<QualityReport> single;
-  FlickerTracker flicker(d, 10.0);
+  FlickerTracker flicker(d, 10.0, o.band_edges_deg);
   for (size_t k = 0; k < f.test.size(); ++k) {
     series.add(f.reference[k], f.test[k], f.gaze[k]);
     single.push_back(compare(f.reference[k], f.test[k], d, f.gaze[k], o));
@@ -111,7 +112,8 @@ TEST(Series, MeansOverFramesOfEveryField) {
   EXPECT_EQ(s.identical_frames, 1);
   EXPECT_EQ(s.mean.width, kW);
   EXPECT_EQ(s.mean.height, kH);
-  EXPECT_EQ(s.mean.acuity_threshold, o.visible_threshold);
+  EXPECT_EQ(s.mean.jnd_threshold, o.jnd_threshold);
+  EXPECT_EQ(s.mean.contrast.peak_cd_m2, o.contrast.peak_cd_m2);
 
   // Over the image.
   auto overall = [&](double QualityReport::*field) {
@@ -122,8 +124,9 @@ TEST(Series, MeansOverFramesOfEveryField) {
   expect_same(s.mean.psnr_db, overall(&QualityReport::psnr_db), "psnr_db");
   expect_same(s.mean.ssim, overall(&QualityReport::ssim), "ssim");
   expect_same(s.mean.acuity_rmse, overall(&QualityReport::acuity_rmse), "acuity_rmse");
-  expect_same(s.mean.acuity_visible_fraction, overall(&QualityReport::acuity_visible_fraction),
-              "acuity_visible_fraction");
+  expect_same(s.mean.jnd_mean, overall(&QualityReport::jnd_mean), "jnd_mean");
+  expect_same(s.mean.visible_fraction, overall(&QualityReport::visible_fraction),
+              "visible_fraction");
   expect_same(s.mean.flip_mean, overall(&QualityReport::flip_mean), "flip_mean");
   expect_same(s.mean.flip_ppd, overall(&QualityReport::flip_ppd), "flip_ppd");
   // PSNR in dB over the two frames that differ, not over all three.
@@ -146,7 +149,34 @@ TEST(Series, MeansOverFramesOfEveryField) {
     expect_same(s.mean.bands[b].flip_mean, band(&BandStats::flip_mean), "flip_mean" + at);
     expect_same(s.mean.bands[b].pixels_fraction, band(&BandStats::pixels_fraction),
                 "pixels_fraction" + at);
+    expect_same(s.mean.bands[b].jnd_mean, band(&BandStats::jnd_mean), "jnd_mean" + at);
+    expect_same(s.mean.bands[b].visible_fraction, band(&BandStats::visible_fraction),
+                "visible_fraction" + at);
   }
+
+  // The eccentricity profile, bin by bin (the gaze moved in frame 1, so the
+  // frames reach different largest eccentricities).
+  size_t bins = 0;
+  for (const QualityReport& r : single) bins = std::max(bins, r.profile.acuity_rmse.size());
+  ASSERT_EQ(s.mean.profile.acuity_rmse.size(), bins);
+  EXPECT_EQ(s.mean.profile.bin_deg, 1.0);
+  for (size_t i = 0; i < bins; ++i) {
+    std::vector<double> rmse, jnd, fraction;
+    for (const QualityReport& r : single) {
+      rmse.push_back(i < r.profile.acuity_rmse.size() ? r.profile.acuity_rmse[i] : kNaN);
+      jnd.push_back(i < r.profile.jnd_mean.size() ? r.profile.jnd_mean[i] : kNaN);
+      fraction.push_back(i < r.profile.pixels_fraction.size() ? r.profile.pixels_fraction[i] : 0.0);
+    }
+    const std::string at = " of profile bin " + std::to_string(i);
+    expect_same(s.mean.profile.acuity_rmse[i], expected_mean(rmse), "acuity_rmse" + at);
+    expect_same(s.mean.profile.jnd_mean[i], expected_mean(jnd), "jnd_mean" + at);
+    expect_same(s.mean.profile.pixels_fraction[i], expected_mean(fraction), "pixels_fraction" + at);
+  }
+  // The offsets lie between 10 and 20 degrees: nothing within 5 degrees, and
+  // the annulus's inner part (away from its edges, where the step is blurred
+  // into the neighbouring bins) has an error.
+  for (size_t i = 0; i < 5; ++i) EXPECT_EQ(s.mean.profile.acuity_rmse[i], 0.0) << i;
+  EXPECT_GT(s.mean.profile.acuity_rmse[15], 1.0);
 
   // The band with the offsets: known PSNR per frame (a uniform +4 is 16 squared
   // codes per channel, +8 is 64), and the means differ from the last frame's.
@@ -172,8 +202,14 @@ TEST(Series, MeansOverFramesOfEveryField) {
   EXPECT_TRUE(std::isinf(s.mean.bands[0].psnr_db));
   EXPECT_EQ(s.mean.bands[0].ssim, 1.0);
 
-  // Flicker: the tracker's figures, once.
+  // Flicker: the tracker's figures, once, and per band.
   EXPECT_EQ(s.flicker.ratio, flicker.ratio());
+  ASSERT_EQ(s.flicker.bands.size(), 4u);
+  for (size_t b = 0; b < 4; ++b) {
+    EXPECT_EQ(s.flicker.bands[b].test_change, flicker.bands()[b].test_change);
+    EXPECT_EQ(s.flicker.bands[b].ratio, flicker.bands()[b].ratio);
+    EXPECT_EQ(s.flicker.bands[b].from_deg, o.band_edges_deg[b]);
+  }
   EXPECT_EQ(s.flicker.reference_change, flicker.reference_change());
   EXPECT_EQ(s.flicker.test_change, flicker.test_change());
   EXPECT_EQ(s.flicker.frame_pairs, 2);
@@ -195,16 +231,31 @@ TEST(Series, JsonKeysAndNulls) {
 
   std::set<std::string> keys;
   for (const auto& [k, v] : j.items()) keys.insert(k);
-  const std::set<std::string> expect_keys{
-      "width",     "height",   "frames",        "identical_frames",         "identical",
-      "psnr_db",   "ssim",     "acuity_rmse",   "acuity_visible_fraction",  "acuity_threshold",
-      "flip_mean", "flip_ppd", "flicker_ratio", "flicker_reference_change", "flicker_test_change",
-      "bands"};
+  const std::set<std::string> expect_keys{"width",
+                                          "height",
+                                          "frames",
+                                          "identical_frames",
+                                          "identical",
+                                          "psnr_db",
+                                          "ssim",
+                                          "acuity_rmse",
+                                          "jnd_mean",
+                                          "visible_fraction",
+                                          "jnd_threshold",
+                                          "contrast_model",
+                                          "eccentricity_profile",
+                                          "flip_mean",
+                                          "flip_ppd",
+                                          "flicker_ratio",
+                                          "flicker_reference_change",
+                                          "flicker_test_change",
+                                          "flicker_bands",
+                                          "bands"};
   EXPECT_EQ(keys, expect_keys);
   ASSERT_EQ(j["bands"].size(), 4u);
-  const std::set<std::string> expect_band_keys{"from_deg",    "to_deg",   "pixels_fraction",
-                                               "identical",   "psnr_db",  "ssim",
-                                               "acuity_rmse", "flip_mean"};
+  const std::set<std::string> expect_band_keys{
+      "from_deg", "to_deg",      "pixels_fraction", "identical",        "psnr_db",
+      "ssim",     "acuity_rmse", "jnd_mean",        "visible_fraction", "flip_mean"};
   for (const auto& band : j["bands"]) {
     std::set<std::string> band_keys;
     for (const auto& [k, v] : band.items()) band_keys.insert(k);
@@ -219,6 +270,27 @@ TEST(Series, JsonKeysAndNulls) {
   EXPECT_EQ(j["bands"][2]["flip_mean"].get<double>(), s.mean.bands[2].flip_mean);
   EXPECT_EQ(j["flicker_ratio"].get<double>(), s.flicker.ratio);
   EXPECT_EQ(j["flicker_test_change"].get<double>(), s.flicker.test_change);
+  EXPECT_EQ(j["jnd_mean"].get<double>(), s.mean.jnd_mean);
+  EXPECT_EQ(j["bands"][2]["jnd_mean"].get<double>(), s.mean.bands[2].jnd_mean);
+  EXPECT_EQ(j["contrast_model"]["peak_cd_m2"].get<double>(), 100.0);
+  EXPECT_EQ(j["contrast_model"]["pooling_beta"].get<double>(), 4.0);
+  const auto& prof = j["eccentricity_profile"];
+  EXPECT_EQ(prof["bin_deg"].get<double>(), 1.0);
+  ASSERT_EQ(prof["acuity_rmse"].size(), s.mean.profile.acuity_rmse.size());
+  EXPECT_EQ(prof["jnd_mean"].size(), prof["acuity_rmse"].size());
+  EXPECT_EQ(prof["pixels_fraction"].size(), prof["acuity_rmse"].size());
+  EXPECT_EQ(prof["acuity_rmse"][15].get<double>(), s.mean.profile.acuity_rmse[15]);
+  ASSERT_EQ(j["flicker_bands"].size(), 4u);
+  const std::set<std::string> expect_flicker_keys{
+      "from_deg",      "to_deg", "reference_change", "test_change", "test_change_last",
+      "excess_change", "ratio"};
+  for (const auto& band : j["flicker_bands"]) {
+    std::set<std::string> band_keys;
+    for (const auto& [k, v] : band.items()) band_keys.insert(k);
+    EXPECT_EQ(band_keys, expect_flicker_keys);
+  }
+  EXPECT_EQ(j["flicker_bands"][2]["test_change"].get<double>(), s.flicker.bands[2].test_change);
+  EXPECT_TRUE(j["flicker_bands"][3]["to_deg"].is_null());
   // Non-finite numbers are null: the band identical in every frame (+inf PSNR)
   // and the outermost band's upper edge.
   EXPECT_TRUE(j["bands"][0]["psnr_db"].is_null());

@@ -52,11 +52,13 @@ int main(int argc, char** argv) {
   std::printf("ssim               %8.1f\n", time_ms(repeats, [&] { sink = ssim(a, b); }));
   std::printf("eccentricity map   %8.1f\n",
               time_ms(repeats, [&] { sink = eccentricity_map(d, gaze).values[0]; }));
-  std::printf("acuity sigma map   %8.1f\n",
-              time_ms(repeats, [&] { sink = acuity_sigma_map(d, gaze, o.acuity).values[0]; }));
+  std::printf("acuity cutoff map  %8.1f\n",
+              time_ms(repeats, [&] { sink = acuity_cutoff_map(d, gaze, o.acuity).values[0]; }));
   std::printf("acuity difference  %8.1f\n", time_ms(repeats, [&] {
                 sink = acuity_difference(a, b, d, gaze, o.acuity).values[0];
               }));
+  std::printf("jnd map            %8.1f\n",
+              time_ms(repeats, [&] { sink = jnd_map(a, b, d, gaze, o).values[0]; }));
   std::printf("flip               %8.1f\n",
               time_ms(repeats, [&] { sink = flip_map(a, b, 38.8).values[0]; }));
   FlickerTracker ft(d);

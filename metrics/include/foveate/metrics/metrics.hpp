@@ -10,8 +10,11 @@
 //    (Y = 0.2126 R + 0.7152 G + 0.0722 B), re-encoded with the sRGB curve to
 //    0..255, i.e. the grey level that has the same luminance. For grey pixels
 //    it equals the stored value.
-//  * The acuity-aware error filters linear luminance (the eye blurs light, not
-//    code values), then compares the filtered images in luminance codes.
+//  * The acuity-aware error splits linear luminance (the eye blurs light, not
+//    code values) into half-octave bands, keeps at every pixel the bands the
+//    eye resolves at its eccentricity, and compares the reconstructions in
+//    luminance codes. The same bands, as local band-limited contrast weighted
+//    by Barten's contrast sensitivity, give the visibility in JND units.
 //  * Eccentricity comes from Display::eccentricity_deg at pixel centres
 //    (x + 0.5, y + 0.5) and the gaze point in pixels.
 #include <cstdint>
@@ -49,6 +52,30 @@ struct BandStats {
   double pixels_fraction = 0;  ///< share of the image's pixels in the band
   double flip_mean = kNaN;     ///< mean FLIP over the band; NaN when not computed or empty
   double acuity_rmse = kNaN;   ///< acuity-filtered RMSE over the band (luminance codes)
+  double jnd_mean = kNaN;      ///< mean pooled JND over the band
+  double visible_fraction = kNaN;  ///< share of the band's pixels with pooled JND >= the threshold
+};
+
+/// The acuity error and the JND against eccentricity, in bins of equal width:
+/// bin i holds the pixels with eccentricity in [i bin_deg, (i + 1) bin_deg).
+/// The vectors reach the bin of the largest eccentricity in the image; a bin
+/// without pixels is NaN (0 in pixels_fraction).
+struct EccentricityProfile {
+  double bin_deg = 1.0;
+  std::vector<double> pixels_fraction;  ///< share of the image's pixels in the bin
+  std::vector<double> acuity_rmse;      ///< RMS acuity-filtered difference (luminance codes)
+  std::vector<double> jnd_mean;         ///< mean pooled JND
+};
+
+/// How luminance differences become JNDs: the display's luminance and the
+/// parameters of Barten's contrast sensitivity function (metrics/README.md).
+struct ContrastModel {
+  double peak_cd_m2 = 100.0;  ///< luminance of white (code 255), cd/m^2
+  /// Luminance of black, including reflected ambient light, cd/m^2 (> 0): the
+  /// display shows L = black + (peak - black) Y for linear luminance Y.
+  double black_cd_m2 = 0.5;
+  double field_deg = 10.0;    ///< X of Barten's CSF: the angular size of the field
+  double pooling_beta = 4.0;  ///< Minkowski exponent of the pooling over bands
 };
 
 struct QualityReport {
@@ -57,24 +84,30 @@ struct QualityReport {
   std::vector<BandStats> bands;
   /// RMS difference of the acuity-filtered images, in 8-bit luminance codes.
   double acuity_rmse = kNaN;
-  /// Share of pixels whose acuity-filtered difference exceeds `acuity_threshold`.
-  double acuity_visible_fraction = kNaN;
-  double acuity_threshold = 0;  ///< the threshold used (luminance codes)
-  double flip_mean = kNaN;      ///< NaN if not computed
-  double flip_ppd = kNaN;       ///< pixels per degree FLIP was evaluated at (at the gaze)
+  /// Mean pooled JND (jnd_map) over the image.
+  double jnd_mean = kNaN;
+  /// Share of pixels whose pooled JND is at least `jnd_threshold`.
+  double visible_fraction = kNaN;
+  double jnd_threshold = 1.0;  ///< the threshold used (JND)
+  double flip_mean = kNaN;     ///< NaN if not computed
+  double flip_ppd = kNaN;      ///< pixels per degree FLIP was evaluated at (at the gaze)
+  EccentricityProfile profile;
+  ContrastModel contrast;  ///< the model the JNDs were computed with
   int width = 0;
   int height = 0;
 };
 
 struct QualityOptions {
   AcuityModel acuity;
+  ContrastModel contrast;
   bool flip = true;
   /// Lower edges of the eccentricity bands in degrees, ascending; the last
   /// band extends to infinity. Pixels below the first edge belong to no band.
   std::vector<double> band_edges_deg{0, 5, 10, 20};
-  /// A filtered difference above this many 8-bit luminance codes counts as
-  /// visible (3 codes = 1.2 % of full scale; a conservative detection level).
-  double visible_threshold = 3.0;
+  /// Width of the bins of QualityReport::profile, degrees.
+  double profile_bin_deg = 1.0;
+  /// A pixel whose pooled JND reaches this counts as visibly different.
+  double jnd_threshold = 1.0;
 };
 
 // ---- Whole-frame comparison -------------------------------------------------
@@ -88,7 +121,9 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
 /// The report as JSON. Non-finite numbers become null: an infinite PSNR is
 /// written as "psnr_db": null with "identical": true (also per band), an
 /// undefined value (empty band, FLIP not computed) as null with "identical": false.
-/// The outermost band's "to_deg" is null (infinity).
+/// The outermost band's "to_deg" is null (infinity). Keys: see
+/// docs/bench-json.md ("jnd_mean", "visible_fraction", "jnd_threshold",
+/// "contrast_model", "eccentricity_profile" besides the older ones).
 nlohmann::json to_json(const QualityReport& report);
 
 // ---- Individual metrics ------------------------------------------------------
@@ -109,24 +144,47 @@ Map luminance_codes(const Image& image);
 /// Display::eccentricity_deg of every pixel centre.
 Map eccentricity_map(const Display& display, Vec2d gaze_px);
 
-/// Standard deviation in pixels of the acuity low-pass at every pixel:
-/// sigma = period / pi, with period = w(e) * ppd pixels per cycle the finest
-/// resolvable detail. The Gaussian's response exp(-2 pi^2 sigma^2 f^2) is then
-/// exp(-2) = 0.135 at the cutoff f = 1/period, 0.61 at half of it and
-/// exp(-8) = 0.0003 at twice it.
-Map acuity_sigma_map(const Display& display, Vec2d gaze_px, const AcuityModel& acuity);
+/// The finest detail the eye resolves at every pixel, as a frequency in cycles
+/// per pixel: f_c = 1 / (w(e) ppd), w(e) = m e + w0 degrees per cycle (Guenter
+/// et al. 2012, eq. 1) and ppd the display's pixels per degree at the pixel.
+Map acuity_cutoff_map(const Display& display, Vec2d gaze_px, const AcuityModel& acuity);
+
+/// The acuity filter's response to a grating of `frequency` at a pixel whose
+/// cutoff is `cutoff`, both in cycles per pixel (the filter's ladder of
+/// half-octave steps is fixed in cycles per pixel; where the cutoff falls
+/// between two steps sets the value within these ranges): 1 below
+/// 0.595 cutoff, >= 0.965 at 0.7 cutoff, 0.36..0.64 at the cutoff, <= 0.049 at
+/// 1.4 cutoff, 0 from 1.68 cutoff (metrics/README.md). Throws unless cutoff > 0.
+double acuity_response(double frequency, double cutoff);
 
 /// The image's linear luminance low-passed per pixel to what the eye resolves
-/// there, returned in luminance codes. Implementation: a Gaussian pyramid in
-/// half-octave steps (sigma 0.5 * sqrt(2)^k px), each level kept at the coarsest
-/// grid that still samples it well (grid step <= sigma), read back with bilinear
-/// interpolation and blended between the two levels that bracket the pixel's
-/// sigma so that the blended variance matches sigma^2.
+/// there (acuity_response at the pixel's acuity_cutoff_map), returned in
+/// luminance codes. Implementation: a pyramid of half-octave bands (isotropic
+/// low-passes by FFT on grids halved with a half-band filter), weighted per
+/// pixel and summed; see metrics/README.md.
 Map acuity_filtered(const Image& image, const Display& display, Vec2d gaze_px,
                     const AcuityModel& acuity);
 /// acuity_filtered(reference) - acuity_filtered(test) at every pixel (codes).
 Map acuity_difference(const Image& reference, const Image& test, const Display& display,
                       Vec2d gaze_px, const AcuityModel& acuity);
+
+/// Barten's simplified contrast sensitivity function (P. G. J. Barten, "Contrast
+/// Sensitivity of the Human Eye and Its Effects on Image Quality", 1999):
+///   S(u) = a u exp(-b u) sqrt(1 + c exp(b u)),
+///   a = 540 (1 + 0.7 / L)^-0.2 / (1 + 12 / (X (1 + u / 3)^2)),
+///   b = 0.3 (1 + 100 / L)^0.15, c = 0.06,
+/// u in cycles per degree, L the adapting luminance in cd/m^2, X the field
+/// size in degrees. 1 / S is the threshold (Michelson) contrast. 0 for u <= 0.
+double barten_csf(double u_cpd, double luminance_cd_m2, double field_deg);
+
+/// Pooled visibility of the difference at every pixel in JND units: the
+/// difference of the images' local band-limited contrasts (Peli 1990) in every
+/// band of the acuity pyramid, times barten_csf at the band's centre frequency
+/// and the local adapting luminance, weighted by the band's acuity weight and
+/// pooled over bands with a Minkowski sum (ContrastModel::pooling_beta). A
+/// grating of contrast 1 / S(u) gives 1. Identical images give exactly 0.
+Map jnd_map(const Image& reference, const Image& test, const Display& display, Vec2d gaze_px,
+            const QualityOptions& options = {});
 
 /// Per-pixel LDR-FLIP (Andersson et al. 2020, "FLIP: A Difference Evaluator
 /// for Alternating Images") in [0, 1] at `pixels_per_degree`.
@@ -137,44 +195,71 @@ std::vector<std::uint8_t> band_indices(const Map& eccentricity, const std::vecto
 
 // ---- Temporal stability ------------------------------------------------------
 
-/// Peripheral flicker: feed consecutive frames of native (`ref`) and of the
-/// technique (`test`) rendered with the same camera. Over the pixels beyond
-/// `min_ecc_deg` (current frame's gaze), the mean absolute frame-to-frame change
-/// of the luminance codes is accumulated for both; ratio() = test / reference
-/// (1 = as stable as native, above 1 = the periphery twinkles).
+/// Frame-to-frame change over one eccentricity band (luminance codes per pixel).
+struct FlickerBand {
+  double from_deg = 0;             ///< inclusive
+  double to_deg = kInf;            ///< exclusive; infinity for the outermost band
+  double reference_change = kNaN;  ///< mean |frame-to-frame change| of the reference frames
+  double test_change = kNaN;       ///< the same for the test frames
+  /// test_change in the last frame pair only: with a static camera, whether
+  /// the technique has settled by the end of the sequence.
+  double test_change_last = kNaN;
+  double excess_change = kNaN;  ///< mean |test change - reference change| per pixel
+  /// test_change / reference_change: 1 when neither changed, +inf when only the test did.
+  double ratio = kNaN;
+};
+
+/// Temporal stability: feed consecutive frames of the reference (`ref`) and of
+/// the technique (`test`) rendered with the same camera. Per eccentricity band
+/// (current frame's gaze) and over the pixels beyond `min_ecc_deg`, the mean
+/// absolute frame-to-frame change of the luminance codes is accumulated for
+/// both. With a moving camera ratio() = test / reference says how much more
+/// the technique flickers than the reference (1 = as stable); with a static
+/// camera the test's change itself is the convergence of the technique (0 once
+/// it has settled).
 class FlickerTracker {
  public:
-  /// The display is resized to the frames' size when it differs (same field of view).
-  explicit FlickerTracker(Display display = {}, double min_ecc_deg = 10.0);
+  /// The display is resized to the frames' size when it differs (same field
+  /// of view). `band_edges_deg`: lower edges of the bands, ascending.
+  explicit FlickerTracker(Display display = {}, double min_ecc_deg = 10.0,
+                          std::vector<double> band_edges_deg = {0, 5, 10, 20});
   void add(const Image& ref, const Image& test, Vec2d gaze_px);
-  /// test change / reference change over all frame pairs. NaN before two
-  /// frames; 1 when neither changed; +inf when only the test changed.
+  /// Beyond min_ecc_deg: test change / reference change over all frame pairs.
+  /// NaN before two frames; 1 when neither changed; +inf when only the test changed.
   [[nodiscard]] double ratio() const;
   /// Mean absolute frame-to-frame change per peripheral pixel (luminance codes).
   [[nodiscard]] double reference_change() const;
   [[nodiscard]] double test_change() const;
-  /// Mean |test change - reference change|: temporal change native does not have.
+  /// Mean |test change - reference change|: temporal change the reference does not have.
   [[nodiscard]] double excess_change() const;
+  /// The same figures per eccentricity band (NaN where a band had no pixels).
+  [[nodiscard]] std::vector<FlickerBand> bands() const;
   [[nodiscard]] int frame_pairs() const { return pairs_; }
   void reset();
 
  private:
+  struct Sums {
+    double ref = 0, test = 0, excess = 0, count = 0;
+    double last_test = 0, last_count = 0;
+  };
   Display display_;
   double min_ecc_deg_;
+  std::vector<double> edges_;
   Map prev_ref_, prev_test_;
-  double sum_ref_ = 0, sum_test_ = 0, sum_excess_ = 0;
-  double count_ = 0;
+  Sums periphery_;
+  std::vector<Sums> bands_;
   int pairs_ = 0;
 };
 
 // ---- Over a sequence of frames -----------------------------------------------
 
-/// Peripheral flicker over a sequence (the figures of FlickerTracker).
+/// Frame-to-frame change over a sequence (the figures of FlickerTracker).
 struct FlickerSummary {
-  double ratio = kNaN;             ///< test_change / reference_change (FlickerTracker::ratio)
-  double reference_change = kNaN;  ///< native's mean |frame-to-frame change| (luminance codes)
+  double ratio = kNaN;             ///< beyond 10 degrees: test_change / reference_change
+  double reference_change = kNaN;  ///< reference's mean |frame-to-frame change| (luminance codes)
   double test_change = kNaN;       ///< the same for the test frames
   int frame_pairs = 0;             ///< consecutive frame pairs measured
+  std::vector<FlickerBand> bands;  ///< per eccentricity band (QualityOptions::band_edges_deg)
 };
 
 /// Quality of a sequence of test frames against their reference frames.
@@ -185,14 +270,17 @@ struct QualitySummary {
   /// the frames: the mean of the finite per-frame values, +inf when there were
   /// none but some were +inf (PSNR of frames all identical, in the image or in
   /// the band), NaN when none was defined. PSNR is thereby averaged in dB over
-  /// the frames that differ. width, height, acuity_threshold and the band
+  /// the frames that differ. The profile's bins are averaged the same way,
+  /// bin by bin. width, height, jnd_threshold, the contrast model and the band
   /// edges are the frames' own (the same in every frame).
   QualityReport mean;
   FlickerSummary flicker;
 };
 
 /// The quality of a sequence: every frame is compared with compare() and fed
-/// to a FlickerTracker; summary() averages the reports over the frames.
+/// to a FlickerTracker (with the options' bands); summary() averages the
+/// reports over the frames. The reference may be native or a supersampled
+/// frame; with a static camera the flicker figures measure convergence.
 class QualitySeries {
  public:
   /// `display` must have the frames' size (Display::resized). Throws
@@ -218,8 +306,10 @@ class QualitySeries {
 
 /// The summary as JSON: to_json(summary.mean) (same keys and conventions as a
 /// single report; "identical" is true when every frame was identical) plus
-/// "frames", "identical_frames", "flicker_ratio", "flicker_reference_change"
-/// and "flicker_test_change". Non-finite numbers are null.
+/// "frames", "identical_frames", "flicker_ratio", "flicker_reference_change",
+/// "flicker_test_change" and "flicker_bands" (one object per band:
+/// "from_deg", "to_deg", "reference_change", "test_change",
+/// "test_change_last", "excess_change", "ratio"). Non-finite numbers are null.
 nlohmann::json to_json(const QualitySummary& summary);
 
 // ---- Pictures for reports ----------------------------------------------------
