@@ -300,7 +300,7 @@ std::string html(const BenchResult& b) {
     names.push_back(label(b, r));
     speed.push_back(r.speedup);
     bound.push_back(1.0 / r.pixel_ratio);
-    if (r.technique == "native") continue;  // the quality reference itself
+    if (!r.metrics) continue;  // the reference itself (native unless supersampled)
     qnames.push_back(label(b, r));
     ssim.push_back(quality_value(r, mean_ssim));
     acuity.push_back(quality_value(r, mean_acuity_rmse));
@@ -418,28 +418,33 @@ std::string html(const BenchResult& b) {
   }
   // Crops: at the gaze, and in the periphery where the technique's acuity
   // error in the last frame is largest (native cropped at the same place).
+  // What the technique is judged against: native, or the supersampled reference.
+  const bool supersampled = !b.reference_sample.empty();
+  const Image& ref = supersampled ? b.reference_sample : b.native_sample;
+  const std::string ref_name = supersampled ? "reference" : "native";
   const int gx = static_cast<int>(b.sample_gaze_px.x), gy = static_cast<int>(b.sample_gaze_px.y);
   const int cs = std::clamp(std::min(W, H) / 4, 16, 160);
   constexpr double kPeripheryDeg = 10.0;
-  h << "<h2>Native and foveated, side by side</h2>\n<p class=note>Last measured frame; crops of "
-    << cs << "&times;" << cs << " pixels shown at 2&times;: at the gaze, and where the "
+  h << "<h2>Foveated beside the " << ref_name
+    << ", side by side</h2>\n<p class=note>Last measured frame; crops of " << cs << "&times;" << cs
+    << " pixels shown at 2&times;: at the gaze, and where the "
     << "technique's acuity-filtered error is largest at least " << fmt(kPeripheryDeg, 0)
-    << "&deg; from the gaze (anywhere when nothing lies that far), native beside it.</p>\n"
+    << "&deg; from the gaze (anywhere when nothing lies that far), the " << ref_name
+    << " beside it.</p>\n"
        "<div class=crops>";
-  h << "<figure>" << img_tag(crop(b.native_sample, gx, gy, cs), "native fovea", 2 * cs)
-    << "<figcaption>native: fovea</figcaption></figure>\n";
+  h << "<figure>" << img_tag(crop(ref, gx, gy, cs), ref_name + " fovea", 2 * cs) << "<figcaption>"
+    << ref_name << ": fovea</figcaption></figure>\n";
   for (const TechniqueResult& r : b.results) {
-    if (r.technique == "native") continue;
+    if (!supersampled && r.technique == "native") continue;
     const std::string name = label(b, r);
     std::string where;
     int px = gx < W / 2 ? W - 1 : 0, py = gy < H / 2 ? H - 1 : 0;  // without images: the corner
-    if (!b.native_sample.empty() && r.sample.width == b.native_sample.width &&
-        r.sample.height == b.native_sample.height && b.display.width_px == W &&
-        b.display.height_px == H) {
+    if (!ref.empty() && r.sample.width == ref.width && r.sample.height == ref.height &&
+        b.display.width_px == W && b.display.height_px == H) {
       AcuityModel model = b.options.session.acuity;
       if (b.options.sweep.key == "slope" && r.sweep_value > 0) model.slope = r.sweep_value;
       const metrics::Map err =
-          metrics::acuity_difference(b.native_sample, r.sample, b.display, b.sample_gaze_px, model);
+          metrics::acuity_difference(ref, r.sample, b.display, b.sample_gaze_px, model);
       const Worst worst = worst_window(err, b.display, b.sample_gaze_px, cs, kPeripheryDeg);
       px = worst.x;
       py = worst.y;
@@ -448,23 +453,30 @@ std::string html(const BenchResult& b) {
               " codes";
     }
     h << "<figure>" << img_tag(crop(r.sample, gx, gy, cs), name + " fovea", 2 * cs) << " "
-      << img_tag(crop(b.native_sample, px, py, cs), "native periphery", 2 * cs) << " "
+      << img_tag(crop(ref, px, py, cs), ref_name + " periphery", 2 * cs) << " "
       << img_tag(crop(r.sample, px, py, cs), name + " periphery", 2 * cs) << "<figcaption>" << name
-      << ": fovea | native and " << name << " in the periphery" << where
+      << ": fovea | " << ref_name << " and " << name << " in the periphery" << where
       << "</figcaption></figure>\n";
   }
-  h << "</div>\n<h2>Error heat maps</h2>\n<p class=note>Left: absolute difference to native (black "
+  h << "</div>\n<h2>Error heat maps</h2>\n<p class=note>Left: absolute difference to the "
+    << ref_name
+    << " (black "
        "= none, white = "
        "64/255 or more). Right: the difference after both images are low-pass filtered to what the "
        "eye resolves at "
        "each eccentricity.</p>\n<div class=crops>";
   for (const TechniqueResult& r : b.results) {
-    if (r.technique == "native" || r.heatmap.empty()) continue;
+    if (r.heatmap.empty()) continue;
     h << "<figure>" << img_tag(r.heatmap, label(b, r) + " error", std::min(W, 480)) << " "
       << img_tag(r.acuity_heatmap, label(b, r) + " acuity error", std::min(W, 480))
       << "<figcaption>" << label(b, r) << "</figcaption></figure>\n";
   }
   h << "</div>\n<h2>Full frames</h2>\n<div class=crops>";
+  if (supersampled) {
+    h << "<figure>" << img_tag(ref, "reference frame", std::min(W, 640))
+      << "<figcaption>reference (" << b.options.reference << "&times;" << b.options.reference
+      << " supersampled native)</figcaption></figure>";
+  }
   h << "<figure>" << img_tag(b.native_sample, "native frame", std::min(W, 640))
     << "<figcaption>native</figcaption></figure>";
   for (const TechniqueResult& r : b.results) {
