@@ -81,11 +81,13 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
   }
   const Map ssim = ssim_map(reference, test);
   const Map ecc = eccentricity_map(display, gaze);
-  Map diff(w, h), jnd;
+  Map diff(w, h), jnd, lum_ref, lum_test;
   {
     const detail::PyramidGeometry g = detail::pyramid_geometry(display, gaze, options.acuity, &ecc);
     const detail::AcuityPyramid a = detail::acuity_pyramid(detail::luminance_linear(reference), g);
     const detail::AcuityPyramid b = detail::acuity_pyramid(detail::luminance_linear(test), g);
+    lum_ref = a.x0;
+    lum_test = b.x0;
     for (size_t i = 0; i < n; ++i) {
       diff.values[i] = detail::luminance_to_code(a.filtered.values[i]) -
                        detail::luminance_to_code(b.filtered.values[i]);
@@ -102,6 +104,7 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
   const size_t nb = options.band_edges_deg.size();
   struct Acc {
     double sq = 0, ssim = 0, flip = 0, acu = 0, jnd = 0, visible = 0, count = 0;
+    double lum_ref = 0, lum_test = 0;  // linear luminance sums
   };
   std::vector<Acc> acc(nb + 1);  // the last one is the whole image
   std::vector<Acc> bins;         // the eccentricity profile
@@ -119,6 +122,8 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
       x.jnd += j;
       x.visible += vis;
       x.count += 1;
+      x.lum_ref += lum_ref.values[i];
+      x.lum_test += lum_test.values[i];
       if (options.flip) x.flip += flip.values[i];
     }
     const size_t bin = static_cast<size_t>(std::max(0.0, double(ecc.values[i]) / bin_deg));
@@ -138,6 +143,8 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
   r.acuity_rmse = std::sqrt(all.acu / all.count);
   r.jnd_mean = all.jnd / all.count;
   r.visible_fraction = all.visible / all.count;
+  auto ratio = [](const Acc& x) { return x.lum_ref > 0 ? x.lum_test / x.lum_ref : kNaN; };
+  r.luminance_ratio = ratio(all);
   r.flip_mean = options.flip ? all.flip / all.count : kNaN;
   for (size_t k = 0; k < nb; ++k) {
     BandStats b;
@@ -151,6 +158,7 @@ QualityReport compare(const Image& reference, const Image& test, const Display& 
       b.acuity_rmse = std::sqrt(x.acu / x.count);
       b.jnd_mean = x.jnd / x.count;
       b.visible_fraction = x.visible / x.count;
+      b.luminance_ratio = ratio(x);
       if (options.flip) b.flip_mean = x.flip / x.count;
     }
     r.bands.push_back(b);
@@ -174,6 +182,7 @@ nlohmann::json to_json(const QualityReport& r) {
   j["acuity_rmse"] = number(r.acuity_rmse);
   j["jnd_mean"] = number(r.jnd_mean);
   j["visible_fraction"] = number(r.visible_fraction);
+  j["luminance_ratio"] = number(r.luminance_ratio);
   j["jnd_threshold"] = r.jnd_threshold;
   j["contrast_model"] = {{"csf", "Barten 1999 (simplified)"},
                          {"peak_cd_m2", r.contrast.peak_cd_m2},
@@ -204,6 +213,7 @@ nlohmann::json to_json(const QualityReport& r) {
                      {"acuity_rmse", number(b.acuity_rmse)},
                      {"jnd_mean", number(b.jnd_mean)},
                      {"visible_fraction", number(b.visible_fraction)},
+                     {"luminance_ratio", number(b.luminance_ratio)},
                      {"flip_mean", number(b.flip_mean)}});
   }
   j["bands"] = bands;

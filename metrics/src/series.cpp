@@ -15,14 +15,14 @@ namespace {
 // QualityReport or BandStats goes into one of these lists (or, when it is the
 // same in every frame, is copied in mean_report); the static_asserts count the
 // fields so that none is left out. to_json then writes it.
-constexpr std::array kReportMeans{&QualityReport::psnr_db,          &QualityReport::ssim,
-                                  &QualityReport::acuity_rmse,      &QualityReport::jnd_mean,
-                                  &QualityReport::visible_fraction, &QualityReport::flip_mean,
-                                  &QualityReport::flip_ppd};
-constexpr std::array kBandMeans{&BandStats::psnr_db,         &BandStats::ssim,
-                                &BandStats::pixels_fraction, &BandStats::flip_mean,
-                                &BandStats::acuity_rmse,     &BandStats::jnd_mean,
-                                &BandStats::visible_fraction};
+constexpr std::array kReportMeans{
+    &QualityReport::luminance_ratio, &QualityReport::psnr_db,  &QualityReport::ssim,
+    &QualityReport::acuity_rmse,     &QualityReport::jnd_mean, &QualityReport::visible_fraction,
+    &QualityReport::flip_mean,       &QualityReport::flip_ppd};
+constexpr std::array kBandMeans{&BandStats::psnr_db,          &BandStats::ssim,
+                                &BandStats::pixels_fraction,  &BandStats::flip_mean,
+                                &BandStats::acuity_rmse,      &BandStats::jnd_mean,
+                                &BandStats::visible_fraction, &BandStats::luminance_ratio};
 constexpr std::array kProfileMeans{&EccentricityProfile::pixels_fraction,
                                    &EccentricityProfile::acuity_rmse,
                                    &EccentricityProfile::jnd_mean};

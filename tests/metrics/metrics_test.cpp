@@ -618,4 +618,20 @@ TEST(Report, ClearErrors) {
 }
 
 }  // namespace
+TEST(Compare, LuminanceRatioIsInLinearLight) {
+  // Black and white pixels average to code 188 in linear light; code 128 is
+  // what filtering in sRGB codes gives: 0.43 of the luminance.
+  const Display d = small_desktop(64, 36);
+  const QualityReport same = compare(grey(64, 36, 188), grey(64, 36, 188), d, {32, 18});
+  EXPECT_DOUBLE_EQ(same.luminance_ratio, 1.0);
+  const QualityReport dark = compare(grey(64, 36, 188), grey(64, 36, 128), d, {32, 18});
+  auto lin = [](double c) { return std::pow((c / 255.0 + 0.055) / 1.055, 2.4); };
+  EXPECT_NEAR(dark.luminance_ratio, lin(128) / lin(188), 1e-3);
+  for (const BandStats& b : dark.bands) {
+    if (b.pixels_fraction > 0) {
+      EXPECT_NEAR(b.luminance_ratio, lin(128) / lin(188), 1e-3);
+    }
+  }
+}
+
 }  // namespace foveate::metrics

@@ -241,6 +241,7 @@ TEST(Series, JsonKeysAndNulls) {
                                           "acuity_rmse",
                                           "jnd_mean",
                                           "visible_fraction",
+                                          "luminance_ratio",
                                           "jnd_threshold",
                                           "contrast_model",
                                           "eccentricity_profile",
@@ -255,7 +256,8 @@ TEST(Series, JsonKeysAndNulls) {
   ASSERT_EQ(j["bands"].size(), 4u);
   const std::set<std::string> expect_band_keys{
       "from_deg", "to_deg",      "pixels_fraction", "identical",        "psnr_db",
-      "ssim",     "acuity_rmse", "jnd_mean",        "visible_fraction", "flip_mean"};
+      "ssim",     "acuity_rmse", "jnd_mean",        "visible_fraction", "flip_mean",
+      "luminance_ratio"};
   for (const auto& band : j["bands"]) {
     std::set<std::string> band_keys;
     for (const auto& [k, v] : band.items()) band_keys.insert(k);

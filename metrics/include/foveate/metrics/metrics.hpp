@@ -54,6 +54,9 @@ struct BandStats {
   double acuity_rmse = kNaN;   ///< acuity-filtered RMSE over the band (luminance codes)
   double jnd_mean = kNaN;      ///< mean pooled JND over the band
   double visible_fraction = kNaN;  ///< share of the band's pixels with pooled JND >= the threshold
+  /// Mean linear luminance of the test over the reference's (1 = as bright;
+  /// filtering in sRGB codes darkens a high-contrast periphery)
+  double luminance_ratio = kNaN;
 };
 
 /// The acuity error and the JND against eccentricity, in bins of equal width:
@@ -88,6 +91,8 @@ struct QualityReport {
   double jnd_mean = kNaN;
   /// Share of pixels whose pooled JND is at least `jnd_threshold`.
   double visible_fraction = kNaN;
+  /// Mean linear luminance of the test over the reference's.
+  double luminance_ratio = kNaN;
   double jnd_threshold = 1.0;  ///< the threshold used (JND)
   double flip_mean = kNaN;     ///< NaN if not computed
   double flip_ppd = kNaN;      ///< pixels per degree FLIP was evaluated at (at the gaze)
