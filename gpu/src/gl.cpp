@@ -30,6 +30,27 @@ void Buffer::update(GLintptr offset, GLsizeiptr size, const void* data) const {
   glNamedBufferSubData(id(), offset, size, data);
 }
 
+Texture Texture::create_2d_array(GLenum internal_format, int width, int height, int layers) {
+  GLint max = 0, max_layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (width < 1 || height < 1 || width > max || height > max || layers < 1 || layers > max_layers) {
+    throw Error("array texture " + std::to_string(width) + "x" + std::to_string(height) + "x" +
+                std::to_string(layers) + " is outside what this GL supports");
+  }
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  Texture t(id);
+  glTextureStorage3D(id, 1, internal_format, width, height, layers);
+  t.width_ = width;
+  t.height_ = height;
+  t.layers_ = layers;
+  t.format_ = internal_format;
+  t.set_filter(GL_NEAREST, GL_NEAREST);
+  t.set_wrap(GL_CLAMP_TO_EDGE);
+  return t;
+}
+
 Texture Texture::create_2d(GLenum internal_format, int width, int height, int levels) {
   GLint max = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);

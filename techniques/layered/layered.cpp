@@ -6,8 +6,8 @@
 //
 // Antialiasing (section 4.2), in linear light:
 //  * each subsampled layer is jittered over its own updates by a Halton (2, 3)
-//    sequence of N positions covering the whole layer pixel (N from the
-//    sampling factor, at most 8);
+//    sequence of N positions covering the whole layer pixel (N = ceil(s^2),
+//    at most 32: converged, the layer has native's sample density);
 //  * the layer's history lives on its unjittered grid. While the scene's
 //    image and the layer's rectangle stay the same, the last N jittered
 //    samples of a pixel are averaged (a box filter over its footprint that
@@ -33,7 +33,8 @@ namespace foveate::tech {
 namespace {
 
 constexpr int kMaxLayers = 6;
-constexpr int kMaxSlots = 8;
+constexpr int kMaxSlots = 32;
+constexpr GLenum kDisplayFormat = GL_RGBA16F;  // precision for the exponential blend
 
 // Radical inverse in base b of i >= 1: a low-discrepancy sequence in (0, 1).
 double halton(int i, int b) {
@@ -76,7 +77,9 @@ class Layered final : public Technique {
     const double s = plan_.layers[i].sampling_factor;
     if (!jitter_ || s <= 1.0) return 1;
     if (samples_ > 0) return samples_;
-    return std::clamp(static_cast<int>(std::ceil(s * s)), 2, kMaxSlots);
+    // As many samples as native pixels under a layer pixel: the converged
+    // layer has native's sample density.
+    return std::clamp(static_cast<int>(std::ceil(s * s - 1e-9)), 2, kMaxSlots);
   }
 
   // Blend radius (where the coarser layer starts to show: e_i, native pixels)
@@ -204,10 +207,10 @@ class Layered final : public Technique {
 
  private:
   struct LayerState {
-    // The last N samples, one per jitter phase (slot j = phase j), and this
-    // update's render, swapped into its slot after the temporal pass.
-    std::array<gpu::RenderTarget, kMaxSlots> ring;
+    // This update's render, and the last N, one per jitter phase (layer j of
+    // the array = phase j), into which it is copied after the temporal pass.
     gpu::RenderTarget spare;
+    gpu::Texture ring;
     // The resolved layer (rgb, linear) and the pixel's count of consecutive
     // same-image samples (a), on the unjittered grid.
     std::array<gpu::RenderTarget, 2> display;
@@ -236,23 +239,22 @@ class Layered final : public Technique {
                   int slots_i, int phase, bool same_image) {
     const int next = 1 - st.latest;
     gpu::RenderTarget& out = st.display[static_cast<size_t>(next)];
-    out.ensure(jv.target_width, jv.target_height, GL_RGBA16F);  // precision for accumulation
+    out.ensure(jv.target_width, jv.target_height, kDisplayFormat);
+    if (!st.ring || st.ring.width() != jv.target_width || st.ring.height() != jv.target_height ||
+        st.ring.layers() != slots_i) {
+      st.ring = gpu::Texture::create_2d_array(GL_SRGB8_ALPHA8, jv.target_width, jv.target_height,
+                                              slots_i);
+    }
     const bool have_history = st.valid && st.temporal;
     const auto vp = scene.view_projection();
     const bool reproject = have_history && reproject_ && vp && st.has_view_proj;
     const auto& prev = have_history ? st.rect : rect;
     const auto set = [&](const gpu::Program& p, gpu::Samplers& samplers) {
-      static const char* names[kMaxSlots] = {"u_slots[0]", "u_slots[1]", "u_slots[2]",
-                                             "u_slots[3]", "u_slots[4]", "u_slots[5]",
-                                             "u_slots[6]", "u_slots[7]"};
       samplers.bind(p, "u_sample", st.spare.color());
       samplers.bind(
           p, "u_prev",
           have_history ? st.display[static_cast<size_t>(st.latest)].color() : st.spare.color());
-      for (int k = 0; k < kMaxSlots; ++k) {
-        const gpu::RenderTarget& slot = st.ring[static_cast<size_t>(k)];
-        samplers.bind(p, names[k], slot ? slot.color() : st.spare.color());
-      }
+      samplers.bind(p, "u_ring", st.ring);
       p.set("u_slot_count", slots_i);
       p.set("u_phase", phase);
       p.set("u_have_history", have_history ? 1 : 0);
@@ -276,7 +278,8 @@ class Layered final : public Technique {
     st.has_view_proj = vp.has_value();
     if (vp) st.view_proj = *vp;
     st.latest = next;
-    std::swap(st.spare, st.ring[static_cast<size_t>(phase)]);
+    glCopyImageSubData(st.spare.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, st.ring.id(),
+                       GL_TEXTURE_2D_ARRAY, 0, 0, 0, phase, jv.target_width, jv.target_height, 1);
   }
 
   // Stores the world points of the layer's grid where it will be shown stale.
@@ -379,7 +382,7 @@ TechniqueInfo layered_info() {
             ParamType::Boolean, 0, 1, 1),
       param("samples",
             "jitter positions per subsampled layer pixel, averaged while the image holds still (0 "
-            "= from the sampling factor: ceil(s^2), 2..8)",
+            "= from the sampling factor: ceil(s^2), 2..32: native's sample density once converged)",
             "", ParamType::Integer, 0, kMaxSlots, 0),
       param("history",
             "weight of the reprojected history when the image moves (1 - the new sample's weight)",

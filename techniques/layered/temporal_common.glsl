@@ -6,10 +6,11 @@
 // image changed there, and the pixel restarts. When the image moves, the
 // history found at `prev_screen` is clipped to the current samples'
 // neighbourhood in YCoCg (mean +- 1.25 sigma) and blended exponentially.
-// Output: rgb = the resolved colour, a = the pixel's count of same-image samples.
+// Output: rgb = the resolved colour, a = the pixel's count of same-image
+// samples / 255.
 uniform sampler2D u_sample;    // this update's samples (jittered; sRGB decoded to linear)
 uniform sampler2D u_prev;      // the previous resolve
-uniform sampler2D u_slots[8];  // the last N samples by jitter phase
+uniform sampler2DArray u_ring;  // the last N samples, layer = jitter phase
 uniform int u_slot_count;      // N
 uniform int u_phase;           // this update's phase, 0..N-1
 uniform int u_have_history;
@@ -21,11 +22,7 @@ out vec4 o_color;
 
 const float kChangeTolerance = 1.5 / 255.0;  // linear; identical renders differ by 0
 
-vec3 slot(int k) {
-  ivec2 ip = ivec2(gl_FragCoord.xy);
-  // k is dynamically uniform: sampler arrays may be indexed with it.
-  return texelFetch(u_slots[k], ip, 0).rgb;
-}
+vec3 slot(int k) { return texelFetch(u_ring, ivec3(ivec2(gl_FragCoord.xy), k), 0).rgb; }
 
 vec3 to_ycocg(vec3 c) {
   return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b,
@@ -37,19 +34,20 @@ vec4 foveate_temporal(vec2 prev_screen) {
   ivec2 size = textureSize(u_sample, 0);
   ivec2 ip = ivec2(gl_FragCoord.xy);
   vec3 x = texelFetch(u_sample, ip, 0).rgb;
-  if (u_have_history == 0) return vec4(x, 1.0);
+  if (u_have_history == 0) return vec4(x, 1.0 / 255.0);
   vec2 huv = (prev_screen - u_prev_rect.xy) / u_prev_rect.zw;
-  if (any(lessThan(huv, vec2(0.0))) || any(greaterThan(huv, vec2(1.0)))) return vec4(x, 1.0);
+  if (any(lessThan(huv, vec2(0.0))) || any(greaterThan(huv, vec2(1.0))))
+    return vec4(x, 1.0 / 255.0);
   vec4 prev = texture(u_prev, huv);
   if (u_same_image != 0) {
     int n = u_slot_count;
-    float count = prev.a;
+    float count = floor(prev.a * 255.0 + 0.5);
     vec3 d = abs(x - slot(u_phase));
     if (count < float(n) || max(d.r, max(d.g, d.b)) <= kChangeTolerance) {
       int c = int(min(count, float(n - 1))) + 1;
       vec3 sum = x;
       for (int k = 1; k < c; ++k) sum += slot((u_phase - k + n) % n);
-      return vec4(sum / float(c), float(c));
+      return vec4(sum / float(c), float(c) / 255.0);
     }
   }
   vec3 m1 = vec3(0.0), m2 = vec3(0.0);
@@ -68,5 +66,5 @@ vec4 foveate_temporal(vec2 prev_screen) {
   vec3 a = abs(off / extent);
   float worst = max(a.x, max(a.y, a.z));
   if (worst > 1.0) h = m1 + off / worst;
-  return vec4(max(from_ycocg(mix(h, to_ycocg(x), u_blend)), vec3(0.0)), 1.0);
+  return vec4(max(from_ycocg(mix(h, to_ycocg(x), u_blend)), vec3(0.0)), 1.0 / 255.0);
 }

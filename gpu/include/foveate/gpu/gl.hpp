@@ -67,6 +67,8 @@ class Texture : public Handle<detail::delete_texture> {
   /// 2D texture with immutable storage; linear filtering, clamp to edge.
   static Texture create_2d(GLenum internal_format, int width, int height, int levels = 1);
   static Texture create_2d_multisample(GLenum internal_format, int width, int height, int samples);
+  /// 2D array texture of `layers` layers (nearest filtering, clamp to edge).
+  static Texture create_2d_array(GLenum internal_format, int width, int height, int layers);
   void set_filter(GLenum min, GLenum mag) const;
   void set_wrap(GLenum wrap) const;
   void upload(int width, int height, GLenum format, GLenum type, const void* pixels) const;
@@ -74,10 +76,11 @@ class Texture : public Handle<detail::delete_texture> {
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }
   [[nodiscard]] GLenum format() const { return format_; }
+  [[nodiscard]] int layers() const { return layers_; }
 
  private:
   using Handle::Handle;
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 1;
   GLenum format_ = 0;
 };
 
