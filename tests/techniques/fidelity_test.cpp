@@ -21,6 +21,8 @@ using namespace foveate;
 
 namespace {
 
+const std::string kModels = std::string(FOVEATE_TEST_DATA) + "/models";
+
 // The golden tolerance (max channel error 48, mean 0.5, at most 0.5 % of
 // pixels off by more than 16) over the pixels within `radius` of `centre`.
 test::Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
@@ -163,4 +165,60 @@ TEST_F(Fidelity, CheckerboardKeptQuadsDoNotStandOut) {
   ASSERT_GT(n[1], 10000);
   const double kept = err[1] / n[1], dropped = err[0] / n[0];
   EXPECT_GT(kept, 0.8 * dropped) << kept << " vs " << dropped;
+}
+
+// ---------------------------------------------------------------- lodmask
+
+TEST_F(Fidelity, LodmaskFullDetailCircleIsNativeBackgroundIncluded) {
+  // A torus seen face on: its coarse LODs cut the hole with chords and cover
+  // background that the full-detail mesh leaves open. Inside the full-detail
+  // circle the image is native's, the hole included, on the torus and on the
+  // test scene of Guenter et al.
+  const int W = 640, H = 360;
+  struct Case {
+    std::string scene;
+    Vec2d gaze;
+  };
+  for (const Case& c : {Case{kModels + "/torus.obj", {320, 180}}, Case{"guenter", {320, 200}},
+                        Case{"guenter", {150, 250}}}) {
+    auto scene = load_scene(c.scene);
+    const Image ref = native(*scene, W, H);
+    auto t = make_technique("lodmask", config(W, H));
+    const Image img = run(*t, *scene, c.gaze);
+    const double inner = t->display().radius_px_at(t->values().real("inner_deg"));
+    EXPECT_GE(inner, t->display().radius_px_at(2.5));
+    EXPECT_TRUE(within_golden(compare_disc(ref, img, c.gaze, inner))) << c.scene;
+    const double periphery = mean_linear_luminance(ref, c.gaze, inner);
+    EXPECT_NEAR(mean_linear_luminance(img, c.gaze, inner) / periphery, 1.0, 0.02) << c.scene;
+  }
+}
+
+TEST_F(Fidelity, LodmaskBordersHoldStillUnderSmallGazeMoves) {
+  // Fixational drift and microsaccades (under hold_deg) move the gaze, not the
+  // LOD borders: frames of the same scene time are identical. A larger move
+  // (a saccade) moves them, and the fovea around the new gaze is native.
+  const int W = 640, H = 360;
+  auto scene = load_scene("guenter");
+  auto t = make_technique("lodmask", config(W, H));
+  const double hold = t->display().radius_px_at(t->values().real("hold_deg"));
+  const Vec2d g0{300, 190};
+  const Image first = run(*t, *scene, g0);
+  for (const Vec2d d : {Vec2d{0.5, 0.3}, Vec2d{-0.6, 0.2}, Vec2d{0.1, -0.7}}) {
+    const Vec2d g{g0.x + d.x * hold, g0.y + d.y * hold};
+    const Image img = run(*t, *scene, g);
+    EXPECT_EQ(test::compare_images(first, img, 0).max_error, 0) << d.x << "," << d.y;
+    const auto shapes = t->overlay(GazeState{g});
+    EXPECT_EQ(shapes[0].x, g0.x);
+    EXPECT_EQ(shapes[0].y, g0.y);
+  }
+  const Vec2d far{g0.x + 3 * hold, g0.y};
+  const Image moved = run(*t, *scene, far);
+  EXPECT_EQ(t->overlay(GazeState{far})[0].x, far.x);
+  const double inner = t->display().radius_px_at(t->values().real("inner_deg"));
+  EXPECT_TRUE(within_golden(compare_disc(native(*scene, W, H), moved, far, inner)));
+  // Without holding, the same small moves move the borders.
+  auto follow = make_technique("lodmask", config(W, H, {{"hold_deg", 0}}));
+  const Image a = run(*follow, *scene, g0);
+  const Image b = run(*follow, *scene, {g0.x + 0.6 * hold, g0.y});
+  EXPECT_GT(test::compare_images(a, b, 0).max_error, 0);
 }

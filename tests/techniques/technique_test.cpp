@@ -592,7 +592,10 @@ TEST_F(Techniques, LodmaskCountsPixelsPerLod) {
   // Brute force over every pixel centre (gaze in top-left pixels; the stencil is in GL
   // coordinates, so flip y).
   const Display d = config().display;
-  const double ri = d.radius_px_at(inner_deg), ro = d.radius_px_at(outer_deg);
+  // The circles are grown by the hold distance (their centre is held against
+  // small gaze moves).
+  const double hold = d.radius_px_at(t->values().real("hold_deg"));
+  const double ri = d.radius_px_at(inner_deg) + hold, ro = d.radius_px_at(outer_deg) + hold;
   double in = 0, ring = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
