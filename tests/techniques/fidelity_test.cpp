@@ -222,3 +222,120 @@ TEST_F(Fidelity, LodmaskBordersHoldStillUnderSmallGazeMoves) {
   const Image b = run(*follow, *scene, {g0.x + 0.6 * hold, g0.y});
   EXPECT_GT(test::compare_images(a, b, 0).max_error, 0);
 }
+
+// ---------------------------------------------------------------- logpolar
+
+TEST_F(Fidelity, LogpolarFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
+  // Native out to the disc's radius: at least 2.5 degrees, and out to where
+  // the buffer's sampling reaches a pixel (no blur there any more).
+  const int W = 1920, H = 1080;
+  for (const char* name : {"detail", "guenter"}) {
+    auto scene = load_scene(name);
+    const Image ref = native(*scene, W, H);
+    auto t = make_technique("logpolar", config(W, H));
+    for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{300, 900}}) {
+      FrameStats s;
+      const Image img = run(*t, *scene, gaze, 0, &s);
+      const double fovea = fovea_px(*t, gaze);
+      EXPECT_GE(fovea, t->display().radius_px_at(2.5));
+      EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
+      const double periphery = mean_linear_luminance(ref, gaze, fovea);
+      EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
+      EXPECT_LT(s.shaded_pixels, 0.25 * W * H);
+    }
+  }
+}
+
+TEST_F(Fidelity, LogpolarHasNoRimOnDeferredScenes) {
+  // Buffer texels beyond the screen used to shade an empty G-buffer, and the
+  // inverse mapping's filter pulled that into the border rows and columns
+  // (the bottom row was 21 codes darker than native, the sides 11).
+  const int W = 960, H = 540;
+  auto scene = load_scene("guenter");
+  const Image ref = native(*scene, W, H);
+  auto t = make_technique("logpolar", config(W, H));
+  const Image img = run(*t, *scene, {W / 2.0, H / 2.0});
+  const auto signed_mean = [&](int x0, int y0, int x1, int y1) {
+    double sum = 0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        for (int c = 0; c < 3; ++c) sum += int(img.at(x, y)[c]) - int(ref.at(x, y)[c]);
+        n += 3;
+      }
+    }
+    return sum / n;
+  };
+  EXPECT_NEAR(signed_mean(0, H - 2, W, H), 0.0, 2.0) << "bottom";
+  EXPECT_NEAR(signed_mean(0, 0, W, 2), 0.0, 2.0) << "top";
+  EXPECT_NEAR(signed_mean(0, 0, 2, H), 0.0, 2.0) << "left";
+  EXPECT_NEAR(signed_mean(W - 2, 0, W, H), 0.0, 2.0) << "right";
+}
+
+TEST_F(Fidelity, LogpolarKernelFromTheModelShadesTheFewestPixels) {
+  // The default alpha is the kernel (in [1, 4]) whose buffer, at the largest
+  // sigma within the MAR outside the native disc, shades the fewest pixels:
+  // 1.5 at 1920x1080 (sigma 2.50, the angular sampling is the limit), 1.75
+  // at 640x360 (where no buffer is fine enough and sigma stays 1).
+  struct Size {
+    int w, h;
+    double alpha, sigma;
+  };
+  for (const Size& sz : {Size{1920, 1080, 1.5, 2.503}, Size{640, 360, 1.75, 1.0}}) {
+    const ParamValues v = resolve_parameters(technique_info("logpolar"), config(sz.w, sz.h));
+    EXPECT_DOUBLE_EQ(v.real("alpha"), sz.alpha) << sz.w;
+    EXPECT_NEAR(v.real("sigma"), sz.sigma, 0.001) << sz.w;
+  }
+  // Against the neighbours and the old default (alpha 1), each with the sigma
+  // the model accepts for it, rendered at 1080p with the gaze at the centre.
+  const int W = 1920, H = 1080;
+  auto scene = load_scene("cheap");
+  const auto shaded = [&](std::map<std::string, double> params) {
+    auto t = make_technique("logpolar", config(W, H, std::move(params)));
+    FrameStats s;
+    run(*t, *scene, {W / 2.0, H / 2.0}, 0, &s);
+    return s.shaded_pixels;
+  };
+  const double best = shaded({});
+  for (double alpha : {1.0, 1.375, 1.625, 2.0, 4.0}) {
+    EXPECT_LT(best, shaded({{"alpha", alpha}})) << alpha;
+  }
+}
+
+TEST_F(Fidelity, LogpolarTemporalLevelConvergesTowardsTheFilteredScene) {
+  // First level of the antialiasing: jittered buffer samples accumulated over
+  // frames of a still scene estimate each texel's footprint better than one
+  // sample can. On a grating far finer than any texel (mean linear luminance
+  // 0.5, sRGB code 188) single samples are black or white; accumulated, the
+  // periphery comes closer to the uniform grey that the eye sees there.
+  const int W = 640, H = 360;
+  auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/shadertoy/grating.glsl");
+  const Vec2d gaze{W / 2.0, H / 2.0};
+  const auto periphery_deviation = [&](double temporal) {
+    auto t = make_technique("logpolar", config(W, H, {{"temporal", temporal}}));
+    RendererOptions o;
+    o.width = W;
+    o.height = H;
+    o.start_time_s = 1.0;
+    Renderer r(*scene, o);
+    FrameInput in = r.frame_input(0);
+    for (int k = 0; k < 12; ++k) {  // successive frames of the same instant
+      in.frame = k;
+      r.render(*t, in, GazeState{gaze});
+    }
+    const Image img = r.read_output();
+    const double fovea = fovea_px(*t, gaze) * 1.5;  // beyond the blend band
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x < W; ++x) {
+        if (std::hypot(x + 0.5 - gaze.x, y + 0.5 - gaze.y) < fovea) continue;
+        for (int c = 0; c < 3; ++c) sum += std::abs(int(img.at(x, y)[c]) - 188);
+        n += 3;
+      }
+    }
+    return sum / n;
+  };
+  const double with = periphery_deviation(0.5), without = periphery_deviation(0.0);
+  EXPECT_LT(with, 0.8 * without) << with << " vs " << without;
+}
