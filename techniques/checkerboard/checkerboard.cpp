@@ -140,32 +140,54 @@ class Checkerboard final : public Technique {
           {"region " + std::to_string(k) + " (drops " + std::to_string(k) + " of 4)", n});
       stats.shaded_pixels += n;
     }
-    // 3. Reconstruction into the target: the horizontal Gaussian, then the
-    //    vertical one and the division by coverage. Outside the screen there
-    //    are no samples (a transparent border).
+    // 3. Reconstruction into the target (filter.glsl): the 2x2 block average,
+    //    the horizontal and the vertical Gaussian at half resolution, then the
+    //    division by coverage at full resolution. Outside the screen there are
+    //    no samples (a transparent border).
+    const int hw = (W + 1) / 2, hh = (H + 1) / 2;
     frame_.color().set_wrap(GL_CLAMP_TO_BORDER);
-    horizontal_.ensure(W, H, GL_RGBA16F);  // weighted sums: more than 8 bits
-    horizontal_.color().set_wrap(GL_CLAMP_TO_BORDER);
+    for (gpu::RenderTarget& h : half_) {
+      h.ensure(hw, hh, GL_RGBA16F);  // weighted sums: more than 8 bits
+      h.color().set_wrap(GL_CLAMP_TO_BORDER);
+    }
     const auto set_filter = [&](const gpu::Program& p, gpu::Samplers& s) {
       set_pattern(p, s);
       p.set("u_sigmas", float(sigmas_[0]), float(sigmas_[1]), float(sigmas_[2]));
       p.set("u_blend", float(b.fovea), float(b.band));
     };
-    // The vertical pass reads rows up to 3 sigma (+ 1 for the bilinear pair)
-    // from pixels beyond the native fovea.
-    const double reach = 3.0 * *std::max_element(sigmas_.begin(), sigmas_.end()) + 2.0;
-    kit_.pass(kit_.fullscreen("checkerboard/reconstruct_h.frag"), horizontal_, {},
+    // The last pass reads blocks up to 2 pixels (the bilinear read-back) from
+    // pixels beyond the native fovea, the vertical pass rows up to 3 sigma (+ 1
+    // for the bilinear pair) from those, the horizontal pass columns as far.
+    const double sigma_max = *std::max_element(sigmas_.begin(), sigmas_.end());
+    const double reach = 2.0 * (3.0 * sigma_max / 2.0 + 2.0) + 4.0;
+    const auto skip = [&](const gpu::Program& p, double r) {
+      p.set("u_skip_radius", float(std::max(0.0, b.fovea - r)));
+    };
+    kit_.pass(kit_.fullscreen("checkerboard/reconstruct_down.frag"), half_[0], {},
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                p.allow_missing({"u_block"});  // its filter width is by distance, not region
+                // (it only needs the gaze, to skip the fovea)
+                p.allow_missing({"u_block", "u_thresholds", "u_sigmas", "u_blend"});
                 set_filter(p, samplers);
                 samplers.bind(p, "u_frame", frame_.color());
-                p.set("u_skip_radius", float(std::max(0.0, b.fovea - reach)));
+                skip(p, 2.0 * reach);
               });
+    const gpu::Program& axis = kit_.fullscreen("checkerboard/reconstruct_h.frag");
+    for (int k = 0; k < 2; ++k) {
+      kit_.pass(axis, half_[static_cast<size_t>(k + 1)], {},
+                [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                  p.allow_missing({"u_block"});  // the width is by distance, not region
+                  set_filter(p, samplers);
+                  samplers.bind(p, "u_input", half_[static_cast<size_t>(k)].color());
+                  p.set("u_axis", k == 0 ? 1.0f : 0.0f, k == 0 ? 0.0f : 1.0f);
+                  skip(p, (2 - k) * reach);
+                });
+    }
     kit_.pass(kit_.fullscreen("checkerboard/reconstruct.frag"), target, {},
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                p.allow_missing({"u_sigmas"});  // the filtering is done
                 set_filter(p, samplers);
                 samplers.bind(p, "u_frame", frame_.color());
-                samplers.bind(p, "u_horizontal", horizontal_.color());
+                samplers.bind(p, "u_filtered", half_[2].color());
               });
     return stats;
   }
@@ -192,7 +214,7 @@ class Checkerboard final : public Technique {
   std::array<double, 3> sigmas_{};  // reconstruction Gaussian of regions 1..3, pixels
   Kit kit_;
   gpu::RenderTarget frame_;
-  gpu::RenderTarget horizontal_;
+  std::array<gpu::RenderTarget, 3> half_;  // block average, horizontal, vertical
   bool stencil_export_ = false;
 };
 

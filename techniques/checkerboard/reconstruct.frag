@@ -1,10 +1,10 @@
-// Second pass of the reconstruction (see filter.glsl): the vertical Gaussian
-// of the horizontal pass, divided by its coverage. Region 0, where no quad is
-// dropped, is the shaded frame itself (native) out to the fovea's radius,
-// then fades to the filtered image over the blend band.
+// Reconstruction, last pass (see filter.glsl): the filtered half-resolution
+// sums read back bilinearly and divided by their coverage. Region 0, where
+// no quad is dropped, is the shaded frame itself (native) out to the fovea's
+// radius, then fades to the filtered image over the blend band.
 #include "checkerboard/filter.glsl"
 uniform sampler2D u_frame;
-uniform sampler2D u_horizontal;
+uniform sampler2D u_filtered;
 out vec4 o_color;
 void main() {
   ivec2 ip = ivec2(gl_FragCoord.xy);
@@ -18,6 +18,6 @@ void main() {
     o_color = vec4(native, 1.0);
     return;
   }
-  vec4 s = filter_axis(u_horizontal, ip, vec2(0.0, 1.0), filter_sigma(gl_FragCoord.xy));
+  vec4 s = texture(u_filtered, gl_FragCoord.xy / (2.0 * vec2(textureSize(u_filtered, 0))));
   o_color = vec4(mix(native, s.a > 1e-6 ? s.rgb / s.a : native, w), 1.0);
 }

@@ -1,16 +1,17 @@
-// First pass of the reconstruction (see filter.glsl): the horizontal
-// Gaussian of the frame, as wide as at this pixel (region 0 rows like region
-// 1: only the blend band and regions 1-3 read them). Pixels that no vertical
-// pass will read are skipped.
+// Reconstruction, passes 2 and 3 (see filter.glsl): the Gaussian along one
+// axis at half resolution, as wide as at this block's full-resolution centre
+// (region 0 blocks like region 1: only the blend band and regions 1-3 read
+// them). Blocks that no later pass reads are skipped.
 #include "checkerboard/filter.glsl"
-uniform sampler2D u_frame;
-uniform float u_skip_radius;  // pixels nearer the gaze than this are not read
+uniform sampler2D u_input;
+uniform vec2 u_axis;
+uniform float u_skip_radius;  // full-resolution pixels nearer the gaze than this are not read
 out vec4 o_color;
 void main() {
-  vec2 p = pattern_top_left(gl_FragCoord.xy);
-  if (distance(p, u_gaze_top_left) < u_skip_radius) {
+  vec2 full = 2.0 * gl_FragCoord.xy;
+  if (distance(pattern_top_left(full), u_gaze_top_left) < u_skip_radius) {
     o_color = vec4(0.0);
     return;
   }
-  o_color = filter_axis(u_frame, ivec2(gl_FragCoord.xy), vec2(1.0, 0.0), filter_sigma(gl_FragCoord.xy));
+  o_color = filter_axis(u_input, ivec2(gl_FragCoord.xy), u_axis, half_sigma(filter_sigma(full)));
 }

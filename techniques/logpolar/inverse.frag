@@ -31,17 +31,24 @@ void main() {
     return;
   }
   vec2 uv = lp_to_uv(gl_FragCoord.xy, u_lp_gaze, u_lp_L, u_lp_alpha);
+  // The Gaussian over the texels -1, 0, 1 of each axis, as four bilinear
+  // reads at (+-o, +-o) texels: o^2 is the 3-tap kernel's variance, so the
+  // blur has the same width (separable; the weights need no exponential per
+  // read). Near the disc's edge, sigma 0: one bilinear read.
   float sigma = u_blur * clamp((r - u_disc.x) / max(u_disc.z, 1.0), 0.0, 1.0);
+  float w1 = sigma > 0.0 ? exp(-0.5 / (sigma * sigma)) : 0.0;
+  float o = sqrt(2.0 * w1 / (1.0 + 2.0 * w1));
   vec2 texel = 1.0 / u_lp_buffer;
   vec4 acc = vec4(0.0);
-  for (int j = -1; j <= 1; ++j) {
-    for (int i = -1; i <= 1; ++i) {
-      vec2 o = vec2(float(i), float(j));
-      float w = sigma > 0.0 ? exp(-dot(o, o) / (2.0 * sigma * sigma)) : float(i == 0 && j == 0);
-      if (w <= 0.0) continue;
-      vec2 q = uv + o * texel;
-      q.x = clamp(q.x, 0.5 * texel.x, 1.0 - 0.5 * texel.x);
-      acc += w * texture(u_buffer, q);
+  if (o < 1e-3) {
+    acc = texture(u_buffer, vec2(clamp(uv.x, 0.5 * texel.x, 1.0 - 0.5 * texel.x), uv.y));
+  } else {
+    for (int j = -1; j <= 1; j += 2) {
+      for (int i = -1; i <= 1; i += 2) {
+        vec2 q = uv + o * vec2(float(i), float(j)) * texel;
+        q.x = clamp(q.x, 0.5 * texel.x, 1.0 - 0.5 * texel.x);
+        acc += texture(u_buffer, q);
+      }
     }
   }
   vec3 c = acc.a > 1e-6 ? acc.rgb / acc.a : vec3(0.0);
