@@ -9,18 +9,20 @@
 //  * The fovea is native. Near the gaze the buffer samples the screen more
 //    finely than its pixels, and a resampled image there is only a blurred
 //    copy of native: within a disc (at least fovea_deg, and out to where the
-//    buffer's sampling reaches a pixel) the screen's own pixels are shaded
-//    and shown, fading into the buffer over a band beyond. Buffer texels
-//    inside the disc are not shaded.
+//    buffer's samples are no closer together than native pixels) the
+//    screen's own pixels are shaded and shown, fading into the buffer over a
+//    band beyond. Buffer texels inside the disc are not shaded.
 //  * No texel shades a position off the screen (where a deferred scene's
 //    G-buffer is empty: a dark rim): positions are clamped to the nearest
 //    pixel centre, and texels far beyond the screen are not shaded.
 //  * alpha and sigma come from the acuity model: for each kernel exponent
-//    in the user study's range, the largest sigma whose sampling stays within
-//    the MAR outside the native disc, and of those the alpha that shades the
-//    fewest pixels (acuity_kernel). With the fovea native, a kernel above 1
-//    moves buffer columns out of the periphery into the disc, where they are
-//    not shaded, until the periphery's radial sampling becomes the limit.
+//    in the user study's range, the largest sigma whose largest gap between
+//    samples (a buffer cell's diagonal, as for the checkerboard's holes) stays
+//    within half the MAR in pixels outside the native disc, and of those the
+//    alpha that shades the fewest pixels (acuity_kernel). With the fovea
+//    native, a kernel above 1 moves buffer columns out of the periphery into
+//    the disc, where they are not shaded, but widens the periphery's cells
+//    radially: the two balance near 1.25 at 1080p.
 //  * Two-level antialiasing (Meng et al.), in linear light: temporal
 //    antialiasing in the buffer (jittered samples, reprojected history,
 //    neighbourhood clamping), then a Gaussian in the inverse mapping whose
@@ -50,27 +52,32 @@ double halton(int i, int b) {
   return r;
 }
 
-// Spacing (screen pixels) of a W x H screen's log-polar buffer at distance r
-// from the gaze: radially r L alpha t^(1 - 1/alpha) / w with t = log r / L,
-// around 2 pi r / h; the larger of the two.
-double buffer_spacing(double r, double L, double alpha, double w, double h) {
+// The largest gap (screen pixels) between the samples of a W x H screen's
+// log-polar buffer at distance r from the gaze: the diagonal of its cell,
+// which spans r L alpha t^(1 - 1/alpha) / w radially (t = log r / L) and
+// 2 pi r / h around; the diameter of the largest disc holding no sample, as
+// for the checkerboard's holes (checkerboard_gap_px).
+double buffer_gap(double r, double L, double alpha, double w, double h) {
   const double t = std::clamp(std::log(std::max(r, 1.0)) / L, 1e-9, 1.0);
-  return std::max(r * L * alpha * std::pow(t, 1.0 - 1.0 / alpha) / w,
-                  2.0 * std::numbers::pi * r / h);
+  return std::hypot(r * L * alpha * std::pow(t, 1.0 - 1.0 / alpha) / w,
+                    2.0 * std::numbers::pi * r / h);
 }
 
-// The spacing the acuity model allows at distance r from a gaze at the
-// display centre: half the MAR in pixels (two samples per cycle), and never
-// below native's pixel.
-double allowed_spacing(const Display& d, const AcuityModel& a, double r) {
-  return std::max(1.0, 0.5 * mar_px_at(d, a, std::atan(r / d.eye_distance_px()) * kDeg));
+// Native pixels' own largest gap, the diagonal of a pixel.
+const double kNativeGap = std::sqrt(2.0);
+
+// The gap the acuity model allows at distance r from a gaze at the display
+// centre: half the MAR in pixels (two samples per cycle), and never less than
+// native's.
+double allowed_gap(const Display& d, const AcuityModel& a, double r) {
+  return std::max(kNativeGap, 0.5 * mar_px_at(d, a, std::atan(r / d.eye_distance_px()) * kDeg));
 }
 
 // Radius (pixels) of the native disc: at least `min_px`, and out to where the
-// buffer's sampling reaches one pixel.
+// buffer's samples are no longer closer together than native pixels.
 double native_radius(double min_px, double L, double alpha, double w, double h) {
   double r = 2.0;
-  while (r < 1e5 && buffer_spacing(r, L, alpha, w, h) < 1.0) r *= 1.005;
+  while (r < 1e5 && buffer_gap(r, L, alpha, w, h) < kNativeGap) r *= 1.005;
   return std::max(min_px, r);
 }
 
@@ -94,7 +101,7 @@ KernelPlan plan_kernel(const Display& d, const AcuityModel& a, double fovea_deg,
   // The MAR criterion outside the disc, for every distance a gaze anywhere can give.
   double best = 1e9;
   for (double r = min_px; r <= std::hypot(W, H); r *= 1.01) {
-    best = std::min(best, allowed_spacing(d, a, r) / buffer_spacing(r, L, alpha, W, H));
+    best = std::min(best, allowed_gap(d, a, r) / buffer_gap(r, L, alpha, W, H));
   }
   p.accepted_sigma = best;
   p.sigma = sigma > 0.0 ? sigma : std::clamp(best, 1.0, 16.0);
@@ -298,7 +305,7 @@ class LogPolar final : public Technique {
     const double L = model_.log_extent();
     int k = 1;
     for (double r = 2.0; r < 4000 && k < 4; r *= 1.01) {
-      if (buffer_spacing(r, L, alpha_, model_.buffer_w(), model_.buffer_h()) >= std::pow(2.0, k)) {
+      if (buffer_gap(r, L, alpha_, model_.buffer_w(), model_.buffer_h()) >= std::pow(2.0, k)) {
         const auto* c = kRingColours[k];
         out.push_back(
             {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r, 0, c[0], c[1], c[2]});
@@ -345,7 +352,7 @@ TechniqueInfo logpolar_info() {
   t.params = {
       param("fovea_deg",
             "smallest radius of the native disc at the gaze (it also reaches out to where the "
-            "buffer's sampling becomes coarser than a pixel)",
+            "buffer's samples are no closer together than native pixels)",
             "deg", ParamType::Real, 0.0, 30.0, 2.5),
       {"alpha",
        "kernel exponent, K(x) = x^alpha; default from the acuity model: of the exponents in "
@@ -356,8 +363,8 @@ TechniqueInfo logpolar_info() {
          return acuity_kernel(c.display, c.acuity, v.real("fovea_deg"));
        }},
       {"sigma",
-       "buffer parameter W / w (1 = native size); default the largest whose sampling stays within "
-       "the MAR (two samples per cycle) outside the native disc",
+       "buffer parameter W / w (1 = native size); default the largest whose largest gap between "
+       "samples (a cell's diagonal) stays within half the MAR outside the native disc",
        "", ParamType::Real, 1.0, 16.0, 1.8,
        [](const TechniqueConfig& c, const ParamValues& v) {
          return plan_kernel(c.display, c.acuity, v.real("fovea_deg"), v.real("alpha")).sigma;
@@ -365,11 +372,11 @@ TechniqueInfo logpolar_info() {
       param("blur",
             "antialiasing Gaussian sigma in buffer texels, reached one disc radius beyond the "
             "native disc (it grows from 0 there; 0 = off)",
-            "texels", ParamType::Real, 0.0, 3.0, 0.6),
+            "texels", ParamType::Real, 0.0, 3.0, 0.4),
       param("temporal",
             "weight of the reprojected history in the buffer's temporal antialiasing, with "
             "sub-texel jitter (0 = off)",
-            "", ParamType::Real, 0.0, 0.95, 0.5),
+            "", ParamType::Real, 0.0, 0.95, 0.7),
   };
   t.make = construct<LogPolar>();
   return t;

@@ -274,14 +274,15 @@ TEST_F(Fidelity, LogpolarHasNoRimOnDeferredScenes) {
 
 TEST_F(Fidelity, LogpolarKernelFromTheModelShadesTheFewestPixels) {
   // The default alpha is the kernel (in [1, 4]) whose buffer, at the largest
-  // sigma within the MAR outside the native disc, shades the fewest pixels:
-  // 1.5 at 1920x1080 (sigma 2.50, the angular sampling is the limit), 1.75
-  // at 640x360 (where no buffer is fine enough and sigma stays 1).
+  // sigma whose gaps stay within half the MAR outside the native disc, shades
+  // the fewest pixels: 1.125 at 1920x1080 (sigma 1.99); 1 at 640x360, where
+  // no buffer is fine enough (sigma stays 1) and a larger alpha would only
+  // widen the periphery's cells.
   struct Size {
     int w, h;
     double alpha, sigma;
   };
-  for (const Size& sz : {Size{1920, 1080, 1.5, 2.503}, Size{640, 360, 1.75, 1.0}}) {
+  for (const Size& sz : {Size{1920, 1080, 1.125, 1.990}, Size{640, 360, 1.0, 1.0}}) {
     const ParamValues v = resolve_parameters(technique_info("logpolar"), config(sz.w, sz.h));
     EXPECT_DOUBLE_EQ(v.real("alpha"), sz.alpha) << sz.w;
     EXPECT_NEAR(v.real("sigma"), sz.sigma, 0.001) << sz.w;
@@ -297,7 +298,7 @@ TEST_F(Fidelity, LogpolarKernelFromTheModelShadesTheFewestPixels) {
     return s.shaded_pixels;
   };
   const double best = shaded({});
-  for (double alpha : {1.0, 1.375, 1.625, 2.0, 4.0}) {
+  for (double alpha : {1.0, 1.25, 1.5, 2.0, 4.0}) {
     EXPECT_LT(best, shaded({{"alpha", alpha}})) << alpha;
   }
 }
