@@ -81,6 +81,22 @@ double checkerboard_sampling_factor(int region) {
   return std::sqrt(4.0 / (4.0 - region));
 }
 
+double checkerboard_gap_px(int region, int block) {
+  if (region < 0 || region > 3) throw Error("checkerboard region must be 0..3");
+  if (block < 1) throw Error("checkerboard block must be >= 1");
+  if (region == 0) return 1.0;
+  // A hole of n pixels between kept pixels: their centres are n + 1 apart.
+  // In region 3 only the top-left quad of each 2n tile is kept: the centre of
+  // the dropped bottom-right quad is (n + 1) / sqrt 2 from the nearest kept
+  // centres, the corners of four kept quads.
+  const double n = block;
+  return region < 3 ? n + 1.0 : (n + 1.0) * std::sqrt(2.0);
+}
+
+double mar_px_at(const Display& display, const AcuityModel& acuity, double e) {
+  return acuity.mar_deg(e) * kRad * display.eye_distance_px() / std::cos(e * kRad);
+}
+
 void CheckerboardPattern::validate() const {
   require(block >= 1 && block <= 256, "block: expected 1..256, got " + std::to_string(block));
   for (int k = 0; k < 3; ++k) {
@@ -104,10 +120,21 @@ CheckerboardPattern CheckerboardPattern::from_acuity(int block, const Display& d
                                                      const AcuityModel& acuity) {
   CheckerboardPattern p;
   p.block = block;
+  require(block >= 1 && block <= 256, "block: expected 1..256, got " + std::to_string(block));
   for (int k = 0; k < 3; ++k) {
-    const double s = checkerboard_sampling_factor(k + 1);
-    const double e = acuity.eccentricity_for_mar(s * display.sharpness_deg());
-    p.thresholds_px[k] = display.radius_px_at(e);
+    // Two samples per MAR cycle across the region's largest gap: the first
+    // eccentricity where w(e) * ppd(e) >= 2 gap (increasing in e; bisection).
+    const double need = 2.0 * checkerboard_gap_px(k + 1, block);
+    double lo = 0.0, hi = 89.0;
+    if (mar_px_at(display, acuity, lo) >= need) {
+      hi = lo;
+    } else {
+      for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (mar_px_at(display, acuity, mid) >= need ? hi : lo) = mid;
+      }
+    }
+    p.thresholds_px[k] = display.radius_px_at(hi);
   }
   p.validate();
   return p;
@@ -116,8 +143,8 @@ CheckerboardPattern CheckerboardPattern::from_acuity(int block, const Display& d
 double CheckerboardPattern::tile_distance(Vec2d pixel, Vec2d gaze) const {
   const double s = 2.0 * block;
   const double tx = std::floor(pixel.x / s) * s, ty = std::floor(pixel.y / s) * s;
-  const double gx = std::floor(gaze.x / s) * s, gy = std::floor(gaze.y / s) * s;
-  return std::hypot(tx - gx, ty - gy);
+  return std::hypot(gaze.x - std::clamp(gaze.x, tx, tx + s),
+                    gaze.y - std::clamp(gaze.y, ty, ty + s));
 }
 
 int CheckerboardPattern::region(Vec2d pixel, Vec2d gaze) const {

@@ -2,9 +2,28 @@
 // Rendering" (2022), after Wei's MBFR. Pixels form n x n quads in 2 x 2 tiles;
 // four regions around the gaze drop 0, 1, 2 and 3 quads of every tile. Dropped
 // quads are rejected by the stencil test before shading, so their cost is
-// really saved; a reconstruction pass fills them from the shaded neighbours
-// using an explicit coverage mask (alpha), so a black pixel is a valid pixel.
+// really saved.
+//
+// Where each region may begin follows from the block size: a region's
+// effective sampling is set by the largest gap its pattern leaves between
+// kept pixels (n + 1 pixels across the n x n holes of regions 1 and 2,
+// (n + 1) sqrt 2 in region 3), and it may begin only where the MAR in pixels
+// is at least twice that gap (CheckerboardPattern::from_acuity). With 4-pixel
+// quads regions 1 and 2 leave the same gap, so region 1 is empty by default.
+//
+// The reconstruction is a normalized convolution over the kept samples in
+// linear light (filter.glsl): a separable Gaussian of colour times coverage
+// divided by the Gaussian of coverage (an explicit mask in alpha, so a black
+// pixel is a valid pixel), as wide as a fraction of the region's gap. Kept and
+// dropped pixels of regions 1-3 alike come out of it, so no kept quad stands
+// out sharp in a blurred field; region 0 is the shaded frame, native. The
+// Gaussian widens smoothly towards each next region, and between the native
+// fovea and the first dropped quads a band (blend, in degrees) is shaded in
+// full and fades from native to the filtered image, so that no border shows.
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <string>
 #include <tuple>
 
 #include "../common/kit.hpp"
@@ -25,12 +44,15 @@ CheckerboardPattern default_pattern(const TechniqueConfig& c, const ParamValues&
 class Checkerboard final : public Technique {
  public:
   Checkerboard(const TechniqueConfig& c, const ParamValues& v)
-      : display_(c.display), block_(v.integer("block")) {
+      : display_(c.display), block_(v.integer("block")), blend_deg_(v.real("blend")) {
     thresholds_px_ = {v.real("r1"), v.real("r2"), v.real("r3")};
     CheckerboardPattern pat;
     pat.block = block_;
     pat.thresholds_px = thresholds_px_;
     pat.validate();
+    for (int k = 0; k < 3; ++k) {
+      sigmas_[static_cast<size_t>(k)] = v.real("filter") * checkerboard_gap_px(k + 1, block_);
+    }
     stencil_export_ =
         v.boolean("export_stencil") && epoxy_has_gl_extension("GL_ARB_shader_stencil_export");
   }
@@ -47,12 +69,33 @@ class Checkerboard final : public Technique {
     return t;
   }
 
+  // Where things change at this gaze (pixels from the gaze): the native fovea
+  // ends at `fovea`, the blend band follows (`band` wide, every pixel still
+  // shaded), and quads are dropped from `pattern` on (the thresholds of the
+  // stencil pattern: r1..r3, moved out of the band).
+  struct Borders {
+    double fovea = 0, band = 0;
+    std::array<double, 3> pattern{};
+  };
+  Borders borders(const GazeState& g) const {
+    const auto t = thresholds(g);
+    Borders b;
+    b.fovea = t[0];
+    if (blend_deg_ > 0.0) {
+      const double e0 = std::atan(t[0] / display_.eye_distance_px()) * 180.0 / 3.14159265358979;
+      b.band = display_.radius_px_at(e0 + blend_deg_) - t[0];
+    }
+    for (size_t k = 0; k < 3; ++k) b.pattern[k] = std::max(t[k], t[0] + b.band);
+    return b;
+  }
+
   FrameStats render(Scene& scene, const FrameInput&, const GazeState& gaze,
                     const gpu::RenderTarget& target) override {
     const int W = target.width(), H = target.height();
     // The pattern is defined in top-left pixel coordinates (CheckerboardPattern);
     // the shaders flip gl_FragCoord to match.
-    const auto t = thresholds(gaze);
+    const Borders b = borders(gaze);
+    const auto& t = b.pattern;
     const View view = View::full(W, H);
     scene.prepass(view);
     frame_.ensure(W, H, GL_SRGB8_ALPHA8, true);
@@ -97,22 +140,67 @@ class Checkerboard final : public Technique {
           {"region " + std::to_string(k) + " (drops " + std::to_string(k) + " of 4)", n});
       stats.shaded_pixels += n;
     }
-    // 3. Reconstruction into the target.
+    // 3. Reconstruction into the target (filter.glsl): the 2x2 block average,
+    //    the horizontal and the vertical Gaussian at half resolution, then the
+    //    division by coverage at full resolution. Outside the screen there are
+    //    no samples (a transparent border).
+    const int hw = (W + 1) / 2, hh = (H + 1) / 2;
+    frame_.color().set_wrap(GL_CLAMP_TO_BORDER);
+    for (gpu::RenderTarget& h : half_) {
+      h.ensure(hw, hh, GL_RGBA16F);  // weighted sums: more than 8 bits
+      h.color().set_wrap(GL_CLAMP_TO_BORDER);
+    }
+    const auto set_filter = [&](const gpu::Program& p, gpu::Samplers& s) {
+      set_pattern(p, s);
+      p.set("u_sigmas", float(sigmas_[0]), float(sigmas_[1]), float(sigmas_[2]));
+      p.set("u_blend", float(b.fovea), float(b.band));
+    };
+    // The last pass reads blocks up to 2 pixels (the bilinear read-back) from
+    // pixels beyond the native fovea, the vertical pass rows up to 3 sigma (+ 1
+    // for the bilinear pair) from those, the horizontal pass columns as far.
+    const double sigma_max = *std::max_element(sigmas_.begin(), sigmas_.end());
+    const double reach = 2.0 * (3.0 * sigma_max / 2.0 + 2.0) + 4.0;
+    const auto skip = [&](const gpu::Program& p, double r) {
+      p.set("u_skip_radius", float(std::max(0.0, b.fovea - r)));
+    };
+    kit_.pass(kit_.fullscreen("checkerboard/reconstruct_down.frag"), half_[0], {},
+              [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                // (it only needs the gaze, to skip the fovea)
+                p.allow_missing({"u_block", "u_thresholds", "u_sigmas", "u_blend"});
+                set_filter(p, samplers);
+                samplers.bind(p, "u_frame", frame_.color());
+                skip(p, 2.0 * reach);
+              });
+    const gpu::Program& axis = kit_.fullscreen("checkerboard/reconstruct_h.frag");
+    for (int k = 0; k < 2; ++k) {
+      kit_.pass(axis, half_[static_cast<size_t>(k + 1)], {},
+                [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                  p.allow_missing({"u_block"});  // the width is by distance, not region
+                  set_filter(p, samplers);
+                  samplers.bind(p, "u_input", half_[static_cast<size_t>(k)].color());
+                  p.set("u_axis", k == 0 ? 1.0f : 0.0f, k == 0 ? 0.0f : 1.0f);
+                  skip(p, (2 - k) * reach);
+                });
+    }
     kit_.pass(kit_.fullscreen("checkerboard/reconstruct.frag"), target, {},
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                p.allow_missing({"u_sigmas"});  // the filtering is done
+                set_filter(p, samplers);
                 samplers.bind(p, "u_frame", frame_.color());
-                p.set("u_block", block_);
+                samplers.bind(p, "u_filtered", half_[2].color());
               });
     return stats;
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
-    const auto t = thresholds(gaze);
+    // The native fovea, then where regions 1-3 begin.
+    const Borders b = borders(gaze);
+    const double radii[4] = {b.fovea, b.pattern[0], b.pattern[1], b.pattern[2]};
     std::vector<OverlayShape> out;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 4; ++k) {
       const auto* c = kRingColours[k];
-      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y,
-                     t[static_cast<size_t>(k)], 0, c[0], c[1], c[2]});
+      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, radii[k], 0, c[0],
+                     c[1], c[2]});
     }
     out.push_back(gaze_dot(gaze));
     return out;
@@ -121,9 +209,12 @@ class Checkerboard final : public Technique {
  private:
   Display display_;
   int block_;
+  double blend_deg_;
   std::array<double, 3> thresholds_px_{};
+  std::array<double, 3> sigmas_{};  // reconstruction Gaussian of regions 1..3, pixels
   Kit kit_;
   gpu::RenderTarget frame_;
+  std::array<gpu::RenderTarget, 3> half_;  // block average, horizontal, vertical
   bool stencil_export_ = false;
 };
 
@@ -136,13 +227,16 @@ TechniqueInfo checkerboard_info() {
       "Mask-based pixel dropping: four regions drop 0-3 of every 4 quads (stencil-rejected), then "
       "a reconstruction pass fills them.";
   t.source = "Silvera, OpenGL Foveated Rendering, 2022 (after Wei's mask-based foveated rendering)";
-  const auto radius = [](int k) {
+  static const std::array<std::string, 3> keys = {"r1", "r2", "r3"};
+  const auto radius = [](size_t k) {
     return [k](const TechniqueConfig& c, const ParamValues& v) {
-      const double r = default_pattern(c, v).thresholds_px[static_cast<size_t>(k)];
-      static const char* const previous[] = {"", "r1", "r2"};
-      return k == 0 ? r : std::max(r, v.real(previous[k]));
+      const double r = default_pattern(c, v).thresholds_px[k];
+      return k == 0 ? r : std::max(r, v.real(keys[k - 1]));
     };
   };
+  const std::string rule =
+      "; default where the MAR in pixels, w(e) ppd(e), reaches twice the largest gap the region's "
+      "pattern leaves between kept pixels: two samples per resolvable cycle across the holes";
   t.params = {
       param("block", "quad size n (tiles are 2n x 2n); 4 matches llvmpipe's 4x4 rejection", "px",
             ParamType::Integer, 1, 256, 4),
@@ -153,12 +247,25 @@ TechniqueInfo checkerboard_info() {
             "write the region mask in one pass with ARB_shader_stencil_export where the driver "
             "has it (0 = four passes)",
             "", ParamType::Boolean, 0, 1, 1),
-      {"r1", "radius where region 1 (drop 1 of 4) begins", "px", ParamType::Real, 0, 1e6, 0,
-       radius(0)},
-      {"r2", "radius where region 2 (drop 2 of 4) begins", "px", ParamType::Real, 0, 1e6, 0,
-       radius(1)},
-      {"r3", "radius where region 3 (drop 3 of 4) begins", "px", ParamType::Real, 0, 1e6, 0,
-       radius(2)},
+      {"r1",
+       "radius of the native fovea, where region 1 (drop 1 of 4) may begin" + rule +
+           " (n + 1 for the n x n holes of regions 1 and 2)",
+       "px", ParamType::Real, 0, 1e6, 0, radius(0)},
+      {"r2", "radius where region 2 (drop 2 of 4) may begin" + rule + " (n + 1, as region 1)", "px",
+       ParamType::Real, 0, 1e6, 0, radius(1)},
+      {"r3",
+       "radius where region 3 (drop 3 of 4) may begin" + rule +
+           " ((n + 1) sqrt 2 across its dropped corner quads)",
+       "px", ParamType::Real, 0, 1e6, 0, radius(2)},
+      param("filter",
+            "width of the reconstruction Gaussian (sigma) as a fraction of the region's largest "
+            "gap between kept pixels",
+            "", ParamType::Real, 0.3, 2.0, 0.55),
+      param("blend",
+            "band beyond r1, shaded in full, over which the image fades from native to the "
+            "reconstruction filter (and the filter widens towards each next region); regions 1-3 "
+            "begin after it",
+            "deg", ParamType::Real, 0.0, 10.0, 1.0),
   };
   t.make = construct<Checkerboard>();
   return t;

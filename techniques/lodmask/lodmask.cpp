@@ -4,6 +4,16 @@
 // (mid inside the outer circle, full inside the inner one), and lighting is
 // deferred. The circles come from the acuity model: the eye resolves half the
 // display's detail beyond e where w(e) = 2 w*, a quarter beyond w(e) = 4 w*.
+//
+// Each mask clears the G-buffer under it (not only depth and stencil), so that
+// inside the full-detail circle the image is native's, background included.
+// Against popping at the LOD borders the circles are held still: their centre
+// moves only when the gaze leaves a small disc around it (hold_deg, larger
+// than fixational drift and microsaccades), and they are grown by that disc
+// so the full-detail circle around the gaze is always covered. A border then
+// moves only with a saccade, when saccadic suppression hides the change. (A
+// band where the two LODs are dithered was the alternative; without temporal
+// accumulation the dither is a visible pattern of its own, and it flickers.)
 #include <cmath>
 #include <tuple>
 
@@ -32,18 +42,35 @@ double pixels_in_disc(Vec2d c, double r, int W, int H) {
 class LodMask final : public Technique {
  public:
   LodMask(const TechniqueConfig& c, const ParamValues& v)
-      : display_(c.display), inner_deg_(v.real("inner_deg")), outer_deg_(v.real("outer_deg")) {}
+      : display_(c.display),
+        inner_deg_(v.real("inner_deg")),
+        outer_deg_(v.real("outer_deg")),
+        hold_px_(v.real("hold_deg") > 0.0 ? display_.radius_px_at(v.real("hold_deg")) : 0.0) {}
 
+  void reset() override { held_ = false; }
+
+  // Radii of the two circles around their centre: the LOD radii at this
+  // gaze (fovea scale, latency margin) grown by the hold distance.
   std::pair<double, double> radii(const GazeState& g) const {
     const double extra = latency_margin_deg(g);
-    return {display_.radius_px_at(inner_deg_ * g.fovea_scale + extra),
-            display_.radius_px_at(outer_deg_ * g.fovea_scale + extra)};
+    return {display_.radius_px_at(inner_deg_ * g.fovea_scale + extra) + hold_px_,
+            display_.radius_px_at(outer_deg_ * g.fovea_scale + extra) + hold_px_};
+  }
+
+  // The circles' centre (top-left pixels): the held one while the gaze stays
+  // within hold_px_ of it, otherwise the gaze.
+  Vec2d centre(const GazeState& g) const {
+    if (held_ && std::hypot(g.gaze_px.x - held_centre_.x, g.gaze_px.y - held_centre_.y) <= hold_px_)
+      return held_centre_;
+    return g.gaze_px;
   }
 
   FrameStats render(Scene& scene, const FrameInput&, const GazeState& gaze,
                     const gpu::RenderTarget& target) override {
     const int W = target.width(), H = target.height();
-    const Vec2d g = to_gl(gaze.gaze_px, H);
+    held_centre_ = centre(gaze);
+    held_ = true;
+    const Vec2d g = to_gl(held_centre_, H);
     const auto [r_in, r_out] = radii(gaze);
     const View view = View::full(W, H);
     // The scene draws into its own G-buffer (bound by prepass_begin); the
@@ -82,18 +109,18 @@ class LodMask final : public Technique {
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     const auto [r_in, r_out] = radii(gaze);
+    const Vec2d c = centre(gaze);
     const auto* a = kRingColours[0];
     const auto* b = kRingColours[1];
-    return {
-        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_in, 0, a[0], a[1], a[2]},
-        {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r_out, 0, b[0], b[1], b[2]},
-        gaze_dot(gaze)};
+    return {{OverlayShape::Kind::Circle, c.x, c.y, r_in, 0, a[0], a[1], a[2]},
+            {OverlayShape::Kind::Circle, c.x, c.y, r_out, 0, b[0], b[1], b[2]},
+            gaze_dot(gaze)};
   }
 
  private:
-  // Inside the circle: stencil = value and depth reset to the far plane, so
-  // that the finer LOD drawn next replaces the coarser one there. Draws into
-  // the G-buffer the prepass bound.
+  // Inside the circle: stencil = value, depth reset to the far plane and the
+  // G-buffer cleared, so that the finer LOD drawn next replaces the coarser
+  // one there. Draws into the G-buffer the prepass bound.
   void mask(Vec2d g, double radius, int value) {
     const gpu::Program& p = kit_.fullscreen("lodmask/mask.frag");
     p.set("u_centre", float(g.x), float(g.y));
@@ -105,12 +132,14 @@ class LodMask final : public Technique {
     s.stencil_ref = value;
     s.stencil_pass_op = GL_REPLACE;
     s.stencil_write = true;
-    s.color_off = true;
     kit_.pass_in_bound(p, s);
   }
 
   Display display_;
   double inner_deg_, outer_deg_;
+  double hold_px_;
+  bool held_ = false;
+  Vec2d held_centre_{};
   Kit kit_;
 };
 
@@ -140,6 +169,14 @@ TechniqueInfo lodmask_info() {
                          c.acuity.eccentricity_for_mar(4.0 * c.display.sharpness_deg()));
        }},
   };
+  t.params.push_back(param(
+      "hold_deg",
+      "the circles stay put while the gaze stays within this angle of their centre (fixational "
+      "drift and microsaccades are under 0.5 deg, the gaze filter's deadband 0.3 deg) and are "
+      "grown "
+      "by it, so the full-detail circle always covers the gaze's; LOD borders then move only with "
+      "saccades (0 = follow the gaze every frame)",
+      "deg", ParamType::Real, 0.0, 10.0, 1.0));
   t.check = [](const ParamValues& v) {
     if (v.real("outer_deg") < v.real("inner_deg"))
       throw Error("lodmask parameter outer_deg must be >= inner_deg");

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "foveate/core/error.hpp"
 
@@ -97,9 +99,12 @@ TEST(Checkerboard, PatternAndRegions) {
   EXPECT_EQ(p.quad({2.5, 0.5}), 2);
   EXPECT_EQ(p.quad({3.5, 3.5}), 3);
   EXPECT_EQ(p.quad({4.5, 4.5}), 0);
-  // Block-aligned distance: every pixel of a tile has the tile's distance.
-  EXPECT_DOUBLE_EQ(p.tile_distance({12.5, 0.5}, g), 12.0);
-  EXPECT_DOUBLE_EQ(p.tile_distance({15.9, 3.9}, g), 12.0);
+  // Block-aligned distance: every pixel of a tile has the tile's distance,
+  // from the gaze to the tile's nearest point.
+  EXPECT_DOUBLE_EQ(p.tile_distance({12.5, 0.5}, g), 11.5);
+  EXPECT_DOUBLE_EQ(p.tile_distance({15.9, 3.9}, g), 11.5);
+  EXPECT_DOUBLE_EQ(p.tile_distance({1.5, 2.5}, g), 0.0);  // the gaze's own tile
+  EXPECT_DOUBLE_EQ(p.tile_distance({12.5, 12.5}, g), std::hypot(11.5, 11.5));
   EXPECT_EQ(p.region({8.5, 0.5}, g), 0);
   EXPECT_EQ(p.region({12.5, 0.5}, g), 1);
   EXPECT_EQ(p.region({24.5, 0.5}, g), 2);
@@ -121,6 +126,66 @@ TEST(Checkerboard, PatternAndRegions) {
   }
 }
 
+TEST(Checkerboard, RegionZeroHoldsTheDiscOfItsRadius) {
+  // Every pixel within thresholds_px[0] of the gaze is kept (region 0), for
+  // any gaze inside a tile: no tile straddling the circle drops a quad.
+  CheckerboardPattern p;
+  p.block = 4;
+  p.thresholds_px = {37.3, 50, 80};
+  for (const Vec2d g : {Vec2d{100, 100}, Vec2d{103.7, 98.2}, Vec2d{7.9, 0.1}}) {
+    for (int y = 0; y < 200; ++y) {
+      for (int x = 0; x < 200; ++x) {
+        const Vec2d px{x + 0.5, y + 0.5};
+        if (std::hypot(px.x - g.x, px.y - g.y) <= p.thresholds_px[0]) {
+          EXPECT_EQ(p.region(px, g), 0) << x << "," << y;
+        }
+      }
+    }
+  }
+}
+
+TEST(Checkerboard, GapsBetweenKeptPixels) {
+  // Against brute force: the diameter of the largest disc free of kept pixel
+  // centres, probed on a fine grid of candidate centres over one 2n tile. In
+  // region 3 that is the gap exactly (the disc at the dropped corner quad
+  // touches the corners of four kept quads); across an n x n hole it is n + 1,
+  // or up to sqrt((n + 1)^2 + 1) when n is even and the disc passes between
+  // two kept centres of the neighbouring row.
+  for (int n : {1, 2, 4, 8}) {
+    for (int k = 1; k < 4; ++k) {
+      CheckerboardPattern p;
+      p.block = n;
+      p.thresholds_px = {k >= 1 ? -1.0 : 1e9, k >= 2 ? -1.0 : 1e9, k >= 3 ? -1.0 : 1e9};
+      std::vector<Vec2d> kept;
+      for (int y = -4 * n; y < 8 * n; ++y) {
+        for (int x = -4 * n; x < 8 * n; ++x) {
+          if (p.kept({x + 0.5, y + 0.5}, {1e6, 1e6})) kept.push_back({x + 0.5, y + 0.5});
+        }
+      }
+      double largest = 0;
+      const int steps = 8 * n;
+      for (int j = 0; j <= steps; ++j) {
+        for (int i = 0; i <= steps; ++i) {
+          const Vec2d c{2.0 * n * i / steps, 2.0 * n * j / steps};
+          double nearest = 1e9;
+          for (const Vec2d& q : kept) nearest = std::min(nearest, std::hypot(q.x - c.x, q.y - c.y));
+          largest = std::max(largest, 2 * nearest);
+        }
+      }
+      const double gap = checkerboard_gap_px(k, n);
+      if (k == 3) {
+        EXPECT_NEAR(gap, largest, 1e-9) << "block " << n;
+      } else {
+        EXPECT_DOUBLE_EQ(gap, n + 1.0);
+        EXPECT_GE(largest, gap - 1e-9) << "block " << n << " region " << k;
+        EXPECT_LE(largest, std::hypot(gap, 1.0) + 1e-9) << "block " << n << " region " << k;
+      }
+    }
+  }
+  EXPECT_DOUBLE_EQ(checkerboard_gap_px(0, 4), 1.0);  // native spacing
+  EXPECT_THROW(checkerboard_gap_px(4, 4), Error);
+}
+
 TEST(Checkerboard, ThresholdsFromFractionsAndAcuity) {
   const auto f = CheckerboardPattern::from_fractions(16, 1280, 720);
   const double diag = std::hypot(1280, 720);
@@ -129,12 +194,30 @@ TEST(Checkerboard, ThresholdsFromFractionsAndAcuity) {
 
   const Display d = Display::load("desktop-1080p");
   const AcuityModel a = AcuityModel::quality("A");
-  const auto p = CheckerboardPattern::from_acuity(16, d, a);
-  // Region 3 keeps 1 of 4 quads (sampling factor 2): it starts where w(e) = 2 w*.
-  const double e3 = (2 * d.sharpness_deg() - a.w0_deg) / a.slope;
-  EXPECT_NEAR(p.thresholds_px[2], d.eye_distance_px() * std::tan(e3 * M_PI / 180), 1e-9);
-  EXPECT_LT(p.thresholds_px[0], p.thresholds_px[1]);
-  EXPECT_LT(p.thresholds_px[1], p.thresholds_px[2]);
+  // Region k starts where the MAR in pixels, w(e) f / cos e per radian (f the
+  // eye distance in pixels), is twice the region's largest gap.
+  const auto mar_px = [&](double e) {
+    return a.mar_deg(e) * M_PI / 180 * d.eye_distance_px() / std::cos(e * M_PI / 180);
+  };
+  for (int n : {2, 4, 16}) {
+    const auto p = CheckerboardPattern::from_acuity(n, d, a);
+    for (int k = 0; k < 3; ++k) {
+      const double e = std::atan(p.thresholds_px[k] / d.eye_distance_px()) * 180 / M_PI;
+      EXPECT_NEAR(mar_px(e), 2 * checkerboard_gap_px(k + 1, n), 1e-6) << n << " " << k;
+      EXPECT_NEAR(mar_px_at(d, a, e), mar_px(e), 1e-9);
+    }
+    // Regions 1 and 2 leave the same n x n holes: region 1 is empty.
+    EXPECT_DOUBLE_EQ(p.thresholds_px[0], p.thresholds_px[1]);
+    EXPECT_LT(p.thresholds_px[1], p.thresholds_px[2]);
+  }
+  // 4-pixel quads on the paper's display: two samples per MAR cycle across
+  // 5-pixel gaps from 8.5 degrees, across 7.1-pixel gaps from 12.2.
+  const auto p4 = CheckerboardPattern::from_acuity(4, d, a);
+  EXPECT_NEAR(std::atan(p4.thresholds_px[0] / d.eye_distance_px()) * 180 / M_PI, 8.5, 0.05);
+  EXPECT_NEAR(std::atan(p4.thresholds_px[2] / d.eye_distance_px()) * 180 / M_PI, 12.2, 0.05);
+  // Bigger quads leave bigger holes: every region starts further out.
+  const auto p8 = CheckerboardPattern::from_acuity(8, d, a);
+  for (int k = 0; k < 3; ++k) EXPECT_GT(p8.thresholds_px[k], p4.thresholds_px[k]);
   EXPECT_NEAR(checkerboard_sampling_factor(1), std::sqrt(4.0 / 3.0), 1e-12);
   EXPECT_THROW(CheckerboardPattern::from_fractions(0, 10, 10), Error);
 }

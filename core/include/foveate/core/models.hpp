@@ -44,8 +44,10 @@ struct KernelLogPolar {
 
 // --- Silvera: "OpenGL Foveated Rendering" (2022), mask-based checkerboard.
 // Pixels are grouped in n x n quads, quads in 2 x 2 tiles. Region k (0..3)
-// drops k of the 4 quads of each tile. Regions are chosen by the distance
-// between the tile and the gaze tile (both snapped to the 2n grid).
+// drops k of the 4 quads of each tile. Regions are chosen per tile (Silvera's
+// block-aligned distance): by the distance from the gaze to the nearest point
+// of the pixel's tile, so that region 0 holds every pixel within
+// thresholds_px[0] of the gaze and a tile is never split between regions.
 struct CheckerboardPattern {
   int block = 16;                         ///< n
   std::array<double, 3> thresholds_px{};  ///< region k+1 begins beyond thresholds_px[k]
@@ -53,12 +55,20 @@ struct CheckerboardPattern {
   /// Silvera's fixed thresholds: 10 %, 25 %, 40 % of the framebuffer diagonal.
   static CheckerboardPattern from_fractions(int block, int width, int height,
                                             std::array<double, 3> fractions = {0.10, 0.25, 0.40});
-  /// Thresholds from the acuity model: region k starts where the MAR allows the
-  /// effective sampling factor sqrt(4 / (4 - k)) of a tile keeping 4 - k quads.
+  /// Thresholds from the acuity model and the block size: region k starts
+  /// where the MAR in pixels, w(e) * ppd(e), reaches twice the largest gap its
+  /// pattern leaves between kept pixels (checkerboard_gap_px: n + 1 for the
+  /// n x n holes of regions 1 and 2, (n + 1) sqrt 2 across the dropped corner
+  /// quad of region 3), i.e. two samples per resolvable cycle even across a
+  /// hole. The average density of a region (sqrt(4 / (4 - k)) per axis) is
+  /// never the limit: a hole of n pixels is wider than that for any n.
+  /// ppd is the tangential density D / cos e (the smaller of the two at a
+  /// flat display), for a gaze at the display centre like radius_px_at.
   static CheckerboardPattern from_acuity(int block, const Display& display,
                                          const AcuityModel& acuity);
 
-  /// Block-aligned distance (pixels) between the tile of `pixel` and the gaze tile.
+  /// Block-aligned distance (pixels) from the gaze to the nearest point of
+  /// the tile of `pixel`.
   [[nodiscard]] double tile_distance(Vec2d pixel, Vec2d gaze) const;
   /// Region 0..3 of a pixel.
   [[nodiscard]] int region(Vec2d pixel, Vec2d gaze) const;
@@ -70,7 +80,18 @@ struct CheckerboardPattern {
   void validate() const;
 };
 
-/// Effective sampling factor of a checkerboard region that keeps (4 - k) of 4 quads.
+/// Sampling factor of a checkerboard region that keeps (4 - k) of 4 quads, by
+/// average density: sqrt(4 / (4 - k)).
 double checkerboard_sampling_factor(int region);
+/// The largest gap (pixels) that region k's pattern leaves between kept pixel
+/// centres with quads of n = `block` pixels: 1 in region 0 (native spacing);
+/// n + 1 across the n x n holes of regions 1 and 2 (kept centres on either
+/// side of a hole along its rows and columns); (n + 1) sqrt 2 across the
+/// dropped corner quad of region 3, whose rows and columns hold no kept pixel,
+/// between the kept quads at its corners.
+double checkerboard_gap_px(int region, int block);
+/// The MAR in pixels at eccentricity e (degrees) for a gaze at the display
+/// centre: w(e) times the tangential pixel density there (D / cos e per radian).
+double mar_px_at(const Display& display, const AcuityModel& acuity, double eccentricity_deg);
 
 }  // namespace foveate

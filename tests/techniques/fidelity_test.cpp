@@ -1,0 +1,342 @@
+// Fidelity of the foveated techniques against native ("a viewer cannot tell
+// their periphery from native"): every technique's foveal disc, out to its
+// innermost radius and at least 2.5 degrees, equals native within the golden
+// tolerance; the periphery keeps native's mean linear luminance; and each
+// technique's own artefacts are checked where they used to show (checkerboard's
+// lattice of sharp kept quads, lodmask's stale coarse surfaces and popping
+// borders, logpolar's dark rim and blurred fovea).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "foveate/core/models.hpp"
+#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/technique.hpp"
+#include "gl_fixture.hpp"
+#include "image_compare.hpp"
+
+using namespace foveate;
+
+namespace {
+
+const std::string kModels = std::string(FOVEATE_TEST_DATA) + "/models";
+
+// The golden tolerance (max channel error 48, mean 0.5, at most 0.5 % of
+// pixels off by more than 16) over the pixels within `radius` of `centre`.
+test::Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
+  test::Comparison c;
+  c.size_matches = a.width == b.width && a.height == b.height;
+  if (!c.size_matches) return c;
+  const int threshold = test::Tolerance{}.pixel_threshold;
+  double sum = 0;
+  size_t n = 0, off = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      if (std::hypot(x + 0.5 - centre.x, y + 0.5 - centre.y) > radius) continue;
+      int worst = 0;
+      for (int ch = 0; ch < 3; ++ch) {
+        const int e = std::abs(int(a.at(x, y)[ch]) - int(b.at(x, y)[ch]));
+        worst = std::max(worst, e);
+        sum += e;
+      }
+      c.max_error = std::max(c.max_error, worst);
+      off += worst > threshold ? 1 : 0;
+      ++n;
+    }
+  }
+  c.mean_error = n ? sum / (3.0 * double(n)) : 0.0;
+  c.fraction = n ? double(off) / double(n) : 0.0;
+  return c;
+}
+
+// Whether a comparison is within the golden tolerance, with its numbers.
+::testing::AssertionResult within_golden(const test::Comparison& c) {
+  const std::string numbers = "max " + std::to_string(c.max_error) + ", mean " +
+                              std::to_string(c.mean_error) + ", " +
+                              std::to_string(100 * c.fraction) + " % off by more than 16";
+  if (c.within(test::Tolerance{})) return ::testing::AssertionSuccess() << numbers;
+  return ::testing::AssertionFailure() << numbers;
+}
+
+// Mean linear luminance (sRGB decoded, Rec. 709 weights) of the pixels at
+// least `min_radius` from `centre` (as in technique_test.cpp).
+double mean_linear_luminance(const Image& img, Vec2d centre, double min_radius) {
+  auto lin = [](uint8_t c) {
+    const double v = c / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      if (std::hypot(x + 0.5 - centre.x, y + 0.5 - centre.y) < min_radius) continue;
+      const uint8_t* p = img.at(x, y);
+      sum += 0.2126 * lin(p[0]) + 0.7152 * lin(p[1]) + 0.0722 * lin(p[2]);
+      ++n;
+    }
+  }
+  return n ? sum / n : 0.0;
+}
+
+class Fidelity : public test::GlTest {
+ protected:
+  TechniqueConfig config(int w, int h, std::map<std::string, double> params = {}) const {
+    TechniqueConfig c;
+    c.display = Display::load("desktop-1080p").resized(w, h);
+    c.acuity = AcuityModel::quality("A");
+    c.params = std::move(params);
+    return c;
+  }
+  // Frame k (at 1 s + k / 60) of `scene` with `technique` for `gaze`.
+  static Image run(Technique& t, Scene& s, Vec2d gaze, int k = 0, FrameStats* stats = nullptr) {
+    RendererOptions o;
+    o.width = t.display().width_px;
+    o.height = t.display().height_px;
+    o.start_time_s = 1.0;
+    Renderer r(s, o);
+    const FrameStats st = r.render(t, k, GazeState{gaze});
+    if (stats) *stats = st;
+    return r.read_output();
+  }
+  Image native(Scene& s, int w, int h, int k = 0) {
+    auto n = make_technique("native", config(w, h));
+    return run(*n, s, {w / 2.0, h / 2.0}, k);
+  }
+  // The radius of the first circle of a technique's overlay: its fovea.
+  static double fovea_px(const Technique& t, Vec2d gaze) {
+    for (const OverlayShape& s : t.overlay(GazeState{gaze})) {
+      if (s.kind == OverlayShape::Kind::Circle) return s.w;
+    }
+    return 0.0;
+  }
+};
+
+}  // namespace
+
+// ---------------------------------------------------------------- checkerboard
+
+TEST_F(Fidelity, CheckerboardFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
+  const int W = 1920, H = 1080;
+  for (const char* name : {"detail", "cheap"}) {
+    auto scene = load_scene(name);
+    const Image ref = native(*scene, W, H);
+    auto t = make_technique("checkerboard", config(W, H));
+    for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{400, 300}}) {
+      FrameStats s;
+      const Image img = run(*t, *scene, gaze, 0, &s);
+      EXPECT_LT(s.shaded_pixels, 0.6 * W * H) << name;
+      const double fovea = fovea_px(*t, gaze);
+      EXPECT_GE(fovea, t->display().radius_px_at(2.5));
+      EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
+      const double periphery = mean_linear_luminance(ref, gaze, fovea);
+      EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
+    }
+  }
+}
+
+TEST_F(Fidelity, CheckerboardKeptQuadsDoNotStandOut) {
+  // Where quads are dropped, the kept pixels come out of the same filter as
+  // the dropped ones: they are not native while their neighbours are
+  // reconstructed (the lattice of sharp quads). On the detail scene's fine
+  // rings, kept and dropped pixels of region 3 differ from native alike.
+  const int W = 1920, H = 1080;
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene, W, H);
+  auto t = make_technique("checkerboard", config(W, H));
+  const Vec2d gaze{960, 540};
+  const Image img = run(*t, *scene, gaze);
+  const auto rings = t->overlay(GazeState{gaze});
+  CheckerboardPattern p;
+  p.block = t->values().integer("block");
+  p.thresholds_px = {rings[1].w, rings[2].w, rings[3].w};
+  double err[2] = {0, 0};
+  int n[2] = {0, 0};
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      if (p.region({x + 0.5, y + 0.5}, gaze) != 3) continue;
+      const int kept = p.kept({x + 0.5, y + 0.5}, gaze) ? 1 : 0;
+      for (int c = 0; c < 3; ++c)
+        err[kept] += std::abs(int(img.at(x, y)[c]) - int(ref.at(x, y)[c]));
+      n[kept] += 3;
+    }
+  }
+  ASSERT_GT(n[1], 10000);
+  const double kept = err[1] / n[1], dropped = err[0] / n[0];
+  EXPECT_GT(kept, 0.8 * dropped) << kept << " vs " << dropped;
+}
+
+// ---------------------------------------------------------------- lodmask
+
+TEST_F(Fidelity, LodmaskFullDetailCircleIsNativeBackgroundIncluded) {
+  // A torus seen face on: its coarse LODs cut the hole with chords and cover
+  // background that the full-detail mesh leaves open. Inside the full-detail
+  // circle the image is native's, the hole included, on the torus and on the
+  // test scene of Guenter et al.
+  const int W = 640, H = 360;
+  struct Case {
+    std::string scene;
+    Vec2d gaze;
+  };
+  for (const Case& c : {Case{kModels + "/torus.obj", {320, 180}}, Case{"guenter", {320, 200}},
+                        Case{"guenter", {150, 250}}}) {
+    auto scene = load_scene(c.scene);
+    const Image ref = native(*scene, W, H);
+    auto t = make_technique("lodmask", config(W, H));
+    const Image img = run(*t, *scene, c.gaze);
+    const double inner = t->display().radius_px_at(t->values().real("inner_deg"));
+    EXPECT_GE(inner, t->display().radius_px_at(2.5));
+    EXPECT_TRUE(within_golden(compare_disc(ref, img, c.gaze, inner))) << c.scene;
+    const double periphery = mean_linear_luminance(ref, c.gaze, inner);
+    EXPECT_NEAR(mean_linear_luminance(img, c.gaze, inner) / periphery, 1.0, 0.02) << c.scene;
+  }
+}
+
+TEST_F(Fidelity, LodmaskBordersHoldStillUnderSmallGazeMoves) {
+  // Fixational drift and microsaccades (under hold_deg) move the gaze, not the
+  // LOD borders: frames of the same scene time are identical. A larger move
+  // (a saccade) moves them, and the fovea around the new gaze is native.
+  const int W = 640, H = 360;
+  auto scene = load_scene("guenter");
+  auto t = make_technique("lodmask", config(W, H));
+  const double hold = t->display().radius_px_at(t->values().real("hold_deg"));
+  const Vec2d g0{300, 190};
+  const Image first = run(*t, *scene, g0);
+  for (const Vec2d d : {Vec2d{0.5, 0.3}, Vec2d{-0.6, 0.2}, Vec2d{0.1, -0.7}}) {
+    const Vec2d g{g0.x + d.x * hold, g0.y + d.y * hold};
+    const Image img = run(*t, *scene, g);
+    EXPECT_EQ(test::compare_images(first, img, 0).max_error, 0) << d.x << "," << d.y;
+    const auto shapes = t->overlay(GazeState{g});
+    EXPECT_EQ(shapes[0].x, g0.x);
+    EXPECT_EQ(shapes[0].y, g0.y);
+  }
+  const Vec2d far{g0.x + 3 * hold, g0.y};
+  const Image moved = run(*t, *scene, far);
+  EXPECT_EQ(t->overlay(GazeState{far})[0].x, far.x);
+  const double inner = t->display().radius_px_at(t->values().real("inner_deg"));
+  EXPECT_TRUE(within_golden(compare_disc(native(*scene, W, H), moved, far, inner)));
+  // Without holding, the same small moves move the borders.
+  auto follow = make_technique("lodmask", config(W, H, {{"hold_deg", 0}}));
+  const Image a = run(*follow, *scene, g0);
+  const Image b = run(*follow, *scene, {g0.x + 0.6 * hold, g0.y});
+  EXPECT_GT(test::compare_images(a, b, 0).max_error, 0);
+}
+
+// ---------------------------------------------------------------- logpolar
+
+TEST_F(Fidelity, LogpolarFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
+  // Native out to the disc's radius: at least 2.5 degrees, and out to where
+  // the buffer's sampling reaches a pixel (no blur there any more).
+  const int W = 1920, H = 1080;
+  for (const char* name : {"detail", "guenter"}) {
+    auto scene = load_scene(name);
+    const Image ref = native(*scene, W, H);
+    auto t = make_technique("logpolar", config(W, H));
+    for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{300, 900}}) {
+      FrameStats s;
+      const Image img = run(*t, *scene, gaze, 0, &s);
+      const double fovea = fovea_px(*t, gaze);
+      EXPECT_GE(fovea, t->display().radius_px_at(2.5));
+      EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
+      const double periphery = mean_linear_luminance(ref, gaze, fovea);
+      EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
+      EXPECT_LT(s.shaded_pixels, 0.25 * W * H);
+    }
+  }
+}
+
+TEST_F(Fidelity, LogpolarHasNoRimOnDeferredScenes) {
+  // Buffer texels beyond the screen used to shade an empty G-buffer, and the
+  // inverse mapping's filter pulled that into the border rows and columns
+  // (the bottom row was 21 codes darker than native, the sides 11).
+  const int W = 960, H = 540;
+  auto scene = load_scene("guenter");
+  const Image ref = native(*scene, W, H);
+  auto t = make_technique("logpolar", config(W, H));
+  const Image img = run(*t, *scene, {W / 2.0, H / 2.0});
+  const auto signed_mean = [&](int x0, int y0, int x1, int y1) {
+    double sum = 0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        for (int c = 0; c < 3; ++c) sum += int(img.at(x, y)[c]) - int(ref.at(x, y)[c]);
+        n += 3;
+      }
+    }
+    return sum / n;
+  };
+  EXPECT_NEAR(signed_mean(0, H - 2, W, H), 0.0, 2.0) << "bottom";
+  EXPECT_NEAR(signed_mean(0, 0, W, 2), 0.0, 2.0) << "top";
+  EXPECT_NEAR(signed_mean(0, 0, 2, H), 0.0, 2.0) << "left";
+  EXPECT_NEAR(signed_mean(W - 2, 0, W, H), 0.0, 2.0) << "right";
+}
+
+TEST_F(Fidelity, LogpolarKernelFromTheModelShadesTheFewestPixels) {
+  // The default alpha is the kernel (in [1, 4]) whose buffer, at the largest
+  // sigma whose gaps stay within half the MAR outside the native disc, shades
+  // the fewest pixels: 1.125 at 1920x1080 (sigma 1.99); 1 at 640x360, where
+  // no buffer is fine enough (sigma stays 1) and a larger alpha would only
+  // widen the periphery's cells.
+  struct Size {
+    int w, h;
+    double alpha, sigma;
+  };
+  for (const Size& sz : {Size{1920, 1080, 1.125, 1.990}, Size{640, 360, 1.0, 1.0}}) {
+    const ParamValues v = resolve_parameters(technique_info("logpolar"), config(sz.w, sz.h));
+    EXPECT_DOUBLE_EQ(v.real("alpha"), sz.alpha) << sz.w;
+    EXPECT_NEAR(v.real("sigma"), sz.sigma, 0.001) << sz.w;
+  }
+  // Against the neighbours and the old default (alpha 1), each with the sigma
+  // the model accepts for it, rendered at 1080p with the gaze at the centre.
+  const int W = 1920, H = 1080;
+  auto scene = load_scene("cheap");
+  const auto shaded = [&](std::map<std::string, double> params) {
+    auto t = make_technique("logpolar", config(W, H, std::move(params)));
+    FrameStats s;
+    run(*t, *scene, {W / 2.0, H / 2.0}, 0, &s);
+    return s.shaded_pixels;
+  };
+  const double best = shaded({});
+  for (double alpha : {1.0, 1.25, 1.5, 2.0, 4.0}) {
+    EXPECT_LT(best, shaded({{"alpha", alpha}})) << alpha;
+  }
+}
+
+TEST_F(Fidelity, LogpolarTemporalLevelConvergesTowardsTheFilteredScene) {
+  // First level of the antialiasing: jittered buffer samples accumulated over
+  // frames of a still scene estimate each texel's footprint better than one
+  // sample can. On a grating far finer than any texel (mean linear luminance
+  // 0.5, sRGB code 188) single samples are black or white; accumulated, the
+  // periphery comes closer to the uniform grey that the eye sees there.
+  const int W = 640, H = 360;
+  auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/shadertoy/grating.glsl");
+  const Vec2d gaze{W / 2.0, H / 2.0};
+  const auto periphery_deviation = [&](double temporal) {
+    auto t = make_technique("logpolar", config(W, H, {{"temporal", temporal}}));
+    RendererOptions o;
+    o.width = W;
+    o.height = H;
+    o.start_time_s = 1.0;
+    Renderer r(*scene, o);
+    FrameInput in = r.frame_input(0);
+    for (int k = 0; k < 12; ++k) {  // successive frames of the same instant
+      in.frame = k;
+      r.render(*t, in, GazeState{gaze});
+    }
+    const Image img = r.read_output();
+    const double fovea = fovea_px(*t, gaze) * 1.5;  // beyond the blend band
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x < W; ++x) {
+        if (std::hypot(x + 0.5 - gaze.x, y + 0.5 - gaze.y) < fovea) continue;
+        for (int c = 0; c < 3; ++c) sum += std::abs(int(img.at(x, y)[c]) - 188);
+        n += 3;
+      }
+    }
+    return sum / n;
+  };
+  const double with = periphery_deviation(0.5), without = periphery_deviation(0.0);
+  EXPECT_LT(with, 0.8 * without) << with << " vs " << without;
+}
