@@ -1,12 +1,16 @@
 // lodmask: Knapik and McGowen, "Foveal Rendering" (2016). Three mesh LODs
-// (full, about 10 % and 1 % of the triangles); the G-buffer is filled with the
-// coarsest LOD, then stencil masks around the gaze let finer LODs overwrite it
-// (mid inside the outer circle, full inside the inner one), and lighting is
-// deferred. The circles come from the acuity model: the eye resolves half the
-// display's detail beyond e where w(e) = 2 w*, a quarter beyond w(e) = 4 w*.
+// (full, about 10 % and 1 % of the triangles) fill the G-buffer through
+// stencil masks around the gaze (full inside the inner circle, mid in the
+// ring to the outer one, coarse beyond), and lighting is deferred. The
+// circles come from the acuity model: the eye resolves half the display's
+// detail beyond e where w(e) = 2 w*, a quarter beyond w(e) = 4 w*.
 //
-// Each mask clears the G-buffer under it (not only depth and stencil), so that
-// inside the full-detail circle the image is native's, background included.
+// The stencil marks every pixel's LOD before any is drawn and each LOD writes
+// only its own pixels, so that inside the full-detail circle the image is
+// native's, background included. (The masks used to let finer LODs overwrite
+// a coarse G-buffer after resetting depth only, which left a coarser surface
+// wherever the full-detail mesh has none.)
+//
 // Against popping at the LOD borders the circles are held still: their centre
 // moves only when the gaze leaves a small disc around it (hold_deg, larger
 // than fixational drift and microsaccades), and they are grown by that disc
@@ -73,23 +77,21 @@ class LodMask final : public Technique {
     const Vec2d g = to_gl(held_centre_, H);
     const auto [r_in, r_out] = radii(gaze);
     const View view = View::full(W, H);
-    // The scene draws into its own G-buffer (bound by prepass_begin); the
-    // stencil state set here decides where each LOD may write.
+    // The scene draws into its own G-buffer (bound and cleared by
+    // prepass_begin); the stencil marks which LOD owns each pixel (2 inside
+    // the inner circle, 1 in the ring, 0 outside) before anything is drawn,
+    // and each LOD writes only its own pixels: where it has no surface the
+    // G-buffer stays cleared and the background shows, as in native.
     scene.prepass_begin(view);
+    mask(g, r_in, GL_ALWAYS, 2, GL_REPLACE);
+    mask(g, r_out, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1
     gpu::PassState draw;
-    draw.stencil_func = GL_ALWAYS;
-    gpu::apply(draw);
-    scene.prepass_draw(view, 2);
-    mask(g, r_out, 1);
-    draw.stencil_func = GL_LEQUAL;  // 1 <= stencil: inside the outer circle
-    draw.stencil_ref = 1;
-    gpu::apply(draw);
-    scene.prepass_draw(view, 1);
-    mask(g, r_in, 2);
     draw.stencil_func = GL_EQUAL;
-    draw.stencil_ref = 2;
-    gpu::apply(draw);
-    scene.prepass_draw(view, 0);
+    for (int lod = 0; lod < 3; ++lod) {
+      draw.stencil_ref = 2 - lod;
+      gpu::apply(draw);
+      scene.prepass_draw(view, lod);
+    }
     gpu::apply({});
     scene.prepass_end();
     const double shaded = kit_.shade(
@@ -118,20 +120,19 @@ class LodMask final : public Technique {
   }
 
  private:
-  // Inside the circle: stencil = value, depth reset to the far plane and the
-  // G-buffer cleared, so that the finer LOD drawn next replaces the coarser
-  // one there. Draws into the G-buffer the prepass bound.
-  void mask(Vec2d g, double radius, int value) {
+  // Inside the circle, where the stencil test (func, ref) passes, applies
+  // `op` to the stencil; nothing else is written. Draws into the G-buffer
+  // the prepass bound.
+  void mask(Vec2d g, double radius, GLenum func, int ref, GLenum op) {
     const gpu::Program& p = kit_.fullscreen("lodmask/mask.frag");
     p.set("u_centre", float(g.x), float(g.y));
     p.set("u_radius", float(radius));
     gpu::PassState s;
-    s.depth_func = GL_ALWAYS;
-    s.depth_write = true;
-    s.stencil_func = GL_ALWAYS;
-    s.stencil_ref = value;
-    s.stencil_pass_op = GL_REPLACE;
+    s.stencil_func = func;
+    s.stencil_ref = ref;
+    s.stencil_pass_op = op;
     s.stencil_write = true;
+    s.color_off = true;
     kit_.pass_in_bound(p, s);
   }
 

@@ -88,9 +88,7 @@ class Scene {
   virtual void prepass(const View& view);
   /// Fine-grained prepass for techniques that mask geometry (lodmask):
   /// begin binds the G-buffer framebuffer (with a depth-stencil attachment) at
-  /// the view's size and clears it (every colour attachment to zero, which
-  /// means "no surface": lodmask clears a masked region by writing zero to
-  /// every draw buffer); draw rasterises the geometry with the
+  /// the view's size and clears it; draw rasterises the geometry with the
   /// scene's automatic LOD (by distance and view.pixel_scale) when `lod` is
   /// -1 or 0, and at least as coarse as discrete level `lod` (1 about 10 %, 2
   /// about 1 % of the triangles) otherwise, with the depth test it needs and
