@@ -301,7 +301,16 @@ class Layered final : public Technique {
 
   void composite(Scene& scene, const gpu::RenderTarget& target) {
     const int n = static_cast<int>(plan_.layers.size());
-    const gpu::Program& p = kit_.fullscreen("layered/composite.frag");
+    const auto vp = scene.view_projection();
+    int warp[kMaxLayers] = {};
+    bool any_warp = false;
+    for (int i = 0; i < n; ++i) {
+      const LayerState& st = state_[static_cast<size_t>(i)];
+      warp[i] = !st.updated && st.has_positions && vp ? 1 : 0;
+      any_warp = any_warp || warp[i];
+    }
+    const gpu::Program& p =
+        kit_.fullscreen(any_warp ? "layered/composite_warp.frag" : "layered/composite.frag");
     kit_.pass(p, target, {}, [&](const gpu::Program& prog, gpu::Samplers& samplers) {
       float rects[kMaxLayers * 4] = {}, centres[kMaxLayers * 2] = {}, radii[kMaxLayers] = {};
       static const char* names[kMaxLayers] = {"u_layers[0]", "u_layers[1]", "u_layers[2]",
@@ -320,25 +329,23 @@ class Layered final : public Technique {
       }
       // Layers shown stale (half rate) move with the camera: each pixel is
       // read where its world point was when the layer was rendered.
-      const auto vp = scene.view_projection();
-      static const char* position_names[kMaxLayers] = {"u_positions[0]", "u_positions[1]",
-                                                       "u_positions[2]", "u_positions[3]",
-                                                       "u_positions[4]", "u_positions[5]"};
-      int warp[kMaxLayers] = {};
-      float layer_vp[kMaxLayers * 16] = {};
-      for (int i = 0; i < n; ++i) {
-        const LayerState& st = state_[static_cast<size_t>(i)];
-        warp[i] = !st.updated && st.has_positions && vp ? 1 : 0;
-        samplers.bind(prog, position_names[i],
-                      warp[i] ? st.positions.color() : state_[0].spare.color());
-        std::copy_n(st.view_proj.data(), 16, layer_vp + i * 16);
+      if (any_warp) {
+        static const char* position_names[kMaxLayers] = {"u_positions[0]", "u_positions[1]",
+                                                         "u_positions[2]", "u_positions[3]",
+                                                         "u_positions[4]", "u_positions[5]"};
+        float layer_vp[kMaxLayers * 16] = {};
+        for (int i = 0; i < n; ++i) {
+          const LayerState& st = state_[static_cast<size_t>(i)];
+          samplers.bind(prog, position_names[i],
+                        warp[i] ? st.positions.color() : state_[0].spare.color());
+          std::copy_n(st.view_proj.data(), 16, layer_vp + i * 16);
+        }
+        glProgramUniform1iv(prog.id(), prog.uniform("u_warp[0]"), n, warp);
+        glProgramUniformMatrix4fv(prog.id(), prog.uniform("u_layer_view_proj[0]"), n, GL_FALSE,
+                                  layer_vp);
+        prog.set_mat4("u_view_proj", vp->data());
+        prog.set("u_frame_size", float(display_.width_px), float(display_.height_px));
       }
-      prog.allow_missing({"u_view_proj", "u_layer_view_proj[0]", "u_frame_size"});
-      glProgramUniform1iv(prog.id(), prog.uniform("u_warp[0]"), n, warp);
-      glProgramUniformMatrix4fv(prog.id(), prog.uniform_if_present("u_layer_view_proj[0]"), n,
-                                GL_FALSE, layer_vp);
-      if (vp) prog.set_mat4("u_view_proj", vp->data());
-      prog.set("u_frame_size", float(display_.width_px), float(display_.height_px));
       glProgramUniform4fv(prog.id(), prog.uniform("u_rects[0]"), n, rects);
       glProgramUniform2fv(prog.id(), prog.uniform("u_centres[0]"), n, centres);
       glProgramUniform1fv(prog.id(), prog.uniform("u_radii[0]"), n, radii);
