@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "foveate/core/error.hpp"
+#include "srgb.hpp"
 
 namespace foveate::metrics {
 namespace {
@@ -20,17 +21,9 @@ constexpr double kPi = std::numbers::pi;
 
 // ---- Independent helpers (not the library's) ---------------------------------
 
-double to_linear(double code) {
-  const double c = code / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-double to_code(double lin) {
-  lin = std::clamp(lin, 0.0, 1.0);
-  return 255.0 * (lin <= 0.0031308 ? 12.92 * lin : 1.055 * std::pow(lin, 1.0 / 2.4) - 0.055);
-}
-std::uint8_t q8(double code) {
-  return static_cast<std::uint8_t>(std::clamp(std::lround(code), 0L, 255L));
-}
+using test::q8;
+using test::to_code;
+using test::to_linear;
 
 struct Lcg {
   std::uint64_t s;
@@ -625,7 +618,7 @@ TEST(Compare, LuminanceRatioIsInLinearLight) {
   const QualityReport same = compare(grey(64, 36, 188), grey(64, 36, 188), d, {32, 18});
   EXPECT_DOUBLE_EQ(same.luminance_ratio, 1.0);
   const QualityReport dark = compare(grey(64, 36, 188), grey(64, 36, 128), d, {32, 18});
-  auto lin = [](double c) { return std::pow((c / 255.0 + 0.055) / 1.055, 2.4); };
+  auto lin = [](double c) { return to_linear(c); };
   EXPECT_NEAR(dark.luminance_ratio, lin(128) / lin(188), 1e-3);
   for (const BandStats& b : dark.bands) {
     if (b.pixels_fraction > 0) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "foveate/metrics/metrics.hpp"
+#include "srgb.hpp"
 
 namespace foveate::metrics {
 namespace {
@@ -22,17 +23,9 @@ constexpr double kPi = std::numbers::pi;
 
 // ---- Independent helpers -------------------------------------------------------
 
-double to_linear(double code) {
-  const double c = code / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-double to_code(double lin) {
-  lin = std::clamp(lin, 0.0, 1.0);
-  return 255.0 * (lin <= 0.0031308 ? 12.92 * lin : 1.055 * std::pow(lin, 1.0 / 2.4) - 0.055);
-}
-std::uint8_t q8(double code) {
-  return static_cast<std::uint8_t>(std::clamp(std::lround(code), 0L, 255L));
-}
+using test::q8;
+using test::to_code;
+using test::to_linear;
 
 // The design response of the acuity filter written out again: half-octave
 // ladder of low-passes c_j = 0.5 * 2^(-1/4) * 2^(-j/2) with a raised-cosine

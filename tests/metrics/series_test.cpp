@@ -255,9 +255,8 @@ TEST(Series, JsonKeysAndNulls) {
   EXPECT_EQ(keys, expect_keys);
   ASSERT_EQ(j["bands"].size(), 4u);
   const std::set<std::string> expect_band_keys{
-      "from_deg", "to_deg",      "pixels_fraction", "identical",        "psnr_db",
-      "ssim",     "acuity_rmse", "jnd_mean",        "visible_fraction", "flip_mean",
-      "luminance_ratio"};
+      "from_deg",    "to_deg",   "pixels_fraction",  "identical", "psnr_db",        "ssim",
+      "acuity_rmse", "jnd_mean", "visible_fraction", "flip_mean", "luminance_ratio"};
   for (const auto& band : j["bands"]) {
     std::set<std::string> band_keys;
     for (const auto& [k, v] : band.items()) band_keys.insert(k);

@@ -17,6 +17,7 @@
 #include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
+#include "srgb.hpp"
 
 using namespace foveate;
 
@@ -118,25 +119,7 @@ class Techniques : public test::GlTest {
 
 }  // namespace
 
-// Mean linear luminance (sRGB decoded, Rec. 709 weights) of the pixels
-// beyond `min_radius` pixels from `centre`.
-double mean_linear_luminance(const Image& img, Vec2d centre, double min_radius) {
-  auto lin = [](uint8_t c) {
-    const double v = c / 255.0;
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-  };
-  double sum = 0;
-  int n = 0;
-  for (int y = 0; y < img.height; ++y) {
-    for (int x = 0; x < img.width; ++x) {
-      if (std::hypot(x + 0.5 - centre.x, y + 0.5 - centre.y) < min_radius) continue;
-      const uint8_t* p = img.at(x, y);
-      sum += 0.2126 * lin(p[0]) + 0.7152 * lin(p[1]) + 0.0722 * lin(p[2]);
-      ++n;
-    }
-  }
-  return n ? sum / n : 0.0;
-}
+using test::mean_linear_luminance;
 
 TEST_F(Techniques, EveryTechniqueKeepsTheMeanLinearLuminanceOfAFineGrating) {
   // Filtering in sRGB codes would average black and white to code 128
