@@ -102,4 +102,11 @@ void check_same_size(const Image& a, const Image& b, const std::string& what);
 /// Throws foveate::Error unless the options are valid for compare().
 void check_options(const QualityOptions& options);
 
+/// Index i mirrored into 0..n-1 (resample.cpp).
+int mirror(int i, int n);
+/// A level halved in each direction by the half-band filter.
+Map down(const Map& in);
+/// A level doubled back to w x h by the same filter.
+Map up(const Map& in, int w, int h);
+
 }  // namespace foveate::metrics::detail
