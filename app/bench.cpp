@@ -75,6 +75,30 @@ class Progress {
   std::chrono::steady_clock::time_point t0_;
 };
 
+// Adds a frame's pass times to the running sums, and the rest of the frame
+// (time outside every timed pass) as "other", kept last.
+void add_passes(std::vector<gpu::PassTime>& sums, const std::vector<gpu::PassTime>& frame,
+                double frame_ms) {
+  gpu::PassTime other{"other", 0.0};
+  if (!sums.empty() && sums.back().name == "other") {
+    other = sums.back();
+    sums.pop_back();
+  }
+  double timed = 0;
+  for (const gpu::PassTime& p : frame) {
+    timed += p.ms;
+    auto it = std::find_if(sums.begin(), sums.end(),
+                           [&](const gpu::PassTime& s) { return s.name == p.name; });
+    if (it == sums.end()) {
+      sums.push_back(p);
+    } else {
+      it->ms += p.ms;
+    }
+  }
+  other.ms += std::max(0.0, frame_ms - timed);
+  sums.push_back(other);
+}
+
 }  // namespace
 
 Sweep Sweep::parse(const std::string& text) {
@@ -135,10 +159,8 @@ BenchResult run_bench(const BenchOptions& o) {
   Session session(o.session, o.gaze);
   out.display = session.display();
   out.scene = session.scene().info().name;
-  {
-    const auto* r = glGetString(GL_RENDERER);
-    out.renderer = r ? reinterpret_cast<const char*>(r) : "";
-  }
+  out.environment = capture_environment(invocation().empty() ? o.command_line : invocation());
+  out.renderer = out.environment.renderer;
   Renderer& renderer = session.renderer();
   gaze::GazeTracker& gaze = session.gaze();
   const std::unique_ptr<Reference> reference =
@@ -189,11 +211,18 @@ BenchResult run_bench(const BenchOptions& o) {
   const bool native_listed =
       std::find(o.techniques.begin(), o.techniques.end(), "native") != o.techniques.end();
 
-  const int total = static_cast<int>(runs.size()) * (o.frames + o.warmup);
+  // Warm up until every technique is steady (its own settle_frames), at
+  // least as long as asked.
+  int warmup = o.warmup;
+  for (const Run& r : runs) warmup = std::max(warmup, r.impl->settle_frames());
+  out.warmup = warmup;
+  const int total = static_cast<int>(runs.size()) * (o.frames + warmup);
   Progress progress(total, o.progress);
   gpu::FrameTimer timer;
-  // Warm-up: compile shaders, allocate targets, fill temporal history.
-  for (int k = 0; k < o.warmup; ++k) {
+  std::optional<gpu::PassProfiler> profiler;
+  if (o.passes) profiler.emplace();
+  // Warm-up: compile shaders, allocate targets, start every cadence.
+  for (int k = 0; k < warmup; ++k) {
     const double t = renderer.frame_input(k).time_s;
     const GazeState g = gaze.at(t);
     for (Run& r : runs) {
@@ -201,11 +230,13 @@ BenchResult run_bench(const BenchOptions& o) {
       progress.step("warm-up " + r.technique);
     }
   }
-  for (Run& r : runs) r.impl->reset();
+  // No reset after the warm-up: the measured frames continue from the
+  // techniques' steady state (every layer rendered, half-rate cadence and
+  // temporal history running), as they would in an application.
   // Measured frames, interleaved: every technique renders frame k before any
   // renders k + 1, and the order rotates so that no technique is always first.
   for (int k = 0; k < o.frames; ++k) {
-    const int frame = o.warmup + k;
+    const int frame = warmup + k;
     const double t = renderer.frame_input(frame).time_s;
     const GazeState g = gaze.at(t);
     // The image every run is judged against: native, or the supersampled
@@ -216,9 +247,11 @@ BenchResult run_bench(const BenchOptions& o) {
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
       timer.start();
+      if (profiler) profiler->begin_frame();
       const FrameStats s = renderer.render(*r.impl, frame, g);
       const double ms = timer.stop();
       r.result.frame_ms.push_back(ms);
+      if (profiler) add_passes(r.result.passes, profiler->end_frame(), ms);
       if (std::isfinite(timer.gpu_ms())) r.result.gpu_ms.push_back(timer.gpu_ms());
       r.result.shaded_pixels += s.shaded_pixels;
       r.result.native_pixels += s.native_pixels;
@@ -255,6 +288,7 @@ BenchResult run_bench(const BenchOptions& o) {
   }
 
   out.gaze_report = gaze.report();
+  finish_environment(out.environment);
   const std::vector<double> native_ms =
       runs[0].result.frame_ms;  // a copy: results are moved out below
   const double native_median = quantile(native_ms, 0.5);
@@ -272,6 +306,7 @@ BenchResult run_bench(const BenchOptions& o) {
     res.shaded_pixels /= o.frames;
     res.native_pixels /= o.frames;
     for (PixelPart& p : res.parts) p.pixels /= o.frames;
+    for (gpu::PassTime& p : res.passes) p.ms /= o.frames;
     res.pixel_ratio = res.shaded_pixels / res.native_pixels;
     res.bound_share = res.speedup * res.pixel_ratio;
     if (r.series && r.series->frames() > 0) res.metrics = r.series->summary();

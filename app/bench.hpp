@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "foveate/core/image.hpp"
+#include "foveate/gpu/profiler.hpp"
 #include "foveate/metrics/metrics.hpp"
+#include "run_environment.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -40,6 +42,9 @@ struct BenchOptions {
   bool image_metrics = true;  ///< compare every frame with native (PSNR, SSIM, acuity error, ...)
   std::string out;            ///< output directory
   bool progress = true;
+  /// Time every pass (--passes): bracketed with glFinish on software
+  /// renderers, timestamp queries on a GPU. Adds a little to frame times.
+  bool passes = false;
   Sweep sweep;
   std::string command_line;
 };
@@ -54,8 +59,11 @@ struct TechniqueResult {
   double speedup = 1, speedup_lo = 1, speedup_hi = 1;
   double shaded_pixels = 0, native_pixels = 0;
   std::vector<PixelPart> parts;  ///< mean per frame
-  double pixel_ratio = 1;        ///< shaded / native
-  double bound_share = 1;        ///< speedup / (native / shaded)
+  /// With --passes: mean ms per frame of each pass, in the order first seen,
+  /// ending with "other" (the frame's time outside every timed pass).
+  std::vector<gpu::PassTime> passes;
+  double pixel_ratio = 1;  ///< shaded / native
+  double bound_share = 1;  ///< speedup / (native / shaded)
   /// Quality against native over the measured frames; empty for native itself
   /// and with --no-metrics.
   std::optional<metrics::QualitySummary> metrics;
@@ -66,6 +74,8 @@ struct TechniqueResult {
 
 struct BenchResult {
   BenchOptions options;
+  RunEnvironment environment;
+  int warmup = 0;  ///< warm-up frames run: options.warmup or more (Technique::settle_frames)
   std::string renderer;
   std::string scene;
   Display display;

@@ -26,6 +26,7 @@ struct BenchArgs {
   std::string reference = "native";
   bool no_metrics = false;
   bool quiet = false;
+  bool passes = false;
   BenchArgs() { session.size = "960x540"; }
 };
 
@@ -54,6 +55,7 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
   o.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.out = a.out;
   o.progress = !a.quiet;
+  o.passes = a.passes;
   o.command_line = command_line;
   if (!a.sweep.empty()) o.sweep = Sweep::parse(a.sweep);
   return o;
@@ -79,6 +81,9 @@ void add_common(CLI::App* sub, BenchArgs& a) {
   // The flag's old name, kept working.
   sub->add_flag("--no-quality", a.no_metrics)->group("");
   sub->add_flag("--quiet", a.quiet, "No progress output");
+  sub->add_flag("--passes", a.passes,
+                "Time every pass (G-buffer, shading, temporal, composite, ...) and report where "
+                "each technique's frame goes; glFinish between passes on software renderers");
 }
 
 void print_summary(const BenchResult& r) {

@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
+#include "run_environment.hpp"
 
 #ifndef FOVEATE_VERSION
 #define FOVEATE_VERSION "unknown"
@@ -13,6 +14,7 @@
 int main(int argc, char** argv) {
   CLI::App app{
       "foveate: foveated rendering driven by one acuity model, measured against native rendering"};
+  foveate::app::set_invocation(argc, argv);
   app.set_version_flag("--version", std::string("foveate ") + FOVEATE_VERSION);
   app.require_subcommand(1);
   foveate::app::register_all_commands(app);

@@ -57,6 +57,20 @@ std::string quality_cell(const TechniqueResult& r, const QualityColumn& c) {
   return std::isfinite(v) ? fmt(v, c.digits) : "-";
 }
 
+bool is_resolve_pass(const std::string& name) {
+  for (const char* k : {"composite", "reconstruct", "temporal", "inverse", "resolve", "copy"}) {
+    if (name.find(k) != std::string::npos) return true;
+  }
+  return false;
+}
+
+double resolve_ms(const TechniqueResult& r) {
+  double ms = 0;
+  for (const gpu::PassTime& p : r.passes)
+    if (is_resolve_pass(p.name)) ms += p.ms;
+  return ms;
+}
+
 std::string label(const BenchResult& b, const TechniqueResult& r) {
   if (b.options.sweep.key.empty() || r.technique == "native") return r.technique;
   return r.technique + " @ " + b.options.sweep.key + "=" + fmt(r.sweep_value, 4);
@@ -85,6 +99,15 @@ nlohmann::json to_json(const BenchResult& b) {
                         {"parts", parts},
                         {"quality", quality_json(r)},
                         {"frame_ms", r.frame_ms}};
+    j["passes"] = nullptr;
+    j["resolve_share"] = nullptr;
+    if (!r.passes.empty()) {
+      nlohmann::json passes = nlohmann::json::array();
+      for (const gpu::PassTime& p : r.passes)
+        passes.push_back({{"name", p.name}, {"ms", p.ms}, {"share", p.ms / r.mean_ms}});
+      j["passes"] = passes;
+      j["resolve_share"] = resolve_ms(r) / r.mean_ms;
+    }
     if (!b.options.sweep.key.empty()) j["sweep_value"] = r.sweep_value;
     // GPU timer queries only where the renderer reports meaningful ones.
     j["gpu_median_ms"] = nullptr;
@@ -96,7 +119,16 @@ nlohmann::json to_json(const BenchResult& b) {
     sweep = {{"key", b.options.sweep.key}, {"values", b.options.sweep.values}};
   return {
       {"schema", "foveate-bench/1"},
-      {"command", b.options.command_line},
+      {"command", b.environment.command},
+      {"environment",
+       {{"foveate_version", b.environment.version},
+        {"date_utc", b.environment.date_utc},
+        {"renderer", b.environment.renderer},
+        {"gl_version", b.environment.gl_version},
+        {"cpu_model", b.environment.cpu_model},
+        {"cpu_cores", b.environment.cores},
+        {"load_average_start", b.environment.load_start},
+        {"load_average_end", b.environment.load_end}}},
       {"renderer", b.renderer},
       {"scene", b.scene},
       {"size", {b.options.session.size.width, b.options.session.size.height}},
@@ -107,7 +139,7 @@ nlohmann::json to_json(const BenchResult& b) {
       {"reference", b.options.reference > 1 ? "ssaa:" + std::to_string(b.options.reference)
                                             : std::string("native")},
       {"frames", b.options.frames},
-      {"warmup", b.options.warmup},
+      {"warmup", b.warmup},
       {"fps_clock", b.options.session.fps},
       {"sweep", sweep},
       {"results", results}};
@@ -151,7 +183,7 @@ std::string html(const BenchResult& b) {
     << " on " << b.display.name << " geometry (field of view kept), renderer " << b.renderer
     << ", MAR slope " << fmt(b.options.session.acuity.slope, 4) << ", gaze "
     << (b.options.gaze.empty() ? "centre" : b.options.gaze) << ", " << b.options.frames
-    << " measured frames after " << b.options.warmup
+    << " measured frames after " << b.warmup
     << " warm-up, techniques interleaved frame by frame. Speedup is the ratio of median frame "
        "times (95 % bootstrap "
        "interval); the pixel bound is native pixels / shaded pixels.</p>\n";
@@ -169,7 +201,26 @@ std::string html(const BenchResult& b) {
     for (const QualityColumn& c : kQualityColumns) h << "<td>" << quality_cell(r, c) << "</td>";
     h << "</tr>\n";
   }
-  h << "</table>\n<h2>Speed</h2>\n";
+  h << "</table>\n";
+  if (b.options.passes) {
+    h << "<h2>Where the time goes</h2>\n<p class=note>Mean ms per frame of each pass (share of "
+         "the frame); "
+      << (b.renderer.find("llvmpipe") != std::string::npos ? "each pass bracketed with glFinish"
+                                                           : "GPU timestamp queries")
+      << ". Resolve = composite, reconstruction, temporal and copies.</p>\n"
+      << "<table id=\"passes\"><tr><th>technique</th><th>passes</th><th>resolve share</th></tr>\n";
+    for (const TechniqueResult& r : b.results) {
+      h << "<tr><td>" << label(b, r) << "</td><td style=\"text-align:left\">";
+      for (size_t i = 0; i < r.passes.size(); ++i) {
+        const gpu::PassTime& p = r.passes[i];
+        h << (i ? ", " : "") << p.name << ' ' << fmt(p.ms, 1) << " ms ("
+          << fmt(100 * p.ms / r.mean_ms, 0) << " %)";
+      }
+      h << "</td><td>" << fmt(100 * resolve_ms(r) / r.mean_ms, 1) << " %</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+  h << "<h2>Speed</h2>\n";
   std::vector<std::string> names, qnames;
   std::vector<double> speed, bound, ssim, acuity;
   for (const TechniqueResult& r : b.results) {
@@ -379,6 +430,23 @@ std::string html(const BenchResult& b) {
   return h.str();
 }
 
+std::string passes_markdown(const BenchResult& b) {
+  if (!b.options.passes) return {};
+  std::ostringstream s;
+  s << "\nTime per pass, ms per frame (share of the frame). Resolve = composite, reconstruction, "
+       "temporal and copies.\n\n| technique | passes | resolve share |\n|---|---|---:|\n";
+  for (const TechniqueResult& r : b.results) {
+    s << "| " << label(b, r) << " | ";
+    for (size_t i = 0; i < r.passes.size(); ++i) {
+      const gpu::PassTime& p = r.passes[i];
+      s << (i ? ", " : "") << p.name << ' ' << fmt(p.ms, 1) << " ("
+        << fmt(100 * p.ms / r.mean_ms, 0) << " %)";
+    }
+    s << " | " << fmt(100 * resolve_ms(r) / r.mean_ms, 1) << " % |\n";
+  }
+  return s.str();
+}
+
 }  // namespace
 
 std::string bench_markdown(const BenchResult& b) {
@@ -397,6 +465,7 @@ std::string bench_markdown(const BenchResult& b) {
     for (const QualityColumn& c : kQualityColumns) s << ' ' << quality_cell(r, c) << " |";
     s << '\n';
   }
+  s << passes_markdown(b);
   return s.str();
 }
 

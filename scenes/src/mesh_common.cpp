@@ -10,6 +10,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/gpu/profiler.hpp"
 #include "foveate_embedded/scenes_shaders.hpp"
 
 namespace foveate::detail {
@@ -167,17 +168,36 @@ bool MeshSceneBase::visible(const glm::mat4& m, glm::vec3 c, float r) const {
   return true;
 }
 
+GBuffer& MeshSceneBase::gbuffer_for(int width, int height, int samples) {
+  // At most this many sizes are kept (layered's layers, inset's two sizes,
+  // native: a bench of every technique stays well under it).
+  constexpr size_t kKept = 12;
+  for (auto it = gbuffers_.begin(); it != gbuffers_.end(); ++it) {
+    GBuffer& g = **it;
+    if (g.width == width && g.height == height && g.samples == samples) {
+      std::rotate(it, it + 1, gbuffers_.end());  // most recently used last
+      return *gbuffers_.back();
+    }
+  }
+  if (gbuffers_.size() >= kKept) gbuffers_.erase(gbuffers_.begin());
+  gbuffers_.push_back(std::make_unique<GBuffer>());
+  gbuffers_.back()->ensure(width, height, samples);
+  return *gbuffers_.back();
+}
+
 void MeshSceneBase::prepass_begin(const View& view) {
+  // Timed as one pass up to prepass_end (lodmask's masks included).
+  if (gpu::PassProfiler* prof = gpu::PassProfiler::current()) prof->begin("gbuffer");
   last_view_ = view;
   outer_ = gpu::FramebufferBinding::current();
   view_proj_ = view_projection(view);
-  gbuffer_.ensure(view.target_width, view.target_height, std::max(1, view.samples));
-  gbuffer_.fbo.bind();
+  gbuffer_ = &gbuffer_for(view.target_width, view.target_height, std::max(1, view.samples));
+  gbuffer_->fbo.bind();
   glViewport(0, 0, view.target_width, view.target_height);
   gpu::open_write_masks();  // clears honour them
   const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gbuffer_.fbo.id(), GL_COLOR, i, zero);
-  glClearNamedFramebufferfi(gbuffer_.fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gbuffer_->fbo.id(), GL_COLOR, i, zero);
+  glClearNamedFramebufferfi(gbuffer_->fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
 void MeshSceneBase::prepass_draw(const View& view, int lod) {
@@ -235,12 +255,13 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
 void MeshSceneBase::prepass_end() {
   glDisable(GL_DEPTH_TEST);
   outer_.restore();
+  if (gpu::PassProfiler* prof = gpu::PassProfiler::current()) prof->end();
 }
 
 void MeshSceneBase::bind(const gpu::Program& p, const View& v, gpu::Samplers& samplers) {
   if (v.x0 != last_view_.x0 || v.y0 != last_view_.y0 || v.x1 != last_view_.x1 ||
       v.y1 != last_view_.y1 || v.target_width != last_view_.target_width ||
-      v.target_height != last_view_.target_height) {
+      v.target_height != last_view_.target_height || gbuffer_ == nullptr) {
     throw Error("scene '" + name_ +
                 "': shading bound for a view other than the last prepass's (a technique must run "
                 "the prepass for the view it shades)");
@@ -249,9 +270,9 @@ void MeshSceneBase::bind(const gpu::Program& p, const View& v, gpu::Samplers& sa
   // reprojection only the world position): the rest may be optimised away.
   p.allow_missing({"u_g_albedo", "u_g_normal", "u_g_position", "u_g_rect", "u_screen",
                    "u_inv_view_proj", "u_cam_pos", "u_time"});
-  samplers.bind(p, "u_g_albedo", gbuffer_.albedo);
-  samplers.bind(p, "u_g_normal", gbuffer_.normal);
-  samplers.bind(p, "u_g_position", gbuffer_.position);
+  samplers.bind(p, "u_g_albedo", gbuffer_->albedo);
+  samplers.bind(p, "u_g_normal", gbuffer_->normal);
+  samplers.bind(p, "u_g_position", gbuffer_->position);
   p.set("u_g_rect", float(v.x0), float(v.y0), float(v.x1 - v.x0), float(v.y1 - v.y0));
   p.set("u_screen", float(frame_.width), float(frame_.height));
   const glm::mat4 full = view_projection(View::full(frame_.width, frame_.height));

@@ -4,6 +4,7 @@
 // subclass supplies its draw items each frame and its shading function.
 #include <array>
 #include <glm/glm.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -121,7 +122,12 @@ class MeshSceneBase : public Scene {
 
  private:
   [[nodiscard]] glm::mat4 view_projection(const View& view) const;
-  GBuffer gbuffer_;
+  /// The G-buffer for a target size and sample count: one per size kept for
+  /// the scene's life (techniques render at several sizes; recreating 66 MB
+  /// at 1080p whenever the size changes would be charged to the frame).
+  GBuffer& gbuffer_for(int width, int height, int samples);
+  std::vector<std::unique_ptr<GBuffer>> gbuffers_;  ///< most recently used last
+  GBuffer* gbuffer_ = nullptr;                      ///< of the last prepass
   gpu::Program prepass_program_;
   View last_view_;
   gpu::FramebufferBinding outer_;  ///< what prepass_begin found

@@ -2,9 +2,22 @@
 
 #include <algorithm>
 
+#include "foveate/gpu/profiler.hpp"
 #include "foveate_embedded/techniques_shaders.hpp"
 
 namespace foveate::tech {
+
+namespace {
+// The name a pass is timed under: its fragment file's stem
+// ("layered/temporal.frag" -> "temporal"); every shading main is "shade".
+std::string pass_name_of(const std::string& file) {
+  if (file.starts_with("common/shade_main")) return "shade";
+  const size_t slash = file.rfind('/');
+  std::string stem = slash == std::string::npos ? file : file.substr(slash + 1);
+  const size_t dot = stem.find('.');
+  return dot == std::string::npos ? stem : stem.substr(0, dot);
+}
+}  // namespace
 
 Kit::Kit()
     : compiler_({embedded::techniques_shaders(), scene_shader_files()}),
@@ -14,7 +27,10 @@ Kit::Kit()
 const gpu::Program& Kit::fullscreen(const std::string& fragment) {
   auto it = programs_.find(fragment);
   if (it != programs_.end()) return it->second;
-  return programs_.emplace(fragment, compiler_.build("fullscreen.vert", fragment)).first->second;
+  const gpu::Program& p =
+      programs_.emplace(fragment, compiler_.build("fullscreen.vert", fragment)).first->second;
+  pass_names_[p.id()] = pass_name_of(fragment);
+  return p;
 }
 
 const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early,
@@ -49,7 +65,9 @@ const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::strin
   gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
                             gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
                            "scene '" + scene.info().name + "' with " + main);
-  return programs_.emplace(key, std::move(p)).first->second;
+  const gpu::Program& stored = programs_.emplace(key, std::move(p)).first->second;
+  pass_names_[stored.id()] = pass_name_of(main);
+  return stored;
 }
 
 void Kit::draw_triangle(const gpu::Program& program) const {
@@ -58,8 +76,14 @@ void Kit::draw_triangle(const gpu::Program& program) const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+const char* Kit::pass_name(const gpu::Program& program) const {
+  const auto it = pass_names_.find(program.id());
+  return it == pass_names_.end() ? "pass" : it->second.c_str();
+}
+
 void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
                const gpu::PassState& state, const SetUniforms& set) {
+  const gpu::ProfileScope timed(pass_name(program));
   gpu::Samplers samplers;
   if (set) set(program, samplers);
   target.bind();
@@ -68,6 +92,7 @@ void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
 }
 
 void Kit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state) {
+  const gpu::ProfileScope timed(pass_name(program));
   gpu::apply(state);
   draw_triangle(program);
 }
@@ -75,6 +100,7 @@ void Kit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state
 void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program,
                      const gpu::RenderTarget& target, const gpu::PassState& state,
                      const SetUniforms& set) {
+  const gpu::ProfileScope timed(pass_name(program));
   gpu::Samplers samplers;
   scene.bind(program, view, samplers);
   if (set) set(program, samplers);
@@ -87,6 +113,7 @@ double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
                   const gpu::RenderTarget& target, const SetUniforms& set,
                   const gpu::PassState& state, bool early) {
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
+  const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
   scene_pass(scene, view, p, target, state, set);
   glEndQuery(GL_SAMPLES_PASSED);

@@ -55,10 +55,13 @@ class Kit {
   const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
                                          const std::string& main, int samples = 1);
   void draw_triangle(const gpu::Program& program) const;
+  /// What a program's passes are timed as (gpu::ProfileScope).
+  [[nodiscard]] const char* pass_name(const gpu::Program& program) const;
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
   gpu::Query query_;
   std::map<std::string, gpu::Program> programs_;
+  std::map<GLuint, std::string> pass_names_;  ///< by program id
 };
 
 /// GL coordinates (origin bottom-left) of a top-left-origin point.

@@ -27,6 +27,7 @@
 #include "../common/kit.hpp"
 #include "../common/registry.hpp"
 #include "foveate/core/planner.hpp"
+#include "foveate/gpu/profiler.hpp"
 
 namespace foveate::tech {
 
@@ -176,6 +177,10 @@ class Layered final : public Technique {
     return stats;
   }
 
+  // A half-rate layer is first rendered, then rendered with history to
+  // reproject, then shown stale and warped: both phases, twice.
+  [[nodiscard]] int settle_frames() const override { return half_rate_ ? 6 : 3; }
+
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     std::vector<OverlayShape> out;
     for (size_t i = 0; i + 1 < plan_.layers.size(); ++i) {
@@ -278,6 +283,7 @@ class Layered final : public Technique {
     st.has_view_proj = vp.has_value();
     if (vp) st.view_proj = *vp;
     st.latest = next;
+    const gpu::ProfileScope timed("copy");
     glCopyImageSubData(st.spare.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, st.ring.id(),
                        GL_TEXTURE_2D_ARRAY, 0, 0, 0, phase, jv.target_width, jv.target_height, 1);
   }
@@ -309,8 +315,11 @@ class Layered final : public Technique {
       warp[i] = !st.updated && st.has_positions && vp ? 1 : 0;
       any_warp = any_warp || warp[i];
     }
-    const gpu::Program& p =
-        kit_.fullscreen(any_warp ? "layered/composite_warp.frag" : "layered/composite.frag");
+    // Both variants are built on the first frame, so that the first frame with
+    // a stale layer (a measured one, in a benchmark) does not compile one.
+    const gpu::Program& plain = kit_.fullscreen("layered/composite.frag");
+    const gpu::Program& warping = kit_.fullscreen("layered/composite_warp.frag");
+    const gpu::Program& p = any_warp ? warping : plain;
     kit_.pass(p, target, {}, [&](const gpu::Program& prog, gpu::Samplers& samplers) {
       float rects[kMaxLayers * 4] = {}, centres[kMaxLayers * 2] = {}, radii[kMaxLayers] = {};
       static const char* names[kMaxLayers] = {"u_layers[0]", "u_layers[1]", "u_layers[2]",

@@ -159,6 +159,8 @@ class LogPolar final : public Technique {
   }
 
   void reset() override { valid_ = false; }
+  // History is made, then reprojected: the steady frame is the third.
+  [[nodiscard]] int settle_frames() const override { return 3; }
 
   // Radius (pixels) of the native disc at this gaze: the planned one, grown
   // by a tracker fallback and the latency margin.

@@ -109,3 +109,63 @@ TEST(Session, ErrorsNameTheFlag) {
             std::string::npos);
   EXPECT_NE(error_of([&] { s.make("lodmask", {}); }).find("needs a scene with"), std::string::npos);
 }
+
+// --passes: every pass a technique runs is timed, the rest of the frame is
+// "other", and the parts add up to the frame; the warm-up lasts as long as
+// the slowest-settling technique needs; results.json says where it ran.
+TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
+  const std::string out =
+      (std::filesystem::temp_directory_path() / "foveate-app-bench-passes").string();
+  std::filesystem::remove_all(out);
+  BenchOptions o = tiny(out);
+  o.session.scene = "guenter";  // a G-buffer prepass
+  o.techniques = {"native", "layered", "checkerboard"};
+  o.passes = true;
+  o.image_metrics = false;
+  o.frames = 3;
+  const BenchResult r = run_bench(o);
+  // layered settles in 6 frames with half-rate layers (asked for 1).
+  EXPECT_EQ(r.warmup, 6);
+  ASSERT_EQ(r.results.size(), 3u);
+  for (const TechniqueResult& t : r.results) {
+    SCOPED_TRACE(t.technique);
+    ASSERT_GE(t.passes.size(), 3u);
+    EXPECT_EQ(t.passes.back().name, "other");
+    double sum = 0;
+    bool gbuffer = false, shade = false;
+    for (const gpu::PassTime& p : t.passes) {
+      EXPECT_GE(p.ms, 0.0);
+      sum += p.ms;
+      gbuffer = gbuffer || p.name == "gbuffer";
+      shade = shade || p.name == "shade";
+    }
+    EXPECT_TRUE(gbuffer);
+    EXPECT_TRUE(shade);
+    EXPECT_NEAR(sum, t.mean_ms, 1e-6 * t.mean_ms + 1e-9);
+  }
+  auto has = [](const TechniqueResult& t, const std::string& name) {
+    for (const gpu::PassTime& p : t.passes)
+      if (p.name == name) return true;
+    return false;
+  };
+  EXPECT_TRUE(has(r.results[1], "composite") || has(r.results[1], "composite_warp"));
+  EXPECT_TRUE(has(r.results[2], "reconstruct"));
+  EXPECT_FALSE(has(r.results[0], "composite"));
+  write_bench_outputs(r);
+  std::ifstream in(out + "/results.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["warmup"], 6);
+  const nlohmann::json& env = j["environment"];
+  EXPECT_FALSE(env["renderer"].get<std::string>().empty());
+  EXPECT_FALSE(env["foveate_version"].get<std::string>().empty());
+  EXPECT_EQ(env["date_utc"].get<std::string>().size(), 20u);  // 2026-11-22T20:30:42Z
+  EXPECT_GE(env["cpu_cores"].get<int>(), 1);
+  EXPECT_EQ(env["load_average_start"].size(), 3u);
+  const nlohmann::json& layered = j["results"][1];
+  ASSERT_TRUE(layered["passes"].is_array());
+  const double share = layered["resolve_share"].get<double>();
+  EXPECT_GT(share, 0.0);
+  EXPECT_LT(share, 1.0);
+  EXPECT_TRUE(j["results"][0]["passes"].is_array());
+  std::filesystem::remove_all(out);
+}

@@ -116,6 +116,10 @@ class Technique {
   [[nodiscard]] virtual std::vector<OverlayShape> overlay(const GazeState& gaze) const = 0;
   /// Forget temporal history (e.g. after a camera cut).
   virtual void reset() {}
+  /// Frames after which the work per frame is steady: every layer rendered,
+  /// history reprojected and each cadence running at least once (and every
+  /// shader variant built). Benchmarks warm up at least this long.
+  [[nodiscard]] virtual int settle_frames() const { return 2; }
 
  protected:
   /// Figures derived from the parameters, appended to parameters().

@@ -1,0 +1,31 @@
+#pragma once
+// Where and how a benchmark ran, recorded in results.json so a figure can be
+// traced to its machine, build and command: the full command line, foveate's
+// version, the UTC date, the GL renderer, the CPU and the load around the run.
+#include <array>
+#include <string>
+
+namespace foveate::app {
+
+/// The process's command line, shell-quoted (set once by main()).
+void set_invocation(int argc, const char* const* argv);
+/// "foveate ..." as typed, or empty when main() did not set it (tests).
+const std::string& invocation();
+
+struct RunEnvironment {
+  std::string command;     ///< the full command line
+  std::string version;     ///< foveate's version
+  std::string date_utc;    ///< ISO 8601, when the run started
+  std::string renderer;    ///< GL_RENDERER
+  std::string gl_version;  ///< GL_VERSION
+  std::string cpu_model;   ///< /proc/cpuinfo's model name (empty when unknown)
+  unsigned cores = 0;      ///< hardware threads
+  std::array<double, 3> load_start{}, load_end{};  ///< 1, 5 and 15 minute load averages
+};
+
+/// Captures everything but load_end (needs a current GL context).
+RunEnvironment capture_environment(const std::string& command);
+/// Records the load average at the end of the run.
+void finish_environment(RunEnvironment& env);
+
+}  // namespace foveate::app
