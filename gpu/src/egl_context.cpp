@@ -1,6 +1,10 @@
-// Headless OpenGL 4.5 core through EGL: Mesa's surfaceless platform first,
-// then an EGL device with a pbuffer surface.
+// Headless OpenGL 4.5 core through EGL: a hardware EGL device (with a
+// pbuffer surface), Mesa's surfaceless platform, then a software device.
 #include <epoxy/egl.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/context.hpp"
@@ -109,29 +113,79 @@ std::unique_ptr<EglContext> try_display(EGLDisplay dpy, bool pbuffer, const std:
 
 }  // namespace
 
-std::unique_ptr<Context> create_headless_context(const ContextOptions& options) {
-  std::string why;
-  if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-    EGLDisplay d =
-        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (auto c = try_display(d, false, "egl-surfaceless", options, why)) return c;
-  } else {
-    why += "egl-surfaceless: EGL_MESA_platform_surfaceless missing; ";
+namespace {
+
+struct Device {
+  EGLDeviceEXT handle;
+  bool software;
+  std::string name;
+};
+
+std::vector<Device> egl_devices() {
+  std::vector<Device> out;
+  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device")) return out;
+  EGLDeviceEXT devices[16];
+  EGLint n = 0;
+  if (!eglQueryDevicesEXT(16, devices, &n)) return out;
+  const bool query = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_query");
+  for (EGLint i = 0; i < n; ++i) {
+    const char* ext = query ? eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS) : nullptr;
+    const std::string e = ext ? ext : "";
+    Device d{devices[i], e.find("EGL_MESA_device_software") != std::string::npos,
+             "device " + std::to_string(i)};
+    if (e.find("EGL_NV_device_cuda") != std::string::npos) d.name += " (NVIDIA)";
+    if (d.software) d.name += " (software)";
+    out.push_back(d);
   }
-  if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device")) {
-    EGLDeviceEXT devices[8];
-    EGLint n = 0;
-    if (eglQueryDevicesEXT(8, devices, &n)) {
-      for (EGLint i = 0; i < n; ++i) {
-        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-        if (auto c = try_display(d, true, "egl-device", options, why)) return c;
-      }
-    }
-  } else {
-    why += "egl-device: EGL_EXT_platform_device missing; ";
+  return out;
+}
+
+std::unique_ptr<EglContext> try_device(const Device& d, const ContextOptions& options,
+                                       std::string& why) {
+  EGLDisplay dpy = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, d.handle, nullptr);
+  return try_display(dpy, true, "egl-device", options, why);
+}
+
+std::unique_ptr<EglContext> try_surfaceless(const ContextOptions& options, std::string& why) {
+  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
+    why += "egl-surfaceless: EGL_MESA_platform_surfaceless missing; ";
+    return nullptr;
+  }
+  EGLDisplay d =
+      eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  return try_display(d, false, "egl-surfaceless", options, why);
+}
+
+}  // namespace
+
+std::unique_ptr<Context> create_headless_context(const ContextOptions& options) {
+  // Hardware devices first: NVIDIA's driver offers only the device platform,
+  // and where Mesa is installed beside it (glvnd) Mesa's surfaceless platform
+  // would give llvmpipe on a machine with a GPU. Then Mesa surfaceless, then
+  // software devices. FOVEATE_EGL=device or surfaceless forces a platform.
+  const char* force_env = std::getenv("FOVEATE_EGL");
+  const std::string force = force_env ? force_env : "";
+  if (!force.empty() && force != "device" && force != "surfaceless") {
+    throw Error("FOVEATE_EGL='" + force + "': expected 'device' or 'surfaceless'");
+  }
+  std::string why;
+  const std::vector<Device> devices =
+      force == "surfaceless" ? std::vector<Device>{} : egl_devices();
+  if (force != "surfaceless" && devices.empty()) why += "egl-device: no EGL device; ";
+  for (const Device& d : devices) {
+    if (d.software) continue;
+    if (auto c = try_device(d, options, why)) return c;
+  }
+  if (force != "device") {
+    if (auto c = try_surfaceless(options, why)) return c;
+  }
+  for (const Device& d : devices) {
+    if (!d.software) continue;
+    if (auto c = try_device(d, options, why)) return c;
   }
   throw Error("no headless OpenGL 4.5 core context: " + why +
-              "install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver with EGL");
+              "install Mesa (libegl-mesa0, libgl1-mesa-dri) or a GPU driver with EGL" +
+              (force.empty() ? "" : " (FOVEATE_EGL=" + force + " was set)"));
 }
 
 }  // namespace foveate::gpu

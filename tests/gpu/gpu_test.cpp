@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <memory>
+
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
@@ -170,4 +173,37 @@ TEST_F(Gpu, RenderTargetsOwnTheirViewportAndClearThroughMasks) {
   glGetIntegerv(GL_VIEWPORT, vp);
   EXPECT_EQ(static_cast<GLuint>(fb), b.framebuffer());
   EXPECT_EQ(vp[2], 3);
+}
+
+// The EGL device platform (the only one NVIDIA's driver offers) makes a
+// working context: Mesa exposes its software renderer as a device too, so the
+// path is exercised here without a GPU. FOVEATE_EGL picks the platform.
+TEST(EglPlatform, DevicePlatformRendersAndBadChoiceIsNamed) {
+  struct EnvGuard {
+    ~EnvGuard() { unsetenv("FOVEATE_EGL"); }
+  } guard;
+  setenv("FOVEATE_EGL", "device", 1);
+  std::unique_ptr<gpu::Context> c = gpu::create_headless_context({});
+  EXPECT_EQ(c->backend(), "egl-device");
+  {
+    gpu::Texture t = gpu::Texture::create_2d(GL_RGBA8, 4, 4);
+    gpu::Framebuffer fb = gpu::Framebuffer::create();
+    fb.attach(GL_COLOR_ATTACHMENT0, t);
+    fb.check("device test");
+    const float colour[4] = {0.0f, 1.0f, 0.0f, 1.0f};
+    glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, colour);
+    const Image img = gpu::read_texture(t);
+    EXPECT_EQ(img.at(3, 3)[1], 255);
+    EXPECT_EQ(img.at(3, 3)[0], 0);
+  }
+  c.reset();
+  setenv("FOVEATE_EGL", "surfaceless", 1);
+  EXPECT_EQ(gpu::create_headless_context({})->backend(), "egl-surfaceless");
+  setenv("FOVEATE_EGL", "vulkan", 1);
+  try {
+    (void)gpu::create_headless_context({});
+    ADD_FAILURE() << "FOVEATE_EGL=vulkan accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("FOVEATE_EGL='vulkan'"), std::string::npos) << e.what();
+  }
 }
