@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The standard comparison on whatever renderer EGL gives (a GPU's driver, or
+# Mesa llvmpipe): builds foveate in release mode, benchmarks every technique
+# on guenter, raymarch and a heavy Shadertoy shader at 1920x1080 and
+# 3840x2160, with the time per pass, and writes docs/gpu/<renderer>.md.
+#
+#   scripts/gpu-bench.sh [--quick] [--frames N] [--sizes 1920x1080,3840x2160] [--out DIR]
+#
+# --quick: 1920x1080 only, 3 frames (a few minutes on llvmpipe).
+# FOVEATE_EGL=device forces the EGL device platform (see README).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+frames=10
+sizes=1920x1080,3840x2160
+out=docs/gpu
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) frames=3; sizes=1920x1080 ;;
+    --frames) frames="$2"; shift ;;
+    --sizes) sizes="$2"; shift ;;
+    --out) out="$2"; shift ;;
+    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    *) echo "gpu-bench.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+  shift
+done
+case "$frames" in ''|*[!0-9]*) echo "gpu-bench.sh: --frames expects a count, got '$frames'" >&2; exit 2 ;; esac
+
+if [ -z "${FOVEATE_SKIP_BUILD:-}" ]; then
+  cmake --preset release >/dev/null
+  cmake --build --preset release --target foveate
+fi
+bin=${FOVEATE_BIN:-build/release/app/foveate}
+[ -x "$bin" ] || { echo "gpu-bench.sh: no foveate binary at $bin" >&2; exit 1; }
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+all=native,layered,logpolar,checkerboard,inset
+
+# The renderer string names the file.
+"$bin" bench --scene cheap --size 64x36 --frames 1 --techniques native --no-metrics --quiet \
+  --out "$work/probe" >/dev/null
+renderer=$(sed -n 's/^  "renderer": "\(.*\)",$/\1/p' "$work/probe/results.json" | head -n1)
+[ -n "$renderer" ] || { echo "gpu-bench.sh: no renderer string in the probe's results" >&2; exit 1; }
+slug=$(printf '%s' "$renderer" | tr 'A-Z' 'a-z' | sed 's/[^a-z0-9]\{1,\}/-/g; s/^-//; s/-$//' | cut -c1-60)
+mkdir -p "$out"
+doc="$out/$slug.md"
+tmpdoc="$work/doc.md"
+
+{
+  echo "# foveate on $renderer"
+  echo
+  echo "Made by \`scripts/gpu-bench.sh\` on $(date -u +%Y-%m-%d) with foveate $("$bin" --version | sed 's/^foveate //'),"
+  echo "$(nproc) CPU threads ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n1)). Desktop display of"
+  echo "Guenter et al. (its field of view kept at every size), quality A, gaze at the centre,"
+  echo "$frames measured frames per technique after each technique's warm-up, techniques"
+  echo "interleaved frame by frame. Speedups are ratios within one run. Time per pass"
+  echo "from \`--passes\` (GPU timestamp queries on a GPU; glFinish between passes on"
+  echo "llvmpipe). The full command lines and load averages are in each results.json."
+  echo
+} > "$tmpdoc"
+
+IFS=, read -r -a size_list <<< "$sizes"
+for size in "${size_list[@]}"; do
+  for scene in guenter raymarch examples/shadertoy/mandelbulb.glsl; do
+    techniques=$all
+    [ "$scene" = guenter ] && techniques=$all,lodmask
+    name=$(basename "$scene" .glsl)
+    dir="$work/$name-$size"
+    echo "gpu-bench.sh: $name at $size" >&2
+    "$bin" bench --scene "$scene" --size "$size" --techniques "$techniques" --frames "$frames" \
+      --no-metrics --passes --quiet --out "$dir" >/dev/null
+    {
+      echo "## $name at $size"
+      echo
+      echo "\`foveate bench --scene $scene --size $size --techniques $techniques --frames $frames --no-metrics --passes\`"
+      echo
+      cat "$dir/results.md"
+      echo
+    } >> "$tmpdoc"
+    mkdir -p "$out/results"
+    cp "$dir/results.json" "$out/results/$slug-$name-$size.json"
+  done
+done
+mv "$tmpdoc" "$doc"
+echo "gpu-bench.sh: wrote $doc" >&2
