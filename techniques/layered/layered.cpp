@@ -235,7 +235,8 @@ class Layered final : public Technique {
     // layer on the frames it is not updated.
     gpu::RenderTarget positions;
     bool has_positions = false;
-    bool updated = false;  // this frame
+    gpu::RenderTarget warped;  // the display moved to this frame's camera (when stale)
+    bool updated = false;      // this frame
   };
 
   // Resolves this update's samples (st.spare, taken at jittered view `jv`)
@@ -308,60 +309,113 @@ class Layered final : public Technique {
   void composite(Scene& scene, const gpu::RenderTarget& target) {
     const int n = static_cast<int>(plan_.layers.size());
     const auto vp = scene.view_projection();
-    int warp[kMaxLayers] = {};
-    bool any_warp = false;
+    // Layers shown stale (half rate) move with the camera: each is warped to
+    // this frame at its own resolution before the composite reads it.
+    std::array<const gpu::Texture*, kMaxLayers> source{};
     for (int i = 0; i < n; ++i) {
-      const LayerState& st = state_[static_cast<size_t>(i)];
-      warp[i] = !st.updated && st.has_positions && vp ? 1 : 0;
-      any_warp = any_warp || warp[i];
+      LayerState& st = state_[static_cast<size_t>(i)];
+      // A layer without temporal resolve (the native-rate inner one) is its
+      // last render; the others their resolved display.
+      const gpu::RenderTarget& shown =
+          st.temporal ? st.display[static_cast<size_t>(st.latest)] : st.spare;
+      source[static_cast<size_t>(i)] = &shown.color();
+      if (st.updated || !st.has_positions || !vp) continue;
+      st.warped.ensure(shown.width(), shown.height(), kDisplayFormat);
+      kit_.pass(kit_.fullscreen("layered/warp.frag"), st.warped, {},
+                [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                  samplers.bind(p, "u_layer", shown.color());
+                  samplers.bind(p, "u_positions", st.positions.color());
+                  p.set("u_rect", float(st.rect[0]), float(st.rect[1]), float(st.rect[2]),
+                        float(st.rect[3]));
+                  p.set_mat4("u_layer_view_proj", st.view_proj.data());
+                  p.set_mat4("u_view_proj", vp->data());
+                  p.set("u_frame_size", float(display_.width_px), float(display_.height_px));
+                });
+      source[static_cast<size_t>(i)] = &st.warped.color();
     }
-    // Both variants are built on the first frame, so that the first frame with
-    // a stale layer (a measured one, in a benchmark) does not compile one.
-    const gpu::Program& plain = kit_.fullscreen("layered/composite.frag");
-    const gpu::Program& warping = kit_.fullscreen("layered/composite_warp.frag");
-    const gpu::Program& p = any_warp ? warping : plain;
-    kit_.pass(p, target, {}, [&](const gpu::Program& prog, gpu::Samplers& samplers) {
+    auto set = [&](const gpu::Program& prog, gpu::Samplers& samplers) {
       float rects[kMaxLayers * 4] = {}, centres[kMaxLayers * 2] = {}, radii[kMaxLayers] = {};
       static const char* names[kMaxLayers] = {"u_layers[0]", "u_layers[1]", "u_layers[2]",
                                               "u_layers[3]", "u_layers[4]", "u_layers[5]"};
       for (int i = 0; i < n; ++i) {
         const LayerState& st = state_[static_cast<size_t>(i)];
-        // A layer without temporal resolve (the native-rate inner one) is
-        // its last render; the others their resolved display.
-        const gpu::RenderTarget& src =
-            st.temporal ? st.display[static_cast<size_t>(st.latest)] : st.spare;
-        samplers.bind(prog, names[i], src.color());
+        samplers.bind(prog, names[i], *source[static_cast<size_t>(i)]);
         for (int k = 0; k < 4; ++k) rects[i * 4 + k] = float(st.rect[static_cast<size_t>(k)]);
         centres[i * 2] = float(st.centre.x);
         centres[i * 2 + 1] = float(st.centre.y);
         radii[i] = float(st.radius);
       }
-      // Layers shown stale (half rate) move with the camera: each pixel is
-      // read where its world point was when the layer was rendered.
-      if (any_warp) {
-        static const char* position_names[kMaxLayers] = {"u_positions[0]", "u_positions[1]",
-                                                         "u_positions[2]", "u_positions[3]",
-                                                         "u_positions[4]", "u_positions[5]"};
-        float layer_vp[kMaxLayers * 16] = {};
-        for (int i = 0; i < n; ++i) {
-          const LayerState& st = state_[static_cast<size_t>(i)];
-          samplers.bind(prog, position_names[i],
-                        warp[i] ? st.positions.color() : state_[0].spare.color());
-          std::copy_n(st.view_proj.data(), 16, layer_vp + i * 16);
-        }
-        glProgramUniform1iv(prog.id(), prog.uniform("u_warp[0]"), n, warp);
-        glProgramUniformMatrix4fv(prog.id(), prog.uniform("u_layer_view_proj[0]"), n, GL_FALSE,
-                                  layer_vp);
-        prog.set_mat4("u_view_proj", vp->data());
-        prog.set("u_frame_size", float(display_.width_px), float(display_.height_px));
-      }
       glProgramUniform4fv(prog.id(), prog.uniform("u_rects[0]"), n, rects);
       glProgramUniform2fv(prog.id(), prog.uniform("u_centres[0]"), n, centres);
       glProgramUniform1fv(prog.id(), prog.uniform("u_radii[0]"), n, radii);
       prog.set("u_count", n);
+      prog.set("u_first", 0);
       prog.set("u_band", float(transition_));
-    });
+    };
+    if (!target.color()) {
+      // A target without a colour texture (a window's framebuffer): one pass
+      // over every pixel, reading every layer.
+      kit_.pass(kit_.fullscreen("layered/composite.frag"), target, {}, set);
+      return;
+    }
+    // The regions, innermost first: the disc of layer k's blend band reads
+    // layers k..n-1; outside every disc only the outer layer is read. A depth
+    // test keeps each pixel to the first region that covers it (early, so
+    // llvmpipe skips the 4x4 blocks already written).
+    const gpu::ProfileScope timed("composite");
+    if (!region_program_)
+      region_program_ = kit_.compiler().build("layered/region.vert", "layered/composite.frag");
+    const gpu::Program& prog = region_program_;
+    const gpu::RenderTarget& rt = composite_target(target);
+    rt.bind();
+    gpu::apply(gpu::PassState{GL_LESS, true});
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(composite_fbo_.id(), GL_DEPTH, 0, &far);
+    gpu::Samplers samplers;
+    set(prog, samplers);
+    prog.use();
+    prog.set("u_viewport", float(display_.width_px), float(display_.height_px));
+    glBindVertexArray(composite_vao_.id());
+    for (int k = 0; k < n; ++k) {
+      prog.set("u_first", k);
+      prog.set("u_depth", -1.0f + 2.0f * float(k + 1) / float(n + 1));
+      const LayerState& st = state_[static_cast<size_t>(k)];
+      if (k + 1 < n) {
+        const double reach = st.radius * (1.0 + std::max(0.0, transition_)) + 1.0;
+        prog.set("u_centre", float(st.centre.x), float(st.centre.y));
+        prog.set("u_radius", float(reach));
+        glDrawArrays(GL_TRIANGLES, 0, 3 * kRegionSides);
+      } else {
+        prog.set("u_radius", -1.0f);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+    }
   }
+
+  // The output's colour texture with a depth buffer of the composite's own.
+  const gpu::RenderTarget& composite_target(const gpu::RenderTarget& target) {
+    const GLuint colour = target.color().id();
+    if (!composite_fbo_ || composite_colour_ != colour || composite_rt_.width() != target.width() ||
+        composite_rt_.height() != target.height()) {
+      composite_depth_ =
+          gpu::Renderbuffer::create(GL_DEPTH_COMPONENT24, target.width(), target.height());
+      composite_fbo_ = gpu::Framebuffer::create();
+      composite_fbo_.attach(GL_COLOR_ATTACHMENT0, target.color());
+      composite_fbo_.attach(GL_DEPTH_ATTACHMENT, composite_depth_);
+      composite_fbo_.check("layered composite");
+      composite_rt_ = gpu::RenderTarget::wrap(composite_fbo_.id(), target.width(), target.height());
+      composite_colour_ = colour;
+    }
+    return composite_rt_;
+  }
+
+  static constexpr int kRegionSides = 48;  // as in region.vert
+  gpu::Program region_program_;
+  gpu::Framebuffer composite_fbo_;
+  gpu::Renderbuffer composite_depth_;
+  gpu::RenderTarget composite_rt_;
+  GLuint composite_colour_ = 0;
+  gpu::VertexArray composite_vao_ = gpu::VertexArray::create();
 
   Display display_;
   double transition_;

@@ -148,7 +148,7 @@ TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
       if (p.name == name) return true;
     return false;
   };
-  EXPECT_TRUE(has(r.results[1], "composite") || has(r.results[1], "composite_warp"));
+  EXPECT_TRUE(has(r.results[1], "composite"));
   EXPECT_TRUE(has(r.results[2], "reconstruct"));
   EXPECT_FALSE(has(r.results[0], "composite"));
   write_bench_outputs(r);

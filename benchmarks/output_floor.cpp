@@ -1,0 +1,208 @@
+// The floor under every foveated technique on this renderer: the cheapest
+// ways to write every output pixel once from a lower-resolution image. On a
+// GPU these are nearly free; on llvmpipe a full-resolution pass that reads a
+// texture costs a fixed amount whatever its shader does, so no technique that
+// composites layers can be faster than native / (its shading + this floor).
+//
+//   foveate_output_floor [WIDTH HEIGHT [SCALE [REPEATS]]]   (default 1920 1080 3 15)
+//
+// Prints a Markdown table: median ms of each method over REPEATS runs, each
+// run bracketed by glFinish, after two unmeasured runs.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/context.hpp"
+#include "foveate/gpu/pass.hpp"
+#include "foveate/gpu/shader.hpp"
+
+using namespace foveate;
+
+namespace {
+
+const char* kConstant = R"(
+out vec4 o_color;
+void main() { o_color = vec4(0.25, 0.5, 0.75, 1.0); }
+)";
+const char* kFetch = R"(
+in vec2 v_uv;
+uniform sampler2D u_source;
+out vec4 o_color;
+void main() { o_color = texture(u_source, v_uv); }
+)";
+const char* kTexelFetch = R"(
+uniform sampler2D u_source;
+uniform vec2 u_texel;
+out vec4 o_color;
+void main() { o_color = texelFetch(u_source, ivec2(gl_FragCoord.xy * u_texel), 0); }
+)";
+const char* kFetch4 = R"(
+in vec2 v_uv;
+uniform sampler2D u_source;
+uniform vec2 u_texel;
+out vec4 o_color;
+void main() {
+  o_color = 0.25 * (texture(u_source, v_uv + u_texel * vec2(-0.5, -0.5)) +
+                    texture(u_source, v_uv + u_texel * vec2(0.5, -0.5)) +
+                    texture(u_source, v_uv + u_texel * vec2(-0.5, 0.5)) +
+                    texture(u_source, v_uv + u_texel * vec2(0.5, 0.5)));
+}
+)";
+const char* kCompute = R"(
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0) uniform sampler2D u_source;
+layout(rgba8, binding = 0) writeonly uniform image2D u_out;
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(u_out);
+  if (p.x >= size.x || p.y >= size.y) return;
+  imageStore(u_out, p, texture(u_source, (vec2(p) + 0.5) / vec2(size)));
+}
+)";
+
+double median_ms(const std::function<void()>& run, int repeats) {
+  for (int i = 0; i < 2; ++i) run();
+  glFinish();
+  std::vector<double> ms;
+  for (int i = 0; i < repeats; ++i) {
+    glFinish();
+    const auto t0 = std::chrono::steady_clock::now();
+    run();
+    glFinish();
+    ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::nth_element(ms.begin(), ms.begin() + static_cast<long>(ms.size() / 2), ms.end());
+  return ms[ms.size() / 2];
+}
+
+int positive(const char* text, const char* what) {
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || v < 1 || v > 16384) {
+    std::fprintf(stderr, "foveate_output_floor: %s: expected 1..16384, got '%s'\n", what, text);
+    std::exit(2);
+  }
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int W = argc > 1 ? positive(argv[1], "WIDTH") : 1920;
+  const int H = argc > 2 ? positive(argv[2], "HEIGHT") : 1080;
+  const int scale = argc > 3 ? positive(argv[3], "SCALE") : 3;
+  const int repeats = argc > 4 ? positive(argv[4], "REPEATS") : 15;
+  try {
+    auto context = gpu::create_headless_context({});
+    const gpu::ShaderCompiler compiler;
+    auto fullscreen = [&](const char* frag, const char* what) {
+      return compiler.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+                             gpu::StageSource{GL_FRAGMENT_SHADER, {{what, frag}}}},
+                            what);
+    };
+    const gpu::Program constant = fullscreen(kConstant, "constant.frag");
+    const gpu::Program fetch = fullscreen(kFetch, "fetch.frag");
+    const gpu::Program fetch4 = fullscreen(kFetch4, "fetch4.frag");
+    const gpu::Program texel = fullscreen(kTexelFetch, "texel_fetch.frag");
+    const gpu::Program compute =
+        compiler.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"copy.comp", kCompute}}}}, "copy");
+
+    const int w = std::max(1, W / scale), h = std::max(1, H / scale);
+    gpu::RenderTarget out = gpu::RenderTarget::create(W, H);   // sRGB, as the techniques' output
+    gpu::RenderTarget same = gpu::RenderTarget::create(W, H);  // a full-resolution source
+    gpu::RenderTarget low = gpu::RenderTarget::create(w, h);   // a layer
+    gpu::RenderTarget low_half = gpu::RenderTarget::create(w, h, GL_RGBA16F);  // linear layer
+    gpu::RenderTarget low_unorm = gpu::RenderTarget::create(w, h, GL_RGBA8);   // no decode
+    gpu::RenderTarget linear8 = gpu::RenderTarget::create(W, H, GL_RGBA8);     // image-storable
+    low.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    same.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    low_half.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    low_unorm.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    for (gpu::RenderTarget* t : {&low, &low_half, &low_unorm})
+      t->color().set_filter(GL_LINEAR, GL_LINEAR);
+    const gpu::RenderTarget* source = &low;
+    gpu::VertexArray vao = gpu::VertexArray::create();
+    auto draw = [&](const gpu::Program& p) {
+      out.bind();
+      gpu::apply(gpu::PassState{});
+      p.use();
+      glBindTextureUnit(0, source->color().id());
+      p.allow_missing({"u_source", "u_texel"});
+      p.set("u_source", 0);
+      if (p.uniform_if_present("u_texel") >= 0) {
+        if (&p == &texel)
+          p.set("u_texel", float(w) / float(W), float(h) / float(H));
+        else
+          p.set("u_texel", 1.0f / float(w), 1.0f / float(h));
+      }
+      glBindVertexArray(vao.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+
+    struct Row {
+      const char* method;
+      double ms;
+    };
+    std::vector<Row> rows;
+    rows.push_back(
+        {"clear (glClearNamedFramebufferfv)", median_ms([&] { out.clear(0, 0, 0, 1); }, repeats)});
+    rows.push_back(
+        {"full-screen pass, constant colour", median_ms([&] { draw(constant); }, repeats)});
+    rows.push_back({"full-screen pass, 1 bilinear fetch from the layer",
+                    median_ms([&] { draw(fetch); }, repeats)});
+    rows.push_back({"full-screen pass, 1 texelFetch (nearest) from the layer",
+                    median_ms([&] { draw(texel); }, repeats)});
+    source = &low_half;
+    rows.push_back({"full-screen pass, 1 bilinear fetch from an RGBA16F layer",
+                    median_ms([&] { draw(fetch); }, repeats)});
+    source = &low_unorm;
+    rows.push_back({"full-screen pass, 1 bilinear fetch from an RGBA8 (UNORM) layer",
+                    median_ms([&] { draw(fetch); }, repeats)});
+    source = &low;
+    rows.push_back(
+        {"full-screen pass, 4 bilinear fetches", median_ms([&] { draw(fetch4); }, repeats)});
+    rows.push_back({"glBlitNamedFramebuffer, linear, layer -> output",
+                    median_ms(
+                        [&] {
+                          glBlitNamedFramebuffer(low.framebuffer(), out.framebuffer(), 0, 0, w, h,
+                                                 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+                        },
+                        repeats)});
+    rows.push_back({"glCopyImageSubData, full-resolution copy",
+                    median_ms(
+                        [&] {
+                          glCopyImageSubData(same.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                                             out.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, W, H, 1);
+                        },
+                        repeats)});
+    rows.push_back({"compute shader, 1 fetch + imageStore (RGBA8)",
+                    median_ms(
+                        [&] {
+                          compute.use();
+                          glBindTextureUnit(0, low.color().id());
+                          glBindImageTexture(0, linear8.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                                             GL_RGBA8);
+                          glDispatchCompute(static_cast<GLuint>((W + 7) / 8),
+                                            static_cast<GLuint>((H + 7) / 8), 1);
+                          glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+                        },
+                        repeats)});
+
+    const auto* renderer = glGetString(GL_RENDERER);
+    std::printf(
+        "Output floor at %dx%d from a %dx%d layer on %s (median of %d, glFinish-bracketed)\n\n", W,
+        H, w, h, renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats);
+    std::printf("| method | ms |\n|---|---:|\n");
+    for (const Row& r : rows) std::printf("| %s | %.1f |\n", r.method, r.ms);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "foveate_output_floor: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
