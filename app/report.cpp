@@ -58,7 +58,8 @@ std::string quality_cell(const TechniqueResult& r, const QualityColumn& c) {
 }
 
 bool is_resolve_pass(const std::string& name) {
-  for (const char* k : {"composite", "reconstruct", "temporal", "inverse", "resolve", "copy", "warp"}) {
+  for (const char* k : {"composite", "reconstruct", "temporal", "inverse", "resolve", "copy",
+                        "warp", "blur", "upscale"}) {
     if (name.find(k) != std::string::npos) return true;
   }
   return false;
@@ -207,7 +208,7 @@ std::string html(const BenchResult& b) {
          "the frame); "
       << (b.renderer.find("llvmpipe") != std::string::npos ? "each pass bracketed with glFinish"
                                                            : "GPU timestamp queries")
-      << ". Resolve = composite, reconstruction, temporal, warps and copies.</p>\n"
+      << ". Resolve = composite, reconstruction, temporal, warps, blurs, upscales and copies.</p>\n"
       << "<table id=\"passes\"><tr><th>technique</th><th>passes</th><th>resolve share</th></tr>\n";
     for (const TechniqueResult& r : b.results) {
       h << "<tr><td>" << label(b, r) << "</td><td style=\"text-align:left\">";
@@ -434,7 +435,8 @@ std::string passes_markdown(const BenchResult& b) {
   if (!b.options.passes) return {};
   std::ostringstream s;
   s << "\nTime per pass, ms per frame (share of the frame). Resolve = composite, reconstruction, "
-       "temporal, warps and copies.\n\n| technique | passes | resolve share |\n|---|---|---:|\n";
+       "temporal, warps, blurs, upscales and copies.\n\n| technique | passes | resolve share "
+       "|\n|---|---|---:|\n";
   for (const TechniqueResult& r : b.results) {
     s << "| " << label(b, r) << " | ";
     for (size_t i = 0; i < r.passes.size(); ++i) {

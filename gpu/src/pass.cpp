@@ -63,6 +63,7 @@ void open_write_masks() {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFFu);
+  glDisable(GL_SCISSOR_TEST);  // clears honour the scissor too
 }
 
 void apply(const PassState& s) {
@@ -84,12 +85,19 @@ void apply(const PassState& s) {
   glStencilMask(s.stencil_write ? 0xFFu : 0u);
   if (s.alpha_blend) {
     glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    // Colour over colour; the target keeps its own alpha (PNGs stay opaque).
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   } else {
     glDisable(GL_BLEND);
   }
   const GLboolean c = s.color_off ? GL_FALSE : GL_TRUE;
   glColorMask(c, c, c, c);
+  if (s.scissor[2] > 0 && s.scissor[3] > 0) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(s.scissor[0], s.scissor[1], s.scissor[2], s.scissor[3]);
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
   glEnable(GL_FRAMEBUFFER_SRGB);
 }
 

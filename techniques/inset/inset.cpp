@@ -69,20 +69,33 @@ class Inset final : public Technique {
     }
     s.parts.push_back({"inset", ni});
     s.shaded_pixels = np + ni;
-    // Composite: blurred upscale of the periphery, the inset over it with a vignette.
-    kit_.pass(kit_.fullscreen("inset/composite.frag"), target, {},
+    // Composite: the periphery blurred at its own resolution, upscaled over
+    // the screen (one fetch per pixel), then the inset blended over its own
+    // rectangle only.
+    blurred_.ensure(pw, ph);
+    kit_.pass(kit_.fullscreen("inset/blur.frag"), blurred_, {},
               [&](const gpu::Program& c, gpu::Samplers& samplers) {
                 samplers.bind(c, "u_periphery", periphery_.color());
-                // Without an inset the periphery stands in (never sampled).
-                samplers.bind(c, "u_inset", has_inset ? inset_.color() : periphery_.color());
-                c.set("u_has_inset", has_inset ? 1 : 0);
-                c.set("u_inset_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
-                c.set("u_gaze_gl", float(g.x), float(g.y));
-                c.set("u_radius", float(half));
-                c.set("u_border", float(f.blend_border_px));
                 c.set("u_blur", float(blur_));
-                c.set("u_screen", float(W), float(H));
               });
+    kit_.pass(kit_.fullscreen("inset/upscale.frag"), target, {},
+              [&](const gpu::Program& c, gpu::Samplers& samplers) {
+                samplers.bind(c, "u_periphery", blurred_.color());
+              });
+    if (has_inset) {
+      gpu::PassState over;
+      over.alpha_blend = true;
+      over.scissor = {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0),
+                      static_cast<int>(y1 - y0)};
+      kit_.pass(kit_.fullscreen("inset/composite.frag"), target, over,
+                [&](const gpu::Program& c, gpu::Samplers& samplers) {
+                  samplers.bind(c, "u_inset", inset_.color());
+                  c.set("u_inset_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
+                  c.set("u_gaze_gl", float(g.x), float(g.y));
+                  c.set("u_radius", float(half));
+                  c.set("u_border", float(f.blend_border_px));
+                });
+    }
     return s;
   }
 
@@ -104,6 +117,7 @@ class Inset final : public Technique {
   Display display_;
   double scale_, fovea_deg_, border_frac_, latency_ms_, max_saccade_, blur_;
   Kit kit_;
+  gpu::RenderTarget blurred_;  // the periphery after the tent blur
   gpu::RenderTarget periphery_, inset_;
 };
 

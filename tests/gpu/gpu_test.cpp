@@ -117,8 +117,18 @@ TEST_F(Gpu, PassStateSetsEverythingItNames) {
   s.stencil_write = true;
   s.alpha_blend = true;
   s.color_off = true;
+  s.scissor = {1, 2, 3, 1};
   gpu::apply(s);
   GLint v = 0;
+  GLint box[4] = {};
+  EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST));
+  glGetIntegerv(GL_SCISSOR_BOX, box);
+  EXPECT_EQ(box[0], 1);
+  EXPECT_EQ(box[1], 2);
+  EXPECT_EQ(box[2], 3);
+  EXPECT_EQ(box[3], 1);
+  glGetIntegerv(GL_BLEND_DST_ALPHA, &v);
+  EXPECT_EQ(v, GL_ONE);  // the target's alpha is kept
   GLboolean mask[4] = {};
   EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
   EXPECT_TRUE(glIsEnabled(GL_STENCIL_TEST));
@@ -131,6 +141,7 @@ TEST_F(Gpu, PassStateSetsEverythingItNames) {
   EXPECT_FALSE(mask[0]);
   // The default state turns every one of them off again: nothing leaks.
   gpu::apply({});
+  EXPECT_FALSE(glIsEnabled(GL_SCISSOR_TEST));
   EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST));
   EXPECT_FALSE(glIsEnabled(GL_STENCIL_TEST));
   EXPECT_FALSE(glIsEnabled(GL_BLEND));

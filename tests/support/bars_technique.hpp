@@ -20,8 +20,8 @@ class BarsTechnique final : public Technique {
                     const gpu::RenderTarget& target) override {
     FrameStats s = native_->render(scene, frame, gaze, target);
     const float black[4] = {0, 0, 0, 1};
+    gpu::open_write_masks();  // (which turns the scissor off: enable it after)
     glEnable(GL_SCISSOR_TEST);
-    gpu::open_write_masks();
     for (int y : {0, target.height() - bar_px_}) {
       glScissor(0, y, target.width(), bar_px_);
       glClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, black);

@@ -5,6 +5,7 @@
 // to off), and the textures it samples (Samplers: units handed out in order,
 // so a scene's textures and a technique's never collide). Nothing a pass sets
 // leaks into the next one.
+#include <array>
 #include <vector>
 
 #include "foveate/gpu/gl.hpp"
@@ -65,8 +66,11 @@ struct PassState {
   GLint stencil_ref = 0;
   GLenum stencil_pass_op = 0;  ///< on depth pass: 0 = keep, GL_REPLACE, GL_INCR, ...
   bool stencil_write = false;  ///< stencil write mask 0xFF instead of 0
-  bool alpha_blend = false;    ///< src alpha, one minus src alpha
+  bool alpha_blend = false;    ///< colour: src alpha, one minus src alpha; alpha kept
   bool color_off = false;      ///< colour writes off (depth/stencil-only passes)
+  /// Only this rectangle is drawn (x, y, width, height; GL pixels, origin
+  /// bottom-left); a zero width or height = the whole target.
+  std::array<int, 4> scissor{};
 };
 
 /// Sets every piece of state PassState names, on or off.
