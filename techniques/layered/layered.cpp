@@ -25,6 +25,7 @@
 #include <optional>
 
 #include "../common/kit.hpp"
+#include "../common/regions.hpp"
 #include "../common/registry.hpp"
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/profiler.hpp"
@@ -352,7 +353,7 @@ class Layered final : public Technique {
       prog.set("u_first", 0);
       prog.set("u_band", float(transition_));
     };
-    if (!target.color()) {
+    if (!DepthRegions::usable(target)) {
       // A target without a colour texture (a window's framebuffer): one pass
       // over every pixel, reading every layer.
       kit_.pass(kit_.fullscreen("layered/composite.frag"), target, {}, set);
@@ -364,58 +365,24 @@ class Layered final : public Technique {
     // llvmpipe skips the 4x4 blocks already written).
     const gpu::ProfileScope timed("composite");
     if (!region_program_)
-      region_program_ = kit_.compiler().build("layered/region.vert", "layered/composite.frag");
+      region_program_ = kit_.compiler().build("common/region.vert", "layered/composite.frag");
     const gpu::Program& prog = region_program_;
-    const gpu::RenderTarget& rt = composite_target(target);
-    rt.bind();
-    gpu::apply(gpu::PassState{GL_LESS, true});
-    const float far = 1.0f;
-    glClearNamedFramebufferfv(composite_fbo_.id(), GL_DEPTH, 0, &far);
+    regions_.begin(target, n);
     gpu::Samplers samplers;
     set(prog, samplers);
-    prog.use();
-    prog.set("u_viewport", float(display_.width_px), float(display_.height_px));
-    glBindVertexArray(composite_vao_.id());
     for (int k = 0; k < n; ++k) {
       prog.set("u_first", k);
-      prog.set("u_depth", -1.0f + 2.0f * float(k + 1) / float(n + 1));
       const LayerState& st = state_[static_cast<size_t>(k)];
       if (k + 1 < n) {
-        const double reach = st.radius * (1.0 + std::max(0.0, transition_)) + 1.0;
-        prog.set("u_centre", float(st.centre.x), float(st.centre.y));
-        prog.set("u_radius", float(reach));
-        glDrawArrays(GL_TRIANGLES, 0, 3 * kRegionSides);
+        regions_.disc(prog, st.centre, st.radius * (1.0 + std::max(0.0, transition_)) + 1.0, false);
       } else {
-        prog.set("u_radius", -1.0f);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        regions_.rest(prog);
       }
     }
   }
 
-  // The output's colour texture with a depth buffer of the composite's own.
-  const gpu::RenderTarget& composite_target(const gpu::RenderTarget& target) {
-    const GLuint colour = target.color().id();
-    if (!composite_fbo_ || composite_colour_ != colour || composite_rt_.width() != target.width() ||
-        composite_rt_.height() != target.height()) {
-      composite_depth_ =
-          gpu::Renderbuffer::create(GL_DEPTH_COMPONENT24, target.width(), target.height());
-      composite_fbo_ = gpu::Framebuffer::create();
-      composite_fbo_.attach(GL_COLOR_ATTACHMENT0, target.color());
-      composite_fbo_.attach(GL_DEPTH_ATTACHMENT, composite_depth_);
-      composite_fbo_.check("layered composite");
-      composite_rt_ = gpu::RenderTarget::wrap(composite_fbo_.id(), target.width(), target.height());
-      composite_colour_ = colour;
-    }
-    return composite_rt_;
-  }
-
-  static constexpr int kRegionSides = 48;  // as in region.vert
   gpu::Program region_program_;
-  gpu::Framebuffer composite_fbo_;
-  gpu::Renderbuffer composite_depth_;
-  gpu::RenderTarget composite_rt_;
-  GLuint composite_colour_ = 0;
-  gpu::VertexArray composite_vao_ = gpu::VertexArray::create();
+  DepthRegions regions_;
 
   Display display_;
   double transition_;
