@@ -9,18 +9,17 @@ constexpr int kSides = 48;  // as in region.vert
 }
 
 void DepthRegions::begin(const gpu::RenderTarget& target, int regions) {
-  const GLuint colour = target.color().id();
-  if (!fbo_ || colour_ != colour || target_.width() != target.width() ||
-      target_.height() != target.height()) {
+  if (!fbo_ || target_.width() != target.width() || target_.height() != target.height()) {
     depth_ = gpu::Renderbuffer::create(GL_DEPTH_COMPONENT24, target.width(), target.height());
     fbo_ = gpu::Framebuffer::create();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, target.color());
     fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    fbo_.check("depth regions");
     target_ = gpu::RenderTarget::wrap(fbo_.id(), target.width(), target.height());
-    colour_ = colour;
     vao_ = gpu::VertexArray::create();
   }
+  // Attached on every frame: GL names are reused, so a new target's texture
+  // can carry the name of one deleted since (and still attached here).
+  fbo_.attach(GL_COLOR_ATTACHMENT0, target.color());
+  fbo_.check("depth regions");
   regions_ = regions;
   next_ = 0;
   target_.bind();

@@ -33,7 +33,6 @@ class DepthRegions {
   gpu::Framebuffer fbo_;
   gpu::Renderbuffer depth_;
   gpu::RenderTarget target_;
-  GLuint colour_ = 0;
   gpu::VertexArray vao_;
   int regions_ = 1, next_ = 0;
 };

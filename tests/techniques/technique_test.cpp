@@ -504,7 +504,11 @@ TEST_F(Techniques, StaleHalfRateLayersFollowTheCamera) {
     return compare_all(native(*scene, 40), img).mean;
   };
   const double warped = error_on_stale_frame(1), stale = error_on_stale_frame(0);
-  EXPECT_LT(warped, 0.8 * stale) << warped << " vs " << stale;
+  // The stale layer is warped at its own resolution and then upsampled (two
+  // bilinear reads): 1.70 against 2.10 stale here at 320x180; warped per
+  // output pixel it was 1.61, at about four times the composite's cost
+  // (docs/performance.md). At 1920x1080 the two agree within 0.03 dB PSNR.
+  EXPECT_LT(warped, 0.85 * stale) << warped << " vs " << stale;
 }
 
 TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
