@@ -42,6 +42,11 @@ struct BenchOptions {
   bool progress = true;
   Sweep sweep;
   std::string command_line;
+  /// A video of the measured frames (empty = none): the reported runs tiled
+  /// side by side (VideoWriter, tile); with `side_by_side`, native first even
+  /// when not listed, and the gaze marked on every tile.
+  std::string video;
+  bool side_by_side = false;
 };
 
 struct TechniqueResult {
@@ -74,6 +79,7 @@ struct BenchResult {
   Image reference_sample;  ///< the supersampled reference's last frame (empty when native is)
   Vec2d sample_gaze_px;
   std::string gaze_report;
+  std::string video_summary;  ///< one line about the video written (empty = none)
 };
 
 BenchResult run_bench(const BenchOptions& options);
