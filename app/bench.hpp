@@ -2,6 +2,7 @@
 // The benchmark: the same frames (camera, time, gaze) rendered with each
 // technique in one process, interleaved frame by frame, timed with a steady
 // clock around glFinish, and compared with native for quality.
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,6 +84,8 @@ struct BenchResult {
 };
 
 BenchResult run_bench(const BenchOptions& options);
+/// The results as results.json holds them (schema in docs/bench-json.md).
+nlohmann::json bench_json(const BenchResult& result);
 /// Writes results.json, results.csv, results.md and report.html into options.out.
 void write_bench_outputs(const BenchResult& result);
 std::string bench_markdown(const BenchResult& result);
