@@ -3,8 +3,8 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "bench.hpp"
 #include "convert.hpp"
@@ -56,12 +56,11 @@ std::vector<std::string> param_items(const py::dict& params) {
   return out;
 }
 
-py::dict run(const std::string& scene, const std::vector<std::string>& techniques,
-             py::handle size, int frames, int warmup, const std::string& display,
-             const std::string& quality, std::optional<double> slope, const py::dict& params,
-             const std::string& gaze, const std::string& reference, bool metrics,
-             const std::string& sweep, double fps, const std::string& out,
-             const std::string& video, bool side_by_side, bool images) {
+py::dict run(const std::string& scene, const std::vector<std::string>& techniques, py::handle size,
+             int frames, int warmup, const std::string& display, const std::string& quality,
+             std::optional<double> slope, const py::dict& params, const std::string& gaze,
+             const std::string& reference, bool metrics, const std::string& sweep, double fps,
+             const std::string& out, const std::string& video, bool side_by_side, bool images) {
   app::BenchOptions o;
   try {
     app::SessionArgs sa;

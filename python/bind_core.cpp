@@ -72,8 +72,7 @@ void bind_display(py::module_& m) {
              return d;
            }),
            py::arg("name") = "custom", py::arg("width_px") = 1920, py::arg("height_px") = 1080,
-           py::arg("width_mm") = 510.0, py::arg("distance_mm") = 590.0,
-           py::arg("fov_h_deg") = 0.0)
+           py::arg("width_mm") = 510.0, py::arg("distance_mm") = 590.0, py::arg("fov_h_deg") = 0.0)
       .def_readonly("name", &Display::name)
       .def_readonly("width_px", &Display::width_px)
       .def_readonly("height_px", &Display::height_px)
@@ -186,8 +185,8 @@ void bind_planner(py::module_& m) {
         }
         return out;
       },
-      py::arg("fov_from_deg") = 10.0, py::arg("fov_to_deg") = 120.0,
-      py::arg("fov_step_deg") = 5.0, py::arg("grid_step_deg") = 0.05,
+      py::arg("fov_from_deg") = 10.0, py::arg("fov_to_deg") = 120.0, py::arg("fov_step_deg") = 5.0,
+      py::arg("grid_step_deg") = 0.05,
       "Figures 12-13 of Guenter et al.: predicted speedup against field of view per variant "
       "('2', '3', '4', '3*' layers) for quality A and B");
 }
@@ -203,17 +202,18 @@ void bind_models(py::module_& m) {
              return f;
            }),
            py::arg("latency_ms") = 0.0, py::arg("max_saccade_deg_per_s") = 200.0,
-           py::arg("fovea_deg") = 5.0, py::arg("blend_border_px") = 0.0,
-           py::arg("error_px") = 0.0)
+           py::arg("fovea_deg") = 5.0, py::arg("blend_border_px") = 0.0, py::arg("error_px") = 0.0)
       .def_readonly("latency_ms", &LatencyAwareFovea::latency_ms)
       .def_readonly("max_saccade_deg_per_s", &LatencyAwareFovea::max_saccade_deg_per_s)
       .def_readonly("fovea_deg", &LatencyAwareFovea::fovea_deg)
-      .def("diameter_px",
-           [](const LatencyAwareFovea& f, py::handle d) { return f.diameter_px(display_from(d)); },
-           py::arg("display") = "desktop-1080p")
-      .def("diameter_deg",
-           [](const LatencyAwareFovea& f, py::handle d) { return f.diameter_deg(display_from(d)); },
-           py::arg("display") = "desktop-1080p");
+      .def(
+          "diameter_px",
+          [](const LatencyAwareFovea& f, py::handle d) { return f.diameter_px(display_from(d)); },
+          py::arg("display") = "desktop-1080p")
+      .def(
+          "diameter_deg",
+          [](const LatencyAwareFovea& f, py::handle d) { return f.diameter_deg(display_from(d)); },
+          py::arg("display") = "desktop-1080p");
 
   py::class_<KernelLogPolar>(m, "KernelLogPolar",
                              "Meng et al. 2018: the kernel log-polar mapping (sigma, alpha)")
@@ -254,8 +254,7 @@ void bind_models(py::module_& m) {
           [](int block, py::handle display, const AcuityModel& acuity) {
             return CheckerboardPattern::from_acuity(block, display_from(display), acuity);
           },
-          py::arg("block"), py::arg("display") = "desktop-1080p",
-          py::arg("acuity") = AcuityModel{})
+          py::arg("block"), py::arg("display") = "desktop-1080p", py::arg("acuity") = AcuityModel{})
       .def(
           "region",
           [](const CheckerboardPattern& c, py::handle p, py::handle g) {

@@ -139,8 +139,8 @@ void bind_metrics(py::module_& m) {
         "The acuity filter's response to a grating (both in cycles per pixel)");
   m.def(
       "compare",
-      [](py::handle r, py::handle t, py::handle display, py::handle gaze,
-         const AcuityModel& acuity, bool flip, std::vector<double> band_edges_deg) {
+      [](py::handle r, py::handle t, py::handle display, py::handle gaze, const AcuityModel& acuity,
+         bool flip, std::vector<double> band_edges_deg) {
         const Pair p = images(r, t);
         const metrics::QualityReport q = metrics::compare(
             p.reference, p.test, display_from(display, p.test.width, p.test.height),

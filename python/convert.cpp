@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 #include "foveate/core/error.hpp"
 
@@ -92,9 +93,10 @@ Image image_from_array(const py::handle& obj, const std::string& what) {
       for (size_t k = 0; k < 3; ++k) {
         const double x = p[i * c + k];
         if (!(x >= 0.0 && x <= 1.0)) {
-          throw py::value_error(what + ": float values must be sRGB in [0, 1], got " +
-                                std::to_string(x) + " at (" + std::to_string(i / w) + ", " +
-                                std::to_string(i % w) + ", " + std::to_string(k) + ")");
+          std::ostringstream s;
+          s << what << ": float values must be sRGB in [0, 1], got " << x << " at [" << i / w
+            << ", " << i % w << ", " << k << "] (uint8 arrays hold 0..255)";
+          throw py::value_error(s.str());
         }
         img.rgba[i * 4 + k] = static_cast<std::uint8_t>(std::lround(x * 255.0));
       }
