@@ -102,11 +102,15 @@ struct VideoWriter::Impl {
     }
   }
 
-  void open_encoder(AVRational fps) {
+  void open_encoder(AVRational fps, const std::vector<std::string>& names) {
     std::string tried;
-    for (const char* name : kEncoders) {
+    for (const std::string& n : names) {
+      const char* name = n.c_str();
       const AVCodec* c = avcodec_find_encoder_by_name(name);
-      if (!c || avformat_query_codec(format->oformat, c->id, FF_COMPLIANCE_NORMAL) != 1) continue;
+      if (!c || avformat_query_codec(format->oformat, c->id, FF_COMPLIANCE_NORMAL) != 1) {
+        tried += (tried.empty() ? "" : ", ") + n + (c ? " (not for this container)" : " (absent)");
+        continue;
+      }
       std::unique_ptr<AVCodecContext, CodecContextFree> ctx(avcodec_alloc_context3(c));
       if (!ctx) throw std::bad_alloc();
       ctx->width = padded_w;
@@ -141,14 +145,12 @@ struct VideoWriter::Impl {
       encoder = name;
       return;
     }
-    throw Error(path + ": no usable video encoder for this container" +
-                (tried.empty()
-                     ? std::string(" (libavcodec has none of libx264, libopenh264, mpeg4)")
-                     : " (tried " + tried + ")"));
+    throw Error(path + ": no usable video encoder (tried " + tried + ")");
   }
 };
 
-VideoWriter::VideoWriter(const std::string& path, int width, int height, double fps)
+VideoWriter::VideoWriter(const std::string& path, int width, int height, double fps,
+                         const std::vector<std::string>& encoders)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.path = path;
@@ -184,7 +186,10 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, double 
   int rc = avformat_alloc_output_context2(&fmt, container, nullptr, m.tmp.c_str());
   if (rc < 0 || !fmt) m.fail("cannot set up the container", rc);
   m.format.reset(fmt);
-  m.open_encoder(av_d2q(fps, 100000));
+  m.open_encoder(av_d2q(fps, 100000),
+                 encoders.empty()
+                     ? std::vector<std::string>(std::begin(kEncoders), std::end(kEncoders))
+                     : encoders);
 
   m.stream = avformat_new_stream(fmt, nullptr);
   if (!m.stream) throw std::bad_alloc();
@@ -273,7 +278,8 @@ struct VideoWriter::Impl {
   std::string path, encoder;
 };
 
-VideoWriter::VideoWriter(const std::string& path, int, int, double) {
+VideoWriter::VideoWriter(const std::string& path, int, int, double,
+                         const std::vector<std::string>&) {
   throw Error(path +
               ": this foveate was built without video support (install libavcodec-dev, "
               "libavformat-dev, libswscale-dev and libavutil-dev, then reconfigure and rebuild)");

@@ -26,7 +26,10 @@ class VideoWriter {
   /// file cannot be written or no encoder is available. Odd sizes are padded
   /// to even ones (yuv420p needs them) by repeating the last column / row;
   /// padded_width() / padded_height() say what was encoded.
-  VideoWriter(const std::string& path, int width, int height, double fps);
+  /// `encoders`: libavcodec encoder names to try in order instead of the
+  /// default libx264, libopenh264, mpeg4.
+  VideoWriter(const std::string& path, int width, int height, double fps,
+              const std::vector<std::string>& encoders = {});
   ~VideoWriter();
   VideoWriter(const VideoWriter&) = delete;
   VideoWriter& operator=(const VideoWriter&) = delete;
