@@ -113,8 +113,8 @@ void run_render(const RenderArgs& a) {
 
 void register_render(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  CLI::App* sub =
-      app.add_subcommand("render", "Render frames of a scene with a technique to PNG files");
+  CLI::App* sub = app.add_subcommand(
+      "render", "Render frames of a scene with a technique to PNG files or a video");
   add_session_options(sub, a->session, true);
   sub->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
   sub->add_option("--mouse", a->mouse,
