@@ -16,6 +16,7 @@
 #include "foveate/gpu/frame.hpp"
 #include "foveate/metrics/metrics.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "video.hpp"
 
 namespace foveate::app {
 
@@ -216,6 +217,22 @@ BenchResult run_bench(const BenchOptions& o) {
   int warmup = o.warmup;
   for (const Run& r : runs) warmup = std::max(warmup, r.impl->settle_frames());
   out.warmup = warmup;
+  // The runs the video shows, in order, and the video (opened before any
+  // frame is rendered, so that a bad path fails at once).
+  std::vector<size_t> shown;
+  for (size_t i = 0; i < runs.size(); ++i) {
+    if (i > 0 || native_listed || o.side_by_side) shown.push_back(i);
+  }
+  std::unique_ptr<VideoWriter> video;
+  if (!o.video.empty()) {
+    int cols = 0, rows = 0;
+    tile_layout(static_cast<int>(shown.size()), cols, rows);
+    video = with_flag("--video", [&] {
+      return std::make_unique<VideoWriter>(o.video, cols * o.session.size.width,
+                                           rows * o.session.size.height, o.session.fps);
+    });
+  }
+
   const int total = static_cast<int>(runs.size()) * (o.frames + warmup);
   Progress progress(total, o.progress);
   gpu::FrameTimer timer;
@@ -260,12 +277,25 @@ BenchResult run_bench(const BenchOptions& o) {
       else
         for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p)
           r.result.parts[p].pixels += s.parts[p].pixels;
-      if (o.image_metrics || k + 1 == o.frames) {
+      if (o.image_metrics || k + 1 == o.frames || video) {
         Image img = renderer.read_output();
         if (&r == &runs[0] && !reference) reference_image = img;
         images.emplace_back(static_cast<size_t>(&r - &runs[0]), std::move(img));
       }
       progress.step(r.technique + (o.sweep.empty() ? "" : " @" + fmt(r.sweep_value, 4)));
+    }
+    if (video) {
+      // Untimed: the frames were read back after the clock stopped.
+      std::vector<Image> tiles(shown.size());
+      std::vector<const Image*> ptrs;
+      for (size_t s = 0; s < shown.size(); ++s) {
+        for (const auto& [idx, img] : images) {
+          if (idx == shown[s]) tiles[s] = img;
+        }
+        if (o.side_by_side) mark_gaze(tiles[s], g.gaze_px);
+        ptrs.push_back(&tiles[s]);
+      }
+      video->write(tile(ptrs));
     }
     for (auto& [idx, img] : images) {
       Run& r = runs[idx];
@@ -289,6 +319,10 @@ BenchResult run_bench(const BenchOptions& o) {
 
   out.gaze_report = gaze.report();
   finish_environment(out.environment);
+  if (video) {
+    video->finish();
+    out.video_summary = video_summary(*video, o.session.fps);
+  }
   const std::vector<double> native_ms =
       runs[0].result.frame_ms;  // a copy: results are moved out below
   const double native_median = quantile(native_ms, 0.5);

@@ -2,6 +2,7 @@
 // The benchmark: the same frames (camera, time, gaze) rendered with each
 // technique in one process, interleaved frame by frame, timed with a steady
 // clock around glFinish, and compared with native for quality.
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,11 @@ struct BenchOptions {
   bool passes = false;
   Sweep sweep;
   std::string command_line;
+  /// A video of the measured frames (empty = none): the reported runs tiled
+  /// side by side (VideoWriter, tile); with `side_by_side`, native first even
+  /// when not listed, and the gaze marked on every tile.
+  std::string video;
+  bool side_by_side = false;
 };
 
 struct TechniqueResult {
@@ -84,9 +90,12 @@ struct BenchResult {
   Image reference_sample;  ///< the supersampled reference's last frame (empty when native is)
   Vec2d sample_gaze_px;
   std::string gaze_report;
+  std::string video_summary;  ///< one line about the video written (empty = none)
 };
 
 BenchResult run_bench(const BenchOptions& options);
+/// The results as results.json holds them (schema in docs/bench-json.md).
+nlohmann::json bench_json(const BenchResult& result);
 /// Writes results.json, results.csv, results.md and report.html into options.out.
 void write_bench_outputs(const BenchResult& result);
 std::string bench_markdown(const BenchResult& result);

@@ -27,6 +27,8 @@ struct BenchArgs {
   bool no_metrics = false;
   bool quiet = false;
   bool passes = false;
+  std::string video;
+  bool side_by_side = false;
   BenchArgs() { session.size = "960x540"; }
 };
 
@@ -57,6 +59,8 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
   o.progress = !a.quiet;
   o.passes = a.passes;
   o.command_line = command_line;
+  o.video = a.video;
+  o.side_by_side = a.side_by_side;
   if (!a.sweep.empty()) o.sweep = Sweep::parse(a.sweep);
   return o;
 }
@@ -84,6 +88,14 @@ void add_common(CLI::App* sub, BenchArgs& a) {
   sub->add_flag("--passes", a.passes,
                 "Time every pass (G-buffer, shading, temporal, composite, ...) and report where "
                 "each technique's frame goes; glFinish between passes on software renderers");
+  CLI::Option* video = sub->add_option(
+      "--video", a.video,
+      "Also write the measured frames as a video (e.g. bench.mp4): the techniques tiled left to "
+      "right (two rows beyond three), H.264 (libx264) yuv420p at --fps, written atomically");
+  sub->add_flag("--side-by-side", a.side_by_side,
+                "In the video, native first (even when not listed) and the gaze marked on every "
+                "tile")
+      ->needs(video);
 }
 
 void print_summary(const BenchResult& r) {
@@ -95,6 +107,7 @@ void print_summary(const BenchResult& r) {
             << "\nreport: " << (std::filesystem::path(r.options.out) / "report.html").string()
             << "\nresults: " << (std::filesystem::path(r.options.out) / "results.json").string()
             << " (.csv, .md)\n";
+  if (!r.video_summary.empty()) std::cerr << r.video_summary << "\n";
 }
 
 }  // namespace

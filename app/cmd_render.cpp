@@ -12,6 +12,7 @@
 #include "foveate/core/file.hpp"
 #include "foveate/techniques/reference.hpp"
 #include "session.hpp"
+#include "video.hpp"
 
 namespace foveate::app {
 
@@ -25,6 +26,8 @@ struct RenderArgs {
   std::string mouse;
   std::string reference = "native";
   bool overlay = false;
+  std::string video;
+  bool side_by_side = false;
   RenderArgs() { session.size = "640x360"; }
 };
 
@@ -40,33 +43,69 @@ void run_render(const RenderArgs& a) {
   const int reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   const ParamArgs params = parse_params(a.session.params);
   validate_params(params, {a.technique});
-  std::filesystem::create_directories(a.out);
+  if (a.out.empty() && a.video.empty()) throw CLI::RequiredError("--out or --video");
+  if (reference > 1 && a.out.empty())
+    throw Error("--reference: the reference frames are PNG files; give --out DIR too");
+  if (!a.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw Error("--out: cannot create the folder " + a.out + ": " + ec.message());
+  }
+  // Opened before rendering, so that a bad path fails at once.
+  std::unique_ptr<VideoWriter> video;
+  if (!a.video.empty()) {
+    video = with_flag("--video", [&] {
+      return std::make_unique<VideoWriter>(a.video, o.size.width * (a.side_by_side ? 2 : 1),
+                                           o.size.height, o.fps);
+    });
+  }
   Session session(o, a.session.gaze);
   Renderer& renderer = session.renderer();
   renderer.set_overlay(a.overlay);
   auto technique = session.make(a.technique, params);
+  const auto native = a.side_by_side ? session.make("native", params) : nullptr;
   const std::unique_ptr<Reference> supersampled =
       reference > 1 ? session.make_reference(reference) : nullptr;
-  double shaded = 0, native = 0;
+  double shaded = 0, native_pixels = 0;
   for (int k = 0; k < a.frames; ++k) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
+    Image native_image;
+    if (native) {
+      renderer.render(*native, k, gaze);
+      native_image = renderer.read_output();
+    }
     const FrameStats s = renderer.render(*technique, k, gaze);
     shaded += s.shaded_pixels;
-    native += s.native_pixels;
+    native_pixels += s.native_pixels;
+    Image image = renderer.read_output();
     char name[64];
-    std::snprintf(name, sizeof name, "frame-%04d.png", k);
-    write_png((std::filesystem::path(a.out) / name).string(), renderer.read_output());
+    if (!a.out.empty()) {
+      std::snprintf(name, sizeof name, "frame-%04d.png", k);
+      write_png((std::filesystem::path(a.out) / name).string(), image);
+    }
+    if (video && native) {
+      mark_gaze(native_image, gaze.gaze_px);
+      mark_gaze(image, gaze.gaze_px);
+      video->write(tile({&native_image, &image}));
+    } else if (video) {
+      video->write(image);
+    }
     if (supersampled) {
       std::snprintf(name, sizeof name, "reference-%04d.png", k);
       write_png((std::filesystem::path(a.out) / name).string(),
                 supersampled->render(renderer.frame_input(k)));
     }
   }
+  if (video) {
+    video->finish();
+    std::cerr << video_summary(*video, o.fps) << "\n";
+  }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
-            << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out
-            << "/\n";
+            << a.technique << " at " << o.size.width << 'x' << o.size.height << " to "
+            << (a.out.empty() ? a.video : a.out + "/" + (a.video.empty() ? "" : " and " + a.video))
+            << "\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
-            << fmt(100.0 * shaded / native, 1) << " % of native)\n"
+            << fmt(100.0 * shaded / native_pixels, 1) << " % of native)\n"
             << session.gaze().report() << "\n";
 }
 
@@ -74,16 +113,25 @@ void run_render(const RenderArgs& a) {
 
 void register_render(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  CLI::App* sub =
-      app.add_subcommand("render", "Render frames of a scene with a technique to PNG files");
+  CLI::App* sub = app.add_subcommand(
+      "render", "Render frames of a scene with a technique to PNG files or a video");
   add_session_options(sub, a->session, true);
   sub->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
   sub->add_option("--mouse", a->mouse,
                   "Shadertoy iMouse position X,Y (pixels or normalized), button down");
-  sub->add_option("--out", a->out, "Output directory (frame-0000.png, ...)")->required();
+  sub->add_option("--out", a->out,
+                  "Output directory (frame-0000.png, ...); required unless --video is given");
   sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
       ->capture_default_str();
   sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");
+  CLI::Option* video =
+      sub->add_option("--video", a->video,
+                      "Also (or only) write the frames as a video, e.g. out.mp4: H.264 (libx264) "
+                      "yuv420p at --fps, written atomically");
+  sub->add_flag("--side-by-side", a->side_by_side,
+                "In the video, native on the left and the technique on the right, the gaze "
+                "marked on both (twice the width)")
+      ->needs(video);
   sub->add_option("--reference", a->reference,
                   "Also write reference-NNNN.png: ssaa[:N] = native with NxN supersampling "
                   "(default N = 4), box-filtered in linear light (native = none)")

@@ -471,6 +471,8 @@ std::string bench_markdown(const BenchResult& b) {
   return s.str();
 }
 
+nlohmann::json bench_json(const BenchResult& b) { return to_json(b); }
+
 void write_bench_outputs(const BenchResult& b) {
   namespace fs = std::filesystem;
   fs::create_directories(b.options.out);

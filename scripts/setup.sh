@@ -11,6 +11,8 @@ packages=(
   libzmq3-dev cppzmq-dev libmsgpack-cxx-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth chromium
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev ffmpeg
+  python3-dev pybind11-dev python3-numpy python3-pytest
 )
 
 sudo_cmd=()

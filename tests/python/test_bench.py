@@ -1,0 +1,73 @@
+# The benchmark run in-process from Python (headless OpenGL), and its results read back.
+import json
+
+import numpy as np
+import pytest
+
+
+def tiny(fv, **kw):
+    args = dict(scene="cheap", techniques=["native", "layered"], size=(64, 36), frames=2, warmup=1)
+    args.update(kw)
+    return fv.bench(**args)
+
+
+def test_a_tiny_bench_returns_native_and_a_technique(fv, tmp_path):
+    r = tiny(fv, out=str(tmp_path), images=True)
+    assert r["schema"] == "foveate-bench/1"
+    assert r["scene"] == "cheap" and r["size"] == [64, 36] and r["frames"] == 2
+    names = [x["technique"] for x in r["results"]]
+    assert names == ["native", "layered"]
+    native, layered = r["results"]
+    assert native["speedup"] == 1.0
+    assert native["quality"] == {}  # native is the reference
+    assert len(layered["frame_ms"]) == 2 and all(ms > 0 for ms in layered["frame_ms"])
+    lo, hi = layered["speedup_ci95"]
+    assert lo <= layered["speedup"] <= hi
+    assert layered["speedup"] == pytest.approx(native["median_ms"] / layered["median_ms"])
+    assert layered["pixel_ratio"] == pytest.approx(layered["shaded_pixels"] / layered["native_pixels"])
+    assert layered["native_pixels"] == 64 * 36
+    assert layered["parameters"]["layers"] == 3
+    assert 0.5 < layered["quality"]["ssim"] <= 1.0 and layered["quality"]["frames"] == 2
+    # The frames, and the metrics on them agree with the module's own.
+    assert r["native_image"].shape == (36, 64, 3) and r["native_image"].dtype == np.uint8
+    np.testing.assert_array_equal(native["image"], r["native_image"])
+    assert layered["image"].shape == (36, 64, 3)
+    assert fv.ssim(r["native_image"], r["native_image"]) == pytest.approx(1.0)
+    # The files of `foveate bench --out`, read back.
+    back = fv.read_results(str(tmp_path))
+    assert [x["technique"] for x in back["results"]] == names
+    assert back["results"][1]["median_ms"] == pytest.approx(layered["median_ms"])
+    with open(tmp_path / "results.json") as f:
+        assert json.load(f)["command"] == "foveate.bench (Python)"
+    assert (tmp_path / "report.html").stat().st_size > 0
+
+
+def test_parameters_sweeps_and_video(fv, tmp_path):
+    r = tiny(fv, techniques=["layered"], params={"layered.layers": 2}, metrics=False)
+    assert [x["technique"] for x in r["results"]] == ["layered"]  # native measured, not listed
+    assert r["results"][0]["parameters"]["layers"] == 2
+    s = tiny(fv, techniques=["layered"], sweep="slope=0.02:0.03:0.01", metrics=False, frames=1)
+    assert [x["sweep_value"] for x in s["results"]] == pytest.approx([0.02, 0.03])
+    video = tmp_path / "b.mp4"
+    v = tiny(fv, techniques=["layered"], metrics=False, video=str(video), side_by_side=True)
+    assert video.stat().st_size > 0 and "2 frame(s), 128x36" in v["video"]
+
+
+def test_bad_bench_input_raises(fv, tmp_path):
+    with pytest.raises(fv.Error, match="techniques: unknown technique 'warp'"):
+        tiny(fv, techniques=["warp"])
+    with pytest.raises(fv.Error, match="size"):
+        tiny(fv, size=(0, 36))
+    with pytest.raises(fv.Error, match="not a built-in scene"):
+        tiny(fv, scene="nosuch")
+    with pytest.raises(fv.Error, match="no such parameter|belongs to none"):
+        tiny(fv, params={"nope": 1})
+    with pytest.raises(TypeError, match="params\\['layers'\\]: expected a number"):
+        tiny(fv, params={"layers": "three"})
+    with pytest.raises(fv.Error, match="frames"):
+        tiny(fv, frames=0)
+    with pytest.raises(fv.Error, match="results.json"):
+        fv.read_results(str(tmp_path))
+    (tmp_path / "results.json").write_text("{broken")
+    with pytest.raises(fv.Error, match="not valid JSON"):
+        fv.read_results(str(tmp_path / "results.json"))
