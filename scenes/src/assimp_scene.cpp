@@ -13,13 +13,16 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "factories.hpp"
 #include "foveate/core/error.hpp"
@@ -85,6 +88,86 @@ std::string lower_ext(const std::string& path) {
               " on " + std::to_string(size) + " bytes)");
 }
 
+// Removes, before post-processing (whose vertex joining compares positions
+// and would merge inf and NaN with real vertices), every face that uses a
+// vertex with a non-finite position. A mesh left without faces keeps one
+// degenerate face on a finite point so that the scene stays valid. Returns
+// the number of such vertices; `faces_left` counts the faces kept.
+size_t drop_non_finite_faces(aiScene* s, size_t& faces_left) {
+  size_t dropped = 0;
+  faces_left = 0;
+  for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
+    aiMesh* m = s->mMeshes[mi];
+    std::vector<char> bad(m->mNumVertices, 0);
+    size_t n_bad = 0;
+    std::set<std::array<std::uint32_t, 3>> distinct;  // importers copy vertices per face
+    unsigned finite_vertex = m->mNumVertices;
+    for (unsigned v = 0; v < m->mNumVertices; ++v) {
+      const aiVector3D& p = m->mVertices[v];
+      bad[v] = !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+      n_bad += bad[v] ? 1 : 0;
+      if (bad[v]) {
+        static_assert(sizeof(p.x) == sizeof(std::uint32_t));
+        std::array<std::uint32_t, 3> bits{};
+        std::memcpy(bits.data(), &p.x, sizeof(float));
+        std::memcpy(bits.data() + 1, &p.y, sizeof(float));
+        std::memcpy(bits.data() + 2, &p.z, sizeof(float));
+        distinct.insert(bits);
+      }
+      if (!bad[v] && finite_vertex == m->mNumVertices) finite_vertex = v;
+    }
+    if (n_bad == 0) {
+      faces_left += m->mNumFaces;
+      continue;
+    }
+    dropped += distinct.size();
+    std::vector<unsigned> keep;
+    for (unsigned f = 0; f < m->mNumFaces; ++f) {
+      const aiFace& face = m->mFaces[f];
+      bool ok = true;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        ok = ok && face.mIndices[k] < m->mNumVertices && !bad[face.mIndices[k]];
+      }
+      if (ok) keep.push_back(f);
+    }
+    // Unused now: moved onto a finite point so that nothing downstream sees them.
+    const aiVector3D anchor =
+        finite_vertex < m->mNumVertices ? m->mVertices[finite_vertex] : aiVector3D(0, 0, 0);
+    for (unsigned v = 0; v < m->mNumVertices; ++v) {
+      if (bad[v]) m->mVertices[v] = anchor;
+    }
+    faces_left += keep.size();
+    if (keep.size() == m->mNumFaces) continue;
+    const unsigned n = std::max<unsigned>(1, static_cast<unsigned>(keep.size()));
+    auto* faces = new aiFace[n];
+    if (keep.empty()) {
+      faces[0].mNumIndices = 1;  // a point: removed with the points below
+      faces[0].mIndices = new unsigned[1]{finite_vertex < m->mNumVertices ? finite_vertex : 0};
+      m->mPrimitiveTypes = aiPrimitiveType_POINT;
+    }
+    for (size_t i = 0; i < keep.size(); ++i) {
+      std::swap(faces[i].mNumIndices, m->mFaces[keep[i]].mNumIndices);
+      std::swap(faces[i].mIndices, m->mFaces[keep[i]].mIndices);
+    }
+    delete[] m->mFaces;
+    m->mFaces = faces;
+    m->mNumFaces = n;
+  }
+  return dropped;
+}
+
+// Whether the material's colour texture is box-projected (assimp's UV
+// generation leaves that mapping out).
+bool box_mapped(const aiMaterial* material) {
+  int mapping = aiTextureMapping_UV;
+  for (aiTextureType t : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
+    if (material->Get(AI_MATKEY_MAPPING(t, 0), mapping) == AI_SUCCESS) {
+      return mapping == aiTextureMapping_BOX;
+    }
+  }
+  return false;
+}
+
 // The file's up axis from its metadata (FBX and others set "UpAxis"), or
 // `override` ("y" or "z") when given.
 UpAxis up_axis_of(const aiScene* s, const std::string& override_up) {
@@ -124,15 +207,29 @@ class AssimpScene final : public MeshSceneBase {
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* s = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                  aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_GenUVCoords |
-                  aiProcess_TransformUVCoords | aiProcess_ValidateDataStructure);
+    // Read first, so that the materials' projection mappings can be seen
+    // before UV generation rewrites them, then post-process.
+    const aiScene* s = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
+      import_failed(path, importer);
+    }
+    size_t faces_left = 0;
+    size_t dropped = drop_non_finite_faces(const_cast<aiScene*>(s), faces_left);
+    if (dropped > 0 && faces_left == 0) {
+      throw Error(path + ": the model has no finite vertices to render (all " +
+                  std::to_string(dropped) + " vertices of its faces are inf or NaN)");
+    }
+    std::vector<char> box(s->mNumMaterials, 0);
+    for (unsigned i = 0; i < s->mNumMaterials; ++i) box[i] = box_mapped(s->mMaterials[i]);
+    s = importer.ApplyPostProcessing(
+        aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+        aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_GenUVCoords |
+        aiProcess_TransformUVCoords | aiProcess_ValidateDataStructure);
     if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
       import_failed(path, importer);
     }
     const UpAxis up = up_axis_of(s, o.up);
-    size_t dropped = 0, repaired = 0;
+    size_t repaired = 0;
     ShapeStats shape;
     std::vector<std::pair<MeshData, unsigned>> parts;
     for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
@@ -157,19 +254,22 @@ class AssimpScene final : public MeshSceneBase {
         if (am->mFaces[f].mNumIndices != 3) continue;
         for (int k = 0; k < 3; ++k) d.indices.push_back(am->mFaces[f].mIndices[k]);
       }
-      dropped += drop_non_finite(d);
+      dropped += drop_non_finite(d);  // e.g. from a node transform with inf
       if (d.indices.empty()) continue;
       repaired += repair_normals(d);
+      if (am->mMaterialIndex < box.size() && box[am->mMaterialIndex] &&
+          std::all_of(d.vertices.begin(), d.vertices.end(),
+                      [](const Vertex& x) { return x.u == 0.0f && x.v == 0.0f; })) {
+        box_uvs(d);  // assimp leaves them zero
+      }
       make_y_up(d, up);
       shape.add(d);
       parts.emplace_back(std::move(d), am->mMaterialIndex);
     }
     if (parts.empty()) {
-      if (dropped > 0) {
-        throw Error(path + ": the model has no finite vertices to render (all " +
-                    std::to_string(dropped) + " vertices of its triangles are inf or NaN)");
-      }
-      throw Error(path + ": the model has no triangles");
+      throw Error(path + (dropped > 0 ? ": the model has no triangles left without its " +
+                                            std::to_string(dropped) + " inf or NaN vertices"
+                                      : ": the model has no triangles"));
     }
     if (dropped > 0) {
       warn(path + ": " + std::to_string(dropped) +

@@ -100,6 +100,25 @@ size_t repair_normals(MeshData& m) {
   return count;
 }
 
+void box_uvs(MeshData& m) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const Vertex& v : m.vertices) {
+    lo = glm::min(lo, glm::vec3(v.px, v.py, v.pz));
+    hi = glm::max(hi, glm::vec3(v.px, v.py, v.pz));
+  }
+  const glm::vec3 size = glm::max(hi - lo, glm::vec3(1e-20f));
+  for (Vertex& v : m.vertices) {
+    const glm::vec3 p = (glm::vec3(v.px, v.py, v.pz) - lo) / size;
+    const glm::vec3 n = glm::abs(glm::vec3(v.nx, v.ny, v.nz));
+    if (n.x >= n.y && n.x >= n.z)
+      v.u = p.z, v.v = p.y;
+    else if (n.y >= n.z)
+      v.u = p.x, v.v = p.z;
+    else
+      v.u = p.x, v.v = p.y;
+  }
+}
+
 void make_y_up(MeshData& m, UpAxis up) {
   if (up.axis == 1 && up.sign > 0) return;
   // A rotation taking the file's up direction to +Y (a right-handed turn,

@@ -19,6 +19,11 @@ size_t drop_non_finite(MeshData& mesh);
 /// degenerate too). Returns how many normals were replaced.
 size_t repair_normals(MeshData& mesh);
 
+/// Box-projected UVs (assimp leaves aiTextureMapping_BOX unimplemented):
+/// each vertex is projected along the axis its normal is closest to, onto
+/// the mesh's bounding box faces scaled to [0, 1].
+void box_uvs(MeshData& mesh);
+
 /// Up axis of a file: 0 = X, 1 = Y, 2 = Z, with sign +1 or -1.
 struct UpAxis {
   int axis = 1;

@@ -3,7 +3,7 @@
 file per case a user's model brings (texture path forms, a missing texture,
 a glTF texture transform, Z-up files, flat models, non-finite vertices, zero
 normals). Run from this folder; the files are committed, this documents them."""
-import base64, json, struct, zlib, os
+import base64, json, math, struct, zlib, os
 
 def png(w, h, rows):
     raw = b"".join(b"\0" + bytes(c for p in row for c in p) for row in rows)
@@ -171,6 +171,48 @@ g = {"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_texture_transform"],
                    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
                    {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}]}
 write("texture_transform.gltf", json.dumps(g, indent=1) + "\n")
+
+# Projection mappings (LightWave LWO2, binary, written here): a sphere whose
+# texture (red and green stripes across u) is mapped by projection, with no
+# UVs in the file; both colours show only when UVs are generated.
+GRN = (0, 255, 0)
+write("textures/stripes.png", png(8, 8, [[RED, RED, GRN, GRN, RED, RED, GRN, GRN]] * 8))
+
+def lwo_sphere(name, projection):
+    def s0(s):
+        b = s.encode("latin-1") + b"\0"
+        return b + (b"\0" if len(b) % 2 else b"")
+    def chunk(id_, data):  # top-level chunk: u4 size
+        return id_ + struct.pack(">I", len(data)) + data + (b"\0" if len(data) % 2 else b"")
+    def sub(id_, data):  # subchunk: u2 size
+        return id_ + struct.pack(">H", len(data)) + data + (b"\0" if len(data) % 2 else b"")
+    vx = lambda i: struct.pack(">H", i)
+    nu, nv = 24, 12
+    pts = [(math.sin(math.pi * j / nv) * math.cos(2 * math.pi * i / nu), math.cos(math.pi * j / nv),
+            math.sin(math.pi * j / nv) * math.sin(2 * math.pi * i / nu))
+           for j in range(nv + 1) for i in range(nu)]
+    polys = [(j * nu + i, (j + 1) * nu + i, (j + 1) * nu + (i + 1) % nu, j * nu + (i + 1) % nu)
+             for j in range(nv) for i in range(nu)]
+    imap = sub(b"IMAP", s0("\x80") + sub(b"CHAN", b"COLR") + sub(b"ENAB", vx(1)))
+    tmap = sub(b"TMAP", sub(b"CNTR", struct.pack(">3f", 0, 0, 0) + vx(0)) +
+               sub(b"SIZE", struct.pack(">3f", 1, 1, 1) + vx(0)) +
+               sub(b"ROTA", struct.pack(">3f", 0, 0, 0) + vx(0)) + sub(b"CSYS", vx(0)))
+    blok = sub(b"BLOK", imap + tmap + sub(b"PROJ", vx(projection)) + sub(b"AXIS", vx(1)) +
+               sub(b"IMAG", vx(1)) + sub(b"WRAP", struct.pack(">HH", 1, 1)))
+    body = (b"LWO2" + chunk(b"TAGS", s0("Surf")) +
+            chunk(b"LAYR", struct.pack(">HH3f", 0, 0, 0, 0, 0) + s0("layer")) +
+            chunk(b"PNTS", b"".join(struct.pack(">3f", *p) for p in pts)) +
+            chunk(b"POLS", b"FACE" + b"".join(struct.pack(">H", 4) + b"".join(vx(i) for i in p)
+                                              for p in polys)) +
+            chunk(b"PTAG", b"SURF" + b"".join(vx(k) + vx(0) for k in range(len(polys)))) +
+            chunk(b"CLIP", struct.pack(">I", 1) + sub(b"STIL", s0("textures/stripes.png"))) +
+            chunk(b"SURF", s0("Surf") + s0("") + sub(b"COLR", struct.pack(">3f", 1, 1, 1) + vx(0)) +
+                  sub(b"DIFF", struct.pack(">f", 1.0) + vx(0)) + blok))
+    write(name, b"FORM" + struct.pack(">I", len(body)) + body)
+
+# LWO2 projection codes: 0 planar, 1 cylindrical, 2 spherical, 3 cubic.
+for proj, kind in enumerate(["planar", "cylindrical", "spherical", "box"]):
+    lwo_sphere(f"mapping_{kind}.lwo", proj)
 
 # A PLY whose header declares two billion vertices (the memory guard's case).
 write("huge_header.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
