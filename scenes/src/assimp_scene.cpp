@@ -73,7 +73,8 @@ std::string lower_ext(const std::string& path) {
 // Why the import failed, in words, even when assimp gives no reason.
 [[noreturn]] void import_failed(const std::string& path, const Assimp::Importer& importer) {
   const std::string why = importer.GetErrorString();
-  if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos) {
+  if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos ||
+      why.find("mNumMeshes is 0") != std::string::npos) {
     throw Error(path + ": the model has no triangles to render (" + why + ")");
   }
   if (!why.empty()) throw Error(path + ": cannot read the model: " + why);
