@@ -24,6 +24,7 @@
 #include <optional>
 #include <set>
 
+#include "assimp_repair.hpp"
 #include "factories.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
@@ -89,74 +90,6 @@ std::string lower_ext(const std::string& path) {
               " on " + std::to_string(size) + " bytes)");
 }
 
-// Removes, before post-processing (whose vertex joining compares positions
-// and would merge inf and NaN with real vertices), every face that uses a
-// vertex with a non-finite position. A mesh left without faces keeps one
-// degenerate face on a finite point so that the scene stays valid. Returns
-// the number of such vertices; `faces_left` counts the faces kept.
-size_t drop_non_finite_faces(aiScene* s, size_t& faces_left) {
-  size_t dropped = 0;
-  faces_left = 0;
-  for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
-    aiMesh* m = s->mMeshes[mi];
-    std::vector<char> bad(m->mNumVertices, 0);
-    size_t n_bad = 0;
-    std::set<std::array<std::uint32_t, 3>> distinct;  // importers copy vertices per face
-    unsigned finite_vertex = m->mNumVertices;
-    for (unsigned v = 0; v < m->mNumVertices; ++v) {
-      const aiVector3D& p = m->mVertices[v];
-      bad[v] = !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
-      n_bad += bad[v] ? 1 : 0;
-      if (bad[v]) {
-        static_assert(sizeof(p.x) == sizeof(std::uint32_t));
-        std::array<std::uint32_t, 3> bits{};
-        std::memcpy(bits.data(), &p.x, sizeof(float));
-        std::memcpy(bits.data() + 1, &p.y, sizeof(float));
-        std::memcpy(bits.data() + 2, &p.z, sizeof(float));
-        distinct.insert(bits);
-      }
-      if (!bad[v] && finite_vertex == m->mNumVertices) finite_vertex = v;
-    }
-    if (n_bad == 0) {
-      faces_left += m->mNumFaces;
-      continue;
-    }
-    dropped += distinct.size();
-    std::vector<unsigned> keep;
-    for (unsigned f = 0; f < m->mNumFaces; ++f) {
-      const aiFace& face = m->mFaces[f];
-      bool ok = true;
-      for (unsigned k = 0; k < face.mNumIndices; ++k) {
-        ok = ok && face.mIndices[k] < m->mNumVertices && !bad[face.mIndices[k]];
-      }
-      if (ok) keep.push_back(f);
-    }
-    // Unused now: moved onto a finite point so that nothing downstream sees them.
-    const aiVector3D anchor =
-        finite_vertex < m->mNumVertices ? m->mVertices[finite_vertex] : aiVector3D(0, 0, 0);
-    for (unsigned v = 0; v < m->mNumVertices; ++v) {
-      if (bad[v]) m->mVertices[v] = anchor;
-    }
-    faces_left += keep.size();
-    if (keep.size() == m->mNumFaces) continue;
-    const unsigned n = std::max<unsigned>(1, static_cast<unsigned>(keep.size()));
-    auto* faces = new aiFace[n];
-    if (keep.empty()) {
-      faces[0].mNumIndices = 1;  // a point: removed with the points below
-      faces[0].mIndices = new unsigned[1]{finite_vertex < m->mNumVertices ? finite_vertex : 0};
-      m->mPrimitiveTypes = aiPrimitiveType_POINT;
-    }
-    for (size_t i = 0; i < keep.size(); ++i) {
-      std::swap(faces[i].mNumIndices, m->mFaces[keep[i]].mNumIndices);
-      std::swap(faces[i].mIndices, m->mFaces[keep[i]].mIndices);
-    }
-    delete[] m->mFaces;
-    m->mFaces = faces;
-    m->mNumFaces = n;
-  }
-  return dropped;
-}
-
 // Whether the material's colour texture is box-projected (assimp's UV
 // generation leaves that mapping out).
 bool box_mapped(const aiMaterial* material) {
@@ -208,17 +141,29 @@ class AssimpScene final : public MeshSceneBase {
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // Read first, so that the materials' projection mappings can be seen
-    // before UV generation rewrites them, then post-process.
-    const aiScene* s = importer.ReadFile(path, aiProcess_ValidateDataStructure);
-    if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
-      import_failed(path, importer);
-    }
-    size_t faces_left = 0;
-    size_t dropped = drop_non_finite_faces(const_cast<aiScene*>(s), faces_left);
-    if (dropped > 0 && faces_left == 0) {
+    // Read first, so that the scene can be repaired (assimp's validation
+    // refuses what some importers leave behind) and the materials' projection
+    // mappings seen before UV generation rewrites them; then post-process.
+    const aiScene* s = importer.ReadFile(path, 0);
+    if (!s || !s->mRootNode) import_failed(path, importer);
+    const SceneRepair repair = repair_scene(const_cast<aiScene*>(s));
+    size_t dropped = repair.non_finite_vertices;
+    if (dropped > 0 && repair.faces_left == 0) {
       throw Error(path + ": the model has no finite vertices to render (all " +
                   std::to_string(dropped) + " vertices of its faces are inf or NaN)");
+    }
+    if (repair.meshes_left == 0) {
+      throw Error(path + ": the model has no triangles to render (" +
+                  (repair.empty_meshes == 0 ? std::string("the file holds no meshes")
+                   : repair.bad_faces == 0
+                       ? "its meshes have no faces: points only"
+                       : "none of its faces has valid vertex indices (" +
+                             std::to_string(repair.bad_faces) + " out of range or missing)") +
+                  ")");
+    }
+    if (repair.bad_faces > 0) {
+      warn(path + ": " + std::to_string(repair.bad_faces) +
+           " faces without vertex indices or with indices out of range dropped");
     }
     std::vector<char> box(s->mNumMaterials, 0);
     for (unsigned i = 0; i < s->mNumMaterials; ++i) box[i] = box_mapped(s->mMaterials[i]);
@@ -271,6 +216,16 @@ class AssimpScene final : public MeshSceneBase {
       throw Error(path + (dropped > 0 ? ": the model has no triangles left without its " +
                                             std::to_string(dropped) + " inf or NaN vertices"
                                       : ": the model has no triangles"));
+    }
+    double area = 0.0;
+    size_t triangles = 0;
+    for (const auto& part : parts) {
+      area += surface_area(part.first);
+      triangles += part.first.indices.size() / 3;
+    }
+    if (!(area > 0.0)) {
+      throw Error(path + ": every one of its " + std::to_string(triangles) +
+                  " triangles has zero area (collinear or coincident vertices): nothing to render");
     }
     if (dropped > 0) {
       warn(path + ": " + std::to_string(dropped) +

@@ -100,6 +100,19 @@ size_t repair_normals(MeshData& m) {
   return count;
 }
 
+double surface_area(const MeshData& m) {
+  double area = 0.0;
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    glm::dvec3 p[3];
+    for (int k = 0; k < 3; ++k) {
+      const Vertex& v = m.vertices[m.indices[t + static_cast<size_t>(k)]];
+      p[k] = glm::dvec3(v.px, v.py, v.pz);
+    }
+    area += 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+  }
+  return area;
+}
+
 void box_uvs(MeshData& m) {
   glm::vec3 lo(1e30f), hi(-1e30f);
   for (const Vertex& v : m.vertices) {

@@ -19,6 +19,9 @@ size_t drop_non_finite(MeshData& mesh);
 /// degenerate too). Returns how many normals were replaced.
 size_t repair_normals(MeshData& mesh);
 
+/// The summed area of the mesh's triangles (0 when every one is degenerate).
+double surface_area(const MeshData& mesh);
+
 /// Box-projected UVs (assimp leaves aiTextureMapping_BOX unimplemented):
 /// each vertex is projected along the axis its normal is closest to, onto
 /// the mesh's bounding box faces scaled to [0, 1].

@@ -239,3 +239,39 @@ TEST_F(Corpus, MemoryGuard) {
   EXPECT_NE(small.find("4.0 KiB"), std::string::npos) << small;
   EXPECT_EQ(message(std::string(FOVEATE_TEST_DATA) + "/models/sphere.ply", 64u << 20), "no error");
 }
+
+// What importers leave behind and assimp's validation would refuse is
+// repaired: a face with an index out of range is dropped with a warning (the
+// good quad still renders); an empty STL solid after a real one is ignored.
+TEST_F(Corpus, ImporterLeftoversRepaired) {
+  testing::internal::CaptureStderr();
+  auto ply = load_scene(kCorpus + "/bad_index.ply");
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("bad_index.ply: 1 faces without vertex indices or with indices out of range"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(ply->info().triangles, 2u);
+  EXPECT_GT(coverage(shade(*ply, View::full(W, H), W, H, 0.0)).pixels, W * H / 10);
+  auto stl = load_scene(kCorpus + "/empty_solid.stl");
+  EXPECT_EQ(stl->info().triangles, 2u);
+  EXPECT_GT(coverage(shade(*stl, View::full(W, H), W, H, 0.0)).pixels, W * H / 10);
+}
+
+// A model whose triangles all have zero area is an error that says so, not
+// an empty frame.
+TEST_F(Corpus, OnlyDegenerateTrianglesIsAnError) {
+  const std::string path = testing::TempDir() + "/collinear.obj";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("v 0 0 0\nv 1 2 3\nv -1 -2 -3\nf 1 2 3\n", f);
+    std::fclose(f);
+  }
+  try {
+    load_scene(path);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("zero area"), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
+}

@@ -214,6 +214,17 @@ def lwo_sphere(name, projection):
 for proj, kind in enumerate(["planar", "cylindrical", "spherical", "box"]):
     lwo_sphere(f"mapping_{kind}.lwo", proj)
 
+# What some importers leave behind and assimp's validation refuses: a face
+# with a vertex index out of range (next to a good one), and an STL with an
+# empty solid after a real one.
+write("bad_index.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+      "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n4 0 1 2 3\n3 0 2 7\n")
+write("empty_solid.stl", "solid quad\n" + "".join(
+    "  facet normal 0 0 1\n    outer loop\n" + "".join(f"      vertex {x} {y} 0\n" for x, y in tri) +
+    "    endloop\n  endfacet\n" for tri in [((-1, -1), (1, -1), (1, 1)), ((-1, -1), (1, 1), (-1, 1))]) +
+      "endsolid quad\nsolid empty\nendsolid empty\n")
+
 # A PLY whose header declares two billion vertices (the memory guard's case).
 write("huge_header.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
       "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
