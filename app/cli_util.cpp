@@ -1,5 +1,6 @@
 #include "cli_util.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +28,42 @@ AcuityModel acuity_from_options(const std::string& quality, std::optional<double
   if (slope) return AcuityModel::with_slope(*slope);
   if (!quality.empty()) return AcuityModel::quality(quality);
   return AcuityModel::quality("A");
+}
+
+std::uint64_t parse_byte_size(const std::string& text, const std::string& option) {
+  std::string t = text;
+  for (const char* suffix : {"iB", "B", "ib", "b"}) {
+    const std::string sfx(suffix);
+    if (t.size() > sfx.size() && t.compare(t.size() - sfx.size(), sfx.size(), sfx) == 0) {
+      t.resize(t.size() - sfx.size());
+      break;
+    }
+  }
+  double scale = 1.0;
+  if (!t.empty()) {
+    switch (std::toupper(static_cast<unsigned char>(t.back()))) {
+      case 'K':
+        scale = 1024.0;
+        break;
+      case 'M':
+        scale = 1024.0 * 1024;
+        break;
+      case 'G':
+        scale = 1024.0 * 1024 * 1024;
+        break;
+      case 'T':
+        scale = 1024.0 * 1024 * 1024 * 1024;
+        break;
+      default:
+        break;
+    }
+    if (scale > 1.0) t.pop_back();
+  }
+  double v = 0.0;
+  if (!parse_number(t, v) || !(v * scale >= 1.0) || !(v * scale < 1.8e19)) {
+    throw Error(option + ": expected a size in bytes such as 512M or 8G, got '" + text + "'");
+  }
+  return static_cast<std::uint64_t>(v * scale);
 }
 
 std::string fmt(double value, int digits) {

@@ -100,6 +100,11 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required) {
                   "Camera keyframes JSON (built-in and mesh scenes)");
   sub->add_option("--channel", a.channels,
                   "Image for iChannel0..3 of a Shadertoy shader (repeat, in order)");
+  sub->add_option("--up", a.up,
+                  "Up axis of a mesh file: y or z (default: the file's metadata, else y)");
+  sub->add_option("--model-memory-limit", a.model_memory_limit,
+                  "Refuse a mesh file whose declared size needs more memory than this to import "
+                  "(e.g. 512M, 8G; default half the machine's memory)");
   sub->add_option("--fps", a.fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")
       ->capture_default_str();
   sub->add_option("--time", a.time, "Scene time of the first frame in seconds")
@@ -111,6 +116,13 @@ SessionOptions to_session_options(const SessionArgs& a) {
   o.scene = a.scene;
   o.channels = a.channels;
   o.camera_path = a.camera_path;
+  if (!a.up.empty() && a.up != "y" && a.up != "z") {
+    throw Error("--up: expected y or z, got '" + a.up + "'");
+  }
+  o.up = a.up;
+  if (!a.model_memory_limit.empty()) {
+    o.model_memory_limit = parse_byte_size(a.model_memory_limit, "--model-memory-limit");
+  }
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
   o.acuity = acuity_from_options(a.quality, a.slope);
@@ -138,6 +150,8 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   SceneOptions so;
   so.channels = o.channels;
   so.camera_path = o.camera_path;
+  so.up = o.up;
+  so.model_memory_limit = o.model_memory_limit;
   scene_ = load_scene(o.scene, so);
   RendererOptions ro;
   ro.width = o.size.width;
@@ -183,6 +197,8 @@ std::unique_ptr<Reference> Session::make_reference(int factor) const {
   SceneOptions so;
   so.channels = options_.channels;
   so.camera_path = options_.camera_path;
+  so.up = options_.up;
+  so.model_memory_limit = options_.model_memory_limit;
   r->scene = load_scene(options_.scene, so);
   r->supersampled = with_flag(
       "--reference", [&] { return std::make_unique<SupersampledReference>(display_, factor); });

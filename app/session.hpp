@@ -36,6 +36,8 @@ struct SessionOptions {
   std::string scene = "raymarch";
   std::vector<std::string> channels;
   std::string camera_path;
+  std::string up;                        ///< mesh files: "y", "z" or "" (the file's)
+  std::uint64_t model_memory_limit = 0;  ///< mesh files: bytes; 0 = the default
   Size size{640, 360};
   std::string display = "desktop-1080p";
   AcuityModel acuity;
@@ -58,11 +60,13 @@ struct SessionArgs {
   std::string gaze;
   std::string camera_path;
   std::vector<std::string> channels;
+  std::string up;
+  std::string model_memory_limit;
   double fps = 60.0;
   double time = 0.0;
 };
 /// Registers --scene --size --display --quality --slope --param --gaze
-/// --camera-path --channel --fps --time on `sub`. `scene_required` makes
+/// --camera-path --channel --up --model-memory-limit --fps --time on `sub`. `scene_required` makes
 /// --scene mandatory (render).
 void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false);
 /// Checks the values and names the flag of any bad one.

@@ -12,16 +12,26 @@
 
 #include <stb/stb_image.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
+#include <optional>
+#include <set>
 
+#include "assimp_repair.hpp"
 #include "factories.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/image.hpp"
 #include "mesh_common.hpp"
+#include "model_files.hpp"
+#include "model_geometry.hpp"
 
 namespace foveate::detail {
 
@@ -35,8 +45,8 @@ Image decode_embedded(const aiTexture* t, const std::string& where) {
     unsigned char* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(t->pcData),
                                               static_cast<int>(t->mWidth), &w, &h, &n, 4);
     if (!px)
-      throw Error(where + ": an embedded texture cannot be decoded (" + stbi_failure_reason() +
-                  ")");
+      throw Error("the embedded image in " + where + " cannot be decoded (" +
+                  stbi_failure_reason() + ")");
     Image img(w, h);
     std::memcpy(img.rgba.data(), px, img.rgba.size());
     stbi_image_free(px);
@@ -52,28 +62,122 @@ Image decode_embedded(const aiTexture* t, const std::string& where) {
   return img;
 }
 
+void warn(const std::string& text) { std::fprintf(stderr, "foveate: warning: %s\n", text.c_str()); }
+
+std::string lower_ext(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Why the import failed, in words, even when assimp gives no reason.
+[[noreturn]] void import_failed(const std::string& path, const Assimp::Importer& importer) {
+  const std::string why = importer.GetErrorString();
+  if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos ||
+      why.find("mNumMeshes is 0") != std::string::npos) {
+    throw Error(path + ": the model has no triangles to render (" + why + ")");
+  }
+  if (!why.empty()) throw Error(path + ": cannot read the model: " + why);
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  const std::string ext = lower_ext(path);
+  const bool known = !ext.empty() && importer.IsExtensionSupported(ext);
+  throw Error(path + ": cannot read the model (the importer gave no reason; tried " +
+              (known ? "the importer for '" + ext + "' files"
+                     : std::string("every importer by content, as '") + ext +
+                           "' is not an extension assimp knows") +
+              " on " + std::to_string(size) + " bytes)");
+}
+
+// Whether the material's colour texture is box-projected (assimp's UV
+// generation leaves that mapping out).
+bool box_mapped(const aiMaterial* material) {
+  int mapping = aiTextureMapping_UV;
+  for (aiTextureType t : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
+    if (material->Get(AI_MATKEY_MAPPING(t, 0), mapping) == AI_SUCCESS) {
+      return mapping == aiTextureMapping_BOX;
+    }
+  }
+  return false;
+}
+
+// The file's up axis from its metadata (FBX and others set "UpAxis"), or
+// `override` ("y" or "z") when given.
+UpAxis up_axis_of(const aiScene* s, const std::string& override_up) {
+  if (override_up == "y") return {1, 1};
+  if (override_up == "z") return {2, 1};
+  UpAxis up;
+  if (!s->mMetaData) return up;
+  int axis = 1, sign = 1;
+  if (s->mMetaData->Get("UpAxis", axis) && axis >= 0 && axis <= 2) up.axis = axis;
+  if (s->mMetaData->Get("UpAxisSign", sign)) up.sign = sign < 0 ? -1 : 1;
+  return up;
+}
+
+// One turn around `centre` every 24 s at `distance`, from `start`.
+CameraPath orbit(glm::dvec3 centre, double distance, OrbitStart start, double fov) {
+  CameraPath p;
+  p.loop = true;
+  const int n = 8;
+  const double r = distance * std::cos(start.elevation), h = distance * std::sin(start.elevation);
+  for (int i = 0; i <= n; ++i) {
+    const double a = start.azimuth + 2.0 * 3.14159265358979 * i / n;
+    p.keys.push_back(
+        {24.0 * i / n, centre + glm::dvec3(r * std::sin(a), h, r * std::cos(a)), centre, fov});
+  }
+  return p;
+}
+
 class AssimpScene final : public MeshSceneBase {
  public:
   AssimpScene(const std::string& path, const SceneOptions& o)
       : MeshSceneBase(fs::path(path).filename().string(), "mesh file " + path, CameraPath{}) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw Error(path + ": is a directory, not a model file");
-    if (fs::file_size(path, ec) == 0) throw Error(path + ": the model file is empty");
+    if (!o.up.empty() && o.up != "y" && o.up != "z") {
+      throw Error("up axis '" + o.up + "': expected y or z");
+    }
+    check_model_file(path);
+    check_model_memory(path, o.model_memory_limit);
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* s = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                  aiProcess_PreTransformVertices | aiProcess_SortByPType |
-                  aiProcess_ValidateDataStructure);
-    if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
-      const std::string why = importer.GetErrorString();
-      if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos) {
-        throw Error(path + ": the model has no triangles to render (" + why + ")");
-      }
-      throw Error(path + ": cannot read the model: " + why);
+    // Read first, so that the scene can be repaired (assimp's validation
+    // refuses what some importers leave behind) and the materials' projection
+    // mappings seen before UV generation rewrites them; then post-process.
+    const aiScene* s = importer.ReadFile(path, 0);
+    if (!s || !s->mRootNode) import_failed(path, importer);
+    const SceneRepair repair = repair_scene(const_cast<aiScene*>(s));
+    size_t dropped = repair.non_finite_vertices;
+    if (dropped > 0 && repair.faces_left == 0) {
+      throw Error(path + ": the model has no finite vertices to render (all " +
+                  std::to_string(dropped) + " vertices of its faces are inf or NaN)");
     }
-    glm::vec3 lo(1e30f), hi(-1e30f);
+    if (repair.meshes_left == 0) {
+      throw Error(path + ": the model has no triangles to render (" +
+                  (repair.empty_meshes == 0 ? std::string("the file holds no meshes")
+                   : repair.bad_faces == 0
+                       ? "its meshes have no faces: points only"
+                       : "none of its faces has valid vertex indices (" +
+                             std::to_string(repair.bad_faces) + " out of range or missing)") +
+                  ")");
+    }
+    if (repair.bad_faces > 0) {
+      warn(path + ": " + std::to_string(repair.bad_faces) +
+           " faces without vertex indices or with indices out of range dropped");
+    }
+    std::vector<char> box(s->mNumMaterials, 0);
+    for (unsigned i = 0; i < s->mNumMaterials; ++i) box[i] = box_mapped(s->mMaterials[i]);
+    s = importer.ApplyPostProcessing(
+        aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+        aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_GenUVCoords |
+        aiProcess_TransformUVCoords | aiProcess_ValidateDataStructure);
+    if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
+      import_failed(path, importer);
+    }
+    const UpAxis up = up_axis_of(s, o.up);
+    size_t repaired = 0;
+    ShapeStats shape;
+    std::vector<std::pair<MeshData, unsigned>> parts;
     for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
       const aiMesh* am = s->mMeshes[mi];
       if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || am->mNumFaces == 0) continue;
@@ -85,31 +189,63 @@ class AssimpScene final : public MeshSceneBase {
         if (am->mNormals)
           x.nx = am->mNormals[v].x, x.ny = am->mNormals[v].y, x.nz = am->mNormals[v].z;
         else
-          x.nx = 0, x.ny = 1, x.nz = 0;
+          x.nx = x.ny = x.nz = 0;  // repaired below
         if (am->mTextureCoords[0])
           x.u = am->mTextureCoords[0][v].x, x.v = am->mTextureCoords[0][v].y;
         else
           x.u = x.v = 0;
-        lo = glm::min(lo, glm::vec3(x.px, x.py, x.pz));
-        hi = glm::max(hi, glm::vec3(x.px, x.py, x.pz));
+        if (!std::isfinite(x.u) || !std::isfinite(x.v)) x.u = x.v = 0;
       }
       for (unsigned f = 0; f < am->mNumFaces; ++f) {
         if (am->mFaces[f].mNumIndices != 3) continue;
         for (int k = 0; k < 3; ++k) d.indices.push_back(am->mFaces[f].mIndices[k]);
       }
+      dropped += drop_non_finite(d);  // e.g. from a node transform with inf
       if (d.indices.empty()) continue;
+      repaired += repair_normals(d);
+      if (am->mMaterialIndex < box.size() && box[am->mMaterialIndex] &&
+          std::all_of(d.vertices.begin(), d.vertices.end(),
+                      [](const Vertex& x) { return x.u == 0.0f && x.v == 0.0f; })) {
+        box_uvs(d);  // assimp leaves them zero
+      }
+      make_y_up(d, up);
+      shape.add(d);
+      parts.emplace_back(std::move(d), am->mMaterialIndex);
+    }
+    if (parts.empty()) {
+      throw Error(path + (dropped > 0 ? ": the model has no triangles left without its " +
+                                            std::to_string(dropped) + " inf or NaN vertices"
+                                      : ": the model has no triangles"));
+    }
+    double area = 0.0;
+    size_t triangles = 0;
+    for (const auto& part : parts) {
+      area += surface_area(part.first);
+      triangles += part.first.indices.size() / 3;
+    }
+    if (!(area > 0.0)) {
+      throw Error(path + ": every one of its " + std::to_string(triangles) +
+                  " triangles has zero area (collinear or coincident vertices): nothing to render");
+    }
+    if (dropped > 0) {
+      warn(path + ": " + std::to_string(dropped) +
+           " vertices with an inf or NaN coordinate dropped, with the triangles that use them");
+    }
+    for (auto& [d, material_index] : parts) {
       meshes_.push_back(upload_mesh(d, 3));
-      materials_.push_back(material(s, am->mMaterialIndex, path));
+      materials_.push_back(material(s, material_index, path));
       full_triangles_ += d.indices.size() / 3;
     }
-    if (meshes_.empty()) throw Error(path + ": the model has no triangles");
+    (void)repaired;  // a file without normals is ordinary: no warning
+    const glm::vec3 lo = shape.lo(), hi = shape.hi();
     const glm::vec3 centre = 0.5f * (lo + hi);
     scene_radius_ = std::max(1e-4f, 0.5f * glm::length(hi - lo));
-    // Framed automatically: an orbit that keeps the bounding sphere in view.
+    // Framed automatically: an orbit that keeps the bounding sphere in view,
+    // starting from above the model's dominant plane when it is flat.
     const double fov = 45.0;
     const double dist = scene_radius_ / std::sin(0.5 * fov * 3.14159265358979 / 180.0) * 1.1;
     camera_ = o.camera_path.empty()
-                  ? CameraPath::orbit(glm::dvec3(centre), dist, 0.35 * dist, 24.0, fov)
+                  ? orbit(glm::dvec3(centre), dist, default_orbit_start(shape.plane_normal()), fov)
                   : CameraPath::load(o.camera_path);
     for (int i = 0; i < 6; ++i) {
       const float a = static_cast<float>(i) * 1.0472f;
@@ -164,33 +300,47 @@ class AssimpScene final : public MeshSceneBase {
       m.gloss = std::clamp(shininess / 256.0f, 0.0f, 1.0f);
     }
     aiString tex;
-    if (am->GetTexture(aiTextureType_BASE_COLOR, 0, &tex) == AI_SUCCESS ||
-        am->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS) {
-      const std::string name = tex.C_Str();
-      auto it = textures_.find(name);
-      if (it == textures_.end()) {
-        Image img;
-        if (const aiTexture* emb = s->GetEmbeddedTexture(tex.C_Str())) {
-          img = decode_embedded(emb, path);
-        } else {
-          const fs::path file = fs::path(path).parent_path() / name;
-          try {
-            img = read_image(file.string());
-          } catch (const Error& e) {
-            throw Error(path + ": texture '" + name + "': " + e.what());
-          }
-        }
-        it = textures_.emplace(name, texture_from_image(img)).first;
-      }
-      m.texture = &it->second;
-      m.base_color = glm::max(m.base_color, glm::vec3(0.0f));
+    if (am->GetTexture(aiTextureType_BASE_COLOR, 0, &tex) != AI_SUCCESS &&
+        am->GetTexture(aiTextureType_DIFFUSE, 0, &tex) != AI_SUCCESS) {
+      return m;
     }
+    const std::string name = tex.C_Str();
+    if (trim_texture_name(name).empty()) return m;  // an empty name: no texture
+    auto it = textures_.find(name);
+    if (it == textures_.end()) {
+      std::optional<gpu::Texture> t;
+      try {
+        t = texture_from_image(load_texture(s, name, path));
+      } catch (const Error& e) {
+        aiString material_name;
+        am->Get(AI_MATKEY_NAME, material_name);
+        warn(path + ": material '" + material_name.C_Str() + "': texture '" + name +
+             "' cannot be used (" + e.what() + "); the material's base colour is used instead");
+      }
+      it = textures_.emplace(name, std::move(t)).first;
+    }
+    if (it->second) m.texture = &*it->second;
     return m;
+  }
+
+  // The image of texture `name`: embedded ("*0" in glTF/GLB, or by file name)
+  // or a file found as find_texture() describes.
+  static Image load_texture(const aiScene* s, const std::string& name, const std::string& path) {
+    if (const aiTexture* emb = s->GetEmbeddedTexture(name.c_str())) {
+      return decode_embedded(emb, path);
+    }
+    if (!name.empty() && name[0] == '*') {
+      throw Error("the embedded texture " + name + " is not in the file");
+    }
+    std::string tried;
+    const auto file = find_texture(fs::path(path).parent_path(), name, tried);
+    if (!file) throw Error("not found; looked for " + tried);
+    return read_image(file->string());
   }
 
   std::vector<GpuMesh> meshes_;
   std::vector<Material> materials_;
-  std::map<std::string, gpu::Texture> textures_;
+  std::map<std::string, std::optional<gpu::Texture>> textures_;  // empty: unusable
   glm::vec4 lights_[6];
   glm::vec3 light_colors_[6];
   glm::vec3 centre_{0.0f};

@@ -139,6 +139,12 @@ std::vector<SceneListing> builtin_scenes();
 struct SceneOptions {
   std::vector<std::string> channels;  ///< iChannel0..3 image files (Shadertoy scenes)
   std::string camera_path;            ///< keyframes JSON; empty = the scene's default
+  /// Mesh files: "y" or "z" overrides the up axis; empty = the file's
+  /// metadata (assimp's UpAxis), else Y.
+  std::string up;
+  /// Mesh files: refuse a model whose declared size would need more bytes
+  /// than this to import; 0 = half the machine's memory.
+  std::uint64_t model_memory_limit = 0;
 };
 
 /// A built-in scene by name, or a file: .glsl/.frag (Shadertoy) or a mesh file
