@@ -11,6 +11,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "process_stats.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -25,12 +26,18 @@ struct RenderArgs {
   std::string mouse;
   std::string reference = "native";
   bool overlay = false;
+  bool no_write = false;
+  int stats_every = 0;
   RenderArgs() { session.size = "640x360"; }
 };
 
 void run_render(const RenderArgs& a) {
   if (a.frames < 1 || a.frames > 100000)
     throw Error("--frames: expected 1..100000, got " + std::to_string(a.frames));
+  if (a.out.empty() && !a.no_write) throw CLI::RequiredError("--out");
+  if (a.stats_every < 0) {
+    throw Error("--stats: expected a frame interval >= 0, got " + std::to_string(a.stats_every));
+  }
   SessionOptions o = to_session_options(a.session);
   if (!a.mouse.empty()) {
     o.mouse_px = parse_point(a.mouse, o.size.width, o.size.height, "--mouse");
@@ -40,7 +47,7 @@ void run_render(const RenderArgs& a) {
   const int reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   const ParamArgs params = parse_params(a.session.params);
   validate_params(params, {a.technique});
-  std::filesystem::create_directories(a.out);
+  if (!a.no_write) std::filesystem::create_directories(a.out);
   Session session(o, a.session.gaze);
   Renderer& renderer = session.renderer();
   renderer.set_overlay(a.overlay);
@@ -53,6 +60,15 @@ void run_render(const RenderArgs& a) {
     const FrameStats s = renderer.render(*technique, k, gaze);
     shaded += s.shaded_pixels;
     native += s.native_pixels;
+    if (a.stats_every > 0 && (k % a.stats_every == 0 || k + 1 == a.frames)) {
+      std::cerr << process_stats_line(k) << std::endl;
+    }
+    if (a.no_write) {
+      // Read back as a written run would (the readback is part of the frame's cost).
+      (void)renderer.read_output();
+      if (supersampled) (void)supersampled->render(renderer.frame_input(k));
+      continue;
+    }
     char name[64];
     std::snprintf(name, sizeof name, "frame-%04d.png", k);
     write_png((std::filesystem::path(a.out) / name).string(), renderer.read_output());
@@ -63,8 +79,8 @@ void run_render(const RenderArgs& a) {
     }
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
-            << a.technique << " at " << o.size.width << 'x' << o.size.height << " to " << a.out
-            << "/\n";
+            << a.technique << " at " << o.size.width << 'x' << o.size.height
+            << (a.no_write ? std::string(" (not written)") : " to " + a.out + "/") << "\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
             << fmt(100.0 * shaded / native, 1) << " % of native)\n"
             << session.gaze().report() << "\n";
@@ -80,7 +96,14 @@ void register_render(CLI::App& app) {
   sub->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
   sub->add_option("--mouse", a->mouse,
                   "Shadertoy iMouse position X,Y (pixels or normalized), button down");
-  sub->add_option("--out", a->out, "Output directory (frame-0000.png, ...)")->required();
+  sub->add_option("--out", a->out,
+                  "Output directory (frame-0000.png, ...); required unless --no-write");
+  sub->add_flag("--no-write", a->no_write,
+                "Render (and read back) without writing PNG files: soak and leak tests");
+  sub->add_option("--stats", a->stats_every,
+                  "Every N frames (and after the last), print to stderr the process's resident "
+                  "memory, heap in use and live GL objects per type (0 = off)")
+      ->capture_default_str();
   sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
       ->capture_default_str();
   sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");
