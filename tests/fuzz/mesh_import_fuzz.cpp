@@ -24,10 +24,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // assimp also sniffs the content.
   static const char* const kHints[] = {"obj", "ply", "gltf", "glb", "stl", "off"};
   const char* hint = kHints[data[0] % (sizeof kHints / sizeof *kHints)];
-  Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
-                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* s = importer.ReadFileFromMemory(
+  // One importer for every input (building one registers every format and
+  // costs more than most imports); each ReadFile frees the previous scene.
+  static Assimp::Importer* const importer = [] {
+    auto* i = new Assimp::Importer();
+    i->SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    return i;
+  }();
+  const aiScene* s = importer->ReadFileFromMemory(
       data + 1, size - 1,
       aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
           aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure,
