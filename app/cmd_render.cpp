@@ -11,6 +11,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "process_stats.hpp"
 #include "session.hpp"
 #include "video.hpp"
 
@@ -28,12 +29,17 @@ struct RenderArgs {
   bool overlay = false;
   std::string video;
   bool side_by_side = false;
+  bool no_write = false;
+  int stats_every = 0;
   RenderArgs() { session.size = "640x360"; }
 };
 
 void run_render(const RenderArgs& a) {
   if (a.frames < 1 || a.frames > 100000)
     throw Error("--frames: expected 1..100000, got " + std::to_string(a.frames));
+  if (a.stats_every < 0) {
+    throw Error("--stats: expected a frame interval >= 0, got " + std::to_string(a.stats_every));
+  }
   SessionOptions o = to_session_options(a.session);
   if (!a.mouse.empty()) {
     o.mouse_px = parse_point(a.mouse, o.size.width, o.size.height, "--mouse");
@@ -43,10 +49,11 @@ void run_render(const RenderArgs& a) {
   const int reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   const ParamArgs params = parse_params(a.session.params);
   validate_params(params, {a.technique});
-  if (a.out.empty() && a.video.empty()) throw CLI::RequiredError("--out or --video");
+  if (a.out.empty() && a.video.empty() && !a.no_write)
+    throw CLI::RequiredError("--out, --video or --no-write");
   if (reference > 1 && a.out.empty())
     throw Error("--reference: the reference frames are PNG files; give --out DIR too");
-  if (!a.out.empty()) {
+  if (!a.out.empty() && !a.no_write) {
     std::error_code ec;
     std::filesystem::create_directories(a.out, ec);
     if (ec) throw Error("--out: cannot create the folder " + a.out + ": " + ec.message());
@@ -77,9 +84,17 @@ void run_render(const RenderArgs& a) {
     const FrameStats s = renderer.render(*technique, k, gaze);
     shaded += s.shaded_pixels;
     native_pixels += s.native_pixels;
+    if (a.stats_every > 0 && (k % a.stats_every == 0 || k + 1 == a.frames)) {
+      std::cerr << process_stats_line(k) << std::endl;
+    }
     Image image = renderer.read_output();
+    if (a.no_write && !video) {
+      // Read back as a written run would (the readback is part of the frame's cost).
+      if (supersampled) (void)supersampled->render(renderer.frame_input(k));
+      continue;
+    }
     char name[64];
-    if (!a.out.empty()) {
+    if (!a.out.empty() && !a.no_write) {
       std::snprintf(name, sizeof name, "frame-%04d.png", k);
       write_png((std::filesystem::path(a.out) / name).string(), image);
     }
@@ -90,7 +105,7 @@ void run_render(const RenderArgs& a) {
     } else if (video) {
       video->write(image);
     }
-    if (supersampled) {
+    if (supersampled && !a.no_write) {
       std::snprintf(name, sizeof name, "reference-%04d.png", k);
       write_png((std::filesystem::path(a.out) / name).string(),
                 supersampled->render(renderer.frame_input(k)));
@@ -101,8 +116,9 @@ void run_render(const RenderArgs& a) {
     std::cerr << video_summary(*video, o.fps) << "\n";
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
-            << a.technique << " at " << o.size.width << 'x' << o.size.height << " to "
-            << (a.out.empty() ? a.video : a.out + "/" + (a.video.empty() ? "" : " and " + a.video))
+            << a.technique << " at " << o.size.width << 'x' << o.size.height
+            << (a.out.empty() ? (a.video.empty() ? std::string(" (not written)") : " to " + a.video)
+                              : " to " + a.out + "/" + (a.video.empty() ? "" : " and " + a.video))
             << "\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
             << fmt(100.0 * shaded / native_pixels, 1) << " % of native)\n"
@@ -120,7 +136,14 @@ void register_render(CLI::App& app) {
   sub->add_option("--mouse", a->mouse,
                   "Shadertoy iMouse position X,Y (pixels or normalized), button down");
   sub->add_option("--out", a->out,
-                  "Output directory (frame-0000.png, ...); required unless --video is given");
+                  "Output directory (frame-0000.png, ...); required unless --video or --no-write "
+                  "is given");
+  sub->add_flag("--no-write", a->no_write,
+                "Render (and read back) without writing PNG files: soak and leak tests");
+  sub->add_option("--stats", a->stats_every,
+                  "Every N frames (and after the last), print to stderr the process's resident "
+                  "memory, heap in use and live GL objects per type (0 = off)")
+      ->capture_default_str();
   sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
       ->capture_default_str();
   sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config clang-format
+  build-essential cmake ninja-build pkg-config clang-format clang-15 libfuzzer-15-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libepoxy-dev
   libglfw3-dev libglm-dev libcli11-dev nlohmann-json3-dev libstb-dev libpng-dev
   libassimp-dev libmeshoptimizer-dev

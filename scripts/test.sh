@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine, builds foveate (debug, warnings as
 # errors), checks that the installed package works for programs outside the
-# tree (find_package(foveate)), and runs every test with CTest.
+# tree (find_package(foveate)), runs every test with CTest, then builds the
+# fuzz targets and runs each for a short fixed time (scripts/fuzz.sh;
+# FOVEATE_FUZZ_SECONDS per target, default 10).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -23,3 +25,7 @@ cmake --build build/own_renderer >/dev/null
 echo "installed package: consumer and own_renderer built with find_package(foveate) and ran"
 
 ctest --preset debug -j "$jobs"
+
+# Every parser of user data under libFuzzer (ASan + UBSan) for a short while:
+# about 1 min of build and 10 s per target.
+bash scripts/fuzz.sh "${FOVEATE_FUZZ_SECONDS:-10}"

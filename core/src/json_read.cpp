@@ -84,6 +84,14 @@ nlohmann::json parse_json(const std::string& text, const std::string& where) {
   } catch (const nlohmann::json::parse_error& e) {
     throw Error(where + ": invalid JSON at byte " + std::to_string(e.byte) + ": " +
                 std::string(e.what()).substr(std::string(e.what()).find(':') + 2));
+  } catch (const nlohmann::json::exception& e) {
+    // Not a syntax error but a value the parser cannot hold, e.g. a number
+    // beyond the range of a double ("1e999": out_of_range.406).
+    const std::string what = e.what();
+    const auto bracket = what.find("] ");
+    throw Error(where + ": invalid JSON: " +
+                (bracket == std::string::npos ? what : what.substr(bracket + 2)) +
+                (e.id == 406 ? " (numbers must fit in a double)" : ""));
   }
 }
 

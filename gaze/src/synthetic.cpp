@@ -305,8 +305,30 @@ struct SyntheticViewer::Impl {
     }
   }
 
+  // Only the behaviour around the latest query is kept: a render asks for the
+  // gaze frame by frame, and a history kept whole grew by ~30 bytes a frame
+  // (a fixation's drift path is ~400 bytes). The generator's state is the RNG
+  // alone, so dropping old segments does not change what comes next, and a
+  // query before what is kept regenerates from the seed (same result).
+  static constexpr size_t kPruneAt = 64;  ///< segments kept before pruning
+  static constexpr double kKeepS = 10.0;  ///< behaviour kept before the latest query
+
+  void restart() {
+    segments.clear();
+    rng.seed(o.seed);
+  }
+
+  void prune(double t) {
+    if (segments.size() <= kPruneAt) return;
+    auto keep = std::find_if(segments.begin(), segments.end() - 1,
+                             [&](const Segment& s) { return s.m.end_s >= t - kKeepS; });
+    segments.erase(segments.begin(), keep);
+  }
+
   const Segment& segment_at(double t) {
+    if (!segments.empty() && t < segments.front().m.start_s) restart();
     generate_until(t);
+    prune(t);
     auto it = std::upper_bound(segments.begin(), segments.end(), t,
                                [](double x, const Segment& s) { return x < s.m.start_s; });
     return it == segments.begin() ? segments.front() : *(it - 1);
@@ -367,9 +389,12 @@ GazeSample SyntheticViewer::sample(double t_s) {
 }
 
 std::vector<Movement> SyntheticViewer::movements_until(double t_s) {
-  impl_->generate_until(t_s);
+  // From the start on a generator of its own (the viewer keeps only the
+  // recent behaviour); the same seed gives the same movements.
+  Impl all(impl_->display, impl_->o);
+  all.generate_until(t_s);
   std::vector<Movement> out;
-  for (const Segment& s : impl_->segments) {
+  for (const Segment& s : all.segments) {
     if (s.m.start_s >= t_s) break;
     out.push_back(s.m);
     for (const Micro& m : s.micro) {

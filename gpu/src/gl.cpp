@@ -1,21 +1,86 @@
 #include "foveate/gpu/gl.hpp"
 
+#include <atomic>
 #include <cstdio>
 
 #include "foveate/core/error.hpp"
 
 namespace foveate::gpu {
 
+namespace {
+// Live objects per type, in the order of GlObjectCounts.
+enum Kind {
+  kBuffer,
+  kTexture,
+  kFramebuffer,
+  kRenderbuffer,
+  kVertexArray,
+  kProgram,
+  kShader,
+  kQuery
+};
+std::atomic<long> g_live[kQuery + 1];
+
+void freed(Kind k) { g_live[k].fetch_sub(1, std::memory_order_relaxed); }
+}  // namespace
+
 namespace detail {
-void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
-void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
-void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-void delete_renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
-void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
-void delete_program(GLuint id) { glDeleteProgram(id); }
-void delete_shader(GLuint id) { glDeleteShader(id); }
-void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+void delete_buffer(GLuint id) {
+  glDeleteBuffers(1, &id);
+  freed(kBuffer);
+}
+void delete_texture(GLuint id) {
+  glDeleteTextures(1, &id);
+  freed(kTexture);
+}
+void delete_framebuffer(GLuint id) {
+  glDeleteFramebuffers(1, &id);
+  freed(kFramebuffer);
+}
+void delete_renderbuffer(GLuint id) {
+  glDeleteRenderbuffers(1, &id);
+  freed(kRenderbuffer);
+}
+void delete_vertex_array(GLuint id) {
+  glDeleteVertexArrays(1, &id);
+  freed(kVertexArray);
+}
+void delete_program(GLuint id) {
+  glDeleteProgram(id);
+  freed(kProgram);
+}
+void delete_shader(GLuint id) {
+  glDeleteShader(id);
+  freed(kShader);
+}
+void delete_query(GLuint id) {
+  glDeleteQueries(1, &id);
+  freed(kQuery);
+}
+
+void count_created(void (*deleter)(GLuint)) {
+  static void (*const kDeleters[])(GLuint) = {
+      delete_buffer,       delete_texture, delete_framebuffer, delete_renderbuffer,
+      delete_vertex_array, delete_program, delete_shader,      delete_query};
+  for (int k = 0; k <= kQuery; ++k) {
+    if (kDeleters[k] == deleter) g_live[k].fetch_add(1, std::memory_order_relaxed);
+  }
+}
 }  // namespace detail
+
+GlObjectCounts live_gl_objects() {
+  auto n = [](Kind k) { return g_live[k].load(std::memory_order_relaxed); };
+  GlObjectCounts c;
+  c.buffers = n(kBuffer);
+  c.textures = n(kTexture);
+  c.framebuffers = n(kFramebuffer);
+  c.renderbuffers = n(kRenderbuffer);
+  c.vertex_arrays = n(kVertexArray);
+  c.programs = n(kProgram);
+  c.shaders = n(kShader);
+  c.queries = n(kQuery);
+  return c;
+}
 
 Buffer Buffer::create(GLsizeiptr size, const void* data, GLbitfield flags) {
   GLuint id = 0;

@@ -11,6 +11,8 @@
 namespace foveate {
 
 namespace {
+constexpr double kMaxCoordinate = 1e12;
+
 glm::dvec3 catmull_rom(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2,
                        const glm::dvec3& p3, double u) {
   const double u2 = u * u, u3 = u2 * u;
@@ -26,7 +28,11 @@ glm::dvec3 read_vec3(JsonReader& r, const char* key, glm::dvec3 fallback) {
   for (int i = 0; i < 3; ++i) {
     if (!(*v)[i].is_number()) throw Error(r.path(key) + ": expected numbers");
     out[i] = (*v)[i].get<double>();
-    if (!std::isfinite(out[i])) throw Error(r.path(key) + ": must be finite");
+    // Bounded so that the spline through the keyframes stays finite.
+    if (!std::isfinite(out[i]) || std::fabs(out[i]) > kMaxCoordinate) {
+      throw Error(r.path(key) + ": coordinates must be finite and within +-1e12, got " +
+                  (*v)[i].dump());
+    }
   }
   return out;
 }

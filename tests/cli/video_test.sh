@@ -102,6 +102,6 @@ check "...and nothing is left in the video's folder" '[[ -z "$(ls -A "$tmp/v")" 
 err=$("$FOVEATE" render --scene cheap --size 32x32 --side-by-side --out "$tmp/x" 2>&1); rc=$?
 check "--side-by-side without --video is a usage error" '[[ $rc -ne 0 && $rc -ne 1 && $rc -ne 3 && "$err" == *"--video"* ]]'
 err=$("$FOVEATE" render --scene cheap --size 32x32 2>&1); rc=$?
-check "render without --out or --video is a usage error" '[[ $rc -ne 0 && $rc -ne 1 && $rc -ne 3 && "$err" == *"--out or --video"* ]]'
+check "render without --out, --video or --no-write is a usage error" '[[ $rc -ne 0 && $rc -ne 1 && $rc -ne 3 && "$err" == *"--out, --video or --no-write"* ]]'
 
 exit $fail

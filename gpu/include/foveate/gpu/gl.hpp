@@ -9,12 +9,19 @@
 
 namespace foveate::gpu {
 
+namespace detail {
+/// Counts one more live object of the type `deleter` frees (see live_gl_objects).
+void count_created(void (*deleter)(GLuint));
+}  // namespace detail
+
 /// Owns one GL object name; `Deleter` frees it.
 template <void (*Deleter)(GLuint)>
 class Handle {
  public:
   Handle() = default;
-  explicit Handle(GLuint id) : id_(id) {}
+  explicit Handle(GLuint id) : id_(id) {
+    if (id_) detail::count_created(Deleter);
+  }
   ~Handle() { reset(); }
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
@@ -126,6 +133,19 @@ class Query : public Handle<detail::delete_query> {
  private:
   using Handle::Handle;
 };
+
+/// GL objects alive now, per type, as counted by the wrappers above (objects
+/// made with raw GL calls are not seen): a debug aid for leak hunting
+/// (`foveate render --stats`, scripts/soak.sh).
+struct GlObjectCounts {
+  long buffers = 0, textures = 0, framebuffers = 0, renderbuffers = 0, vertex_arrays = 0,
+       programs = 0, shaders = 0, queries = 0;
+  [[nodiscard]] long total() const {
+    return buffers + textures + framebuffers + renderbuffers + vertex_arrays + programs + shaders +
+           queries;
+  }
+};
+GlObjectCounts live_gl_objects();
 
 /// Human-readable name of a GL error or enum, for messages.
 std::string gl_enum_name(GLenum e);
