@@ -47,6 +47,13 @@ struct BenchOptions {
   bool passes = false;
   Sweep sweep;
   std::string command_line;
+  /// Leave out the techniques the scene cannot run (the default list) instead
+  /// of refusing them.
+  bool skip_unfit = false;
+  /// A live gaze source (pupil) that does not answer within connect_timeout_s
+  /// is an error unless this is set; then the fallback gaze is measured.
+  bool allow_fallback = false;
+  double connect_timeout_s = 3.0;
 };
 
 struct TechniqueResult {
@@ -68,6 +75,8 @@ struct TechniqueResult {
   /// and with --no-metrics.
   std::optional<metrics::QualitySummary> metrics;
   Image sample;  ///< last frame, for the report
+  std::vector<OverlayShape>
+      overlay;  ///< the technique's layers or regions at the last frame's gaze
   Image heatmap;
   Image acuity_heatmap;
 };
@@ -84,11 +93,15 @@ struct BenchResult {
   Image reference_sample;  ///< the supersampled reference's last frame (empty when native is)
   Vec2d sample_gaze_px;
   std::string gaze_report;
+  std::vector<std::string> skipped;  ///< techniques left out of the default list, with the reason
+  bool gaze_fallback = false;        ///< the live gaze source never answered (--allow-fallback)
 };
 
 BenchResult run_bench(const BenchOptions& options);
 /// Writes results.json, results.csv, results.md and report.html into options.out.
 void write_bench_outputs(const BenchResult& result);
 std::string bench_markdown(const BenchResult& result);
+/// results.json's text.
+std::string bench_json(const BenchResult& result);
 
 }  // namespace foveate::app

@@ -469,11 +469,13 @@ std::string bench_markdown(const BenchResult& b) {
   return s.str();
 }
 
+std::string bench_json(const BenchResult& b) { return to_json(b).dump(2); }
+
 void write_bench_outputs(const BenchResult& b) {
   namespace fs = std::filesystem;
   fs::create_directories(b.options.out);
   const fs::path dir(b.options.out);
-  write_file_atomic((dir / "results.json").string(), to_json(b).dump(2) + "\n");
+  write_file_atomic((dir / "results.json").string(), bench_json(b) + "\n");
   write_file_atomic((dir / "results.csv").string(), csv(b));
   write_file_atomic((dir / "results.md").string(), bench_markdown(b));
   write_file_atomic((dir / "report.html").string(), html(b));

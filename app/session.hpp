@@ -36,7 +36,7 @@ struct SessionOptions {
   std::string scene = "raymarch";
   std::vector<std::string> channels;
   std::string camera_path;
-  Size size{640, 360};
+  Size size{1920, 1080};
   std::string display = "desktop-1080p";
   AcuityModel acuity;
   double fps = 60.0;  ///< the fixed clock: frame k is at time start + k / fps
@@ -50,7 +50,7 @@ struct SessionOptions {
 /// The options every rendering command has, as typed on the command line.
 struct SessionArgs {
   std::string scene = "raymarch";
-  std::string size;
+  std::string size = kDefaultSize;
   std::string display = "desktop-1080p";
   std::string quality;
   std::optional<double> slope;

@@ -1,0 +1,53 @@
+#include "progress.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "cli_util.hpp"
+
+namespace foveate::app {
+
+Progress::Progress(std::string what, std::string unit, int total, bool enabled)
+    : what_(std::move(what)),
+      unit_(std::move(unit)),
+      total_(std::max(total, 0)),
+      enabled_(enabled && !quiet()),
+      tty_(isatty(2) != 0),
+      t0_(std::chrono::steady_clock::now()) {}
+
+void Progress::step(const std::string& detail) {
+  ++done_;
+  if (!enabled_ || finished_) return;
+  const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  const double left = done_ > 0 ? el / done_ * std::max(total_ - done_, 0) : 0.0;
+  const int percent = total_ > 0 ? std::min(100, 100 * done_ / total_) : 100;
+  if (tty_) {
+    const int width = 30, filled = total_ > 0 ? std::min(width, width * done_ / total_) : width;
+    std::fprintf(stderr, "\r%s [%s%s] %3d%% %d/%d  %s left  %-28.28s", what_.c_str(),
+                 std::string(size_t(filled), '#').c_str(),
+                 std::string(size_t(width - filled), '.').c_str(), percent, done_, total_,
+                 format_duration(left).c_str(), detail.c_str());
+  } else if (done_ < total_ && (verbose() || done_ % std::max(1, total_ / 10) == 0)) {
+    std::fprintf(stderr, "%s: %d/%d %s, %s elapsed, about %s left\n", what_.c_str(), done_, total_,
+                 unit_.c_str(), format_duration(el).c_str(), format_duration(left).c_str());
+  }
+  if (done_ >= total_) {
+    finish();
+  } else {
+    std::fflush(stderr);
+  }
+}
+
+void Progress::finish() {
+  if (!enabled_ || finished_) return;
+  finished_ = true;
+  const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  if (tty_) std::fprintf(stderr, "\n");
+  std::fprintf(stderr, "%s: %d/%d %s done in %s\n", what_.c_str(), done_, total_, unit_.c_str(),
+               format_duration(el).c_str());
+  std::fflush(stderr);
+}
+
+}  // namespace foveate::app
