@@ -58,7 +58,7 @@ std::string report_html(const BenchResult& b) {
     << fmt(b.environment.load_start[0], 2) << " (1 min) at the start, "
     << fmt(b.environment.load_end[0], 2) << " at the end.</p>\n";
   for (const std::string& s : b.skipped)
-    h << "<p class=note>Not measured: " << escape_html(s) << ".</p>\n";
+    h << "<p class=note>Left out of the default list: " << escape_html(s) << ".</p>\n";
   if (b.gaze_fallback)
     h << "<p class=warn>The live gaze source never answered: every frame used the fallback gaze "
          "(--allow-fallback).</p>\n";
