@@ -225,6 +225,7 @@ BenchResult run_bench(const BenchOptions& o) {
   if (o.image_metrics) judged_runs = static_cast<int>(runs.size()) - (reference ? 0 : 1);
   const int total = static_cast<int>(runs.size()) * (o.frames + warmup) + judged_runs * o.frames;
   Progress progress("bench", "steps", total, o.progress);
+  progress.expect("metrics", judged_runs * o.frames);
   gpu::FrameTimer timer;
   std::optional<gpu::PassProfiler> profiler;
   if (o.passes) profiler.emplace();
@@ -279,7 +280,7 @@ BenchResult run_bench(const BenchOptions& o) {
       const bool judged = o.image_metrics && (idx != 0 || reference);
       if (judged) {
         r.series->add(reference_image, img, g.gaze_px);
-        progress.step("metrics " + r.technique);
+        progress.step("metrics " + r.technique, "metrics");
       }
       if (k + 1 == o.frames) {
         if (judged) {

@@ -124,6 +124,7 @@ void register_bench(CLI::App& app) {
   sub->add_option("--sweep", a->sweep, "Sweep KEY=FROM:TO:STEP (slope, or a technique parameter)");
   sub->callback([a] {
     const BenchResult r = run_bench(to_options(*a, "foveate bench"));
+    if (!quiet() && !a->json) std::cerr << "bench: writing the report" << std::endl;
     write_bench_outputs(r);
     print_summary(r, a->json);
   });
@@ -146,6 +147,7 @@ void register_demo(CLI::App& app) {
                 << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
                 << ", display " << a->session.display << " at " << a->session.size << std::endl;
     const BenchResult r = run_bench(to_options(*a, "foveate demo"));
+    if (!quiet() && !a->json) std::cerr << "demo: writing the report" << std::endl;
     write_bench_outputs(r);
     print_summary(r, a->json);
   });

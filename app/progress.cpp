@@ -15,13 +15,41 @@ Progress::Progress(std::string what, std::string unit, int total, bool enabled)
       total_(std::max(total, 0)),
       enabled_(enabled && !quiet()),
       tty_(isatty(2) != 0),
-      t0_(std::chrono::steady_clock::now()) {}
+      t0_(std::chrono::steady_clock::now()),
+      last_(t0_) {
+  kinds_.push_back({"", total_, 0, 0.0});
+}
 
-void Progress::step(const std::string& detail) {
+void Progress::expect(const std::string& kind, int count) {
+  kinds_.push_back({kind, count, 0, 0.0});
+  kinds_[0].expected -= count;
+}
+
+double Progress::seconds_left() const {
+  double total_s = 0;
+  int total_n = 0;
+  for (const Kind& k : kinds_) total_s += k.seconds, total_n += k.done;
+  const double overall = total_n > 0 ? total_s / total_n : 0.0;
+  double left = 0;
+  for (const Kind& k : kinds_) {
+    const double per = k.done > 0 ? k.seconds / k.done : overall;
+    left += per * std::max(k.expected - k.done, 0);
+  }
+  return left;
+}
+
+void Progress::step(const std::string& detail, const std::string& kind) {
   ++done_;
+  const auto now = std::chrono::steady_clock::now();
+  Kind* k = &kinds_[0];
+  for (Kind& c : kinds_)
+    if (c.name == kind) k = &c;
+  ++k->done;
+  k->seconds += std::chrono::duration<double>(now - last_).count();
+  last_ = now;
   if (!enabled_ || finished_) return;
   const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-  const double left = done_ > 0 ? el / done_ * std::max(total_ - done_, 0) : 0.0;
+  const double left = seconds_left();
   const int percent = total_ > 0 ? std::min(100, 100 * done_ / total_) : 100;
   if (tty_) {
     const int width = 30, filled = total_ > 0 ? std::min(width, width * done_ / total_) : width;

@@ -5,6 +5,7 @@
 // the steps left, so every slow part of the work must be a step.
 #include <chrono>
 #include <string>
+#include <vector>
 
 namespace foveate::app {
 
@@ -13,8 +14,15 @@ class Progress {
   /// `what` names the work in plain lines ("render", "bench"); `unit` the
   /// steps ("frames"). Enabled unless --quiet, or when `enabled` is false.
   Progress(std::string what, std::string unit, int total, bool enabled = true);
-  /// One step done; `detail` says what it was (shown on a terminal).
-  void step(const std::string& detail = {});
+  /// Steps of different cost (rendering, metrics): `count` of the total are
+  /// of `kind`. The time left is then the sum over kinds of the steps left
+  /// times that kind's mean time per step so far.
+  void expect(const std::string& kind, int count);
+  /// One step done; `detail` says what it was (shown on a terminal), `kind`
+  /// which of the expected kinds it was (empty: the rest).
+  void step(const std::string& detail = {}, const std::string& kind = {});
+  /// Seconds left by the estimate above.
+  [[nodiscard]] double seconds_left() const;
   /// Ends the bar's line on a terminal (called by the last step too).
   void finish();
   [[nodiscard]] int done() const { return done_; }
@@ -24,7 +32,13 @@ class Progress {
   std::string what_, unit_;
   int total_, done_ = 0;
   bool enabled_, tty_, finished_ = false;
-  std::chrono::steady_clock::time_point t0_;
+  std::chrono::steady_clock::time_point t0_, last_;
+  struct Kind {
+    std::string name;
+    int expected = 0, done = 0;
+    double seconds = 0;
+  };
+  std::vector<Kind> kinds_;  ///< the first is "" (the rest of the total)
 };
 
 }  // namespace foveate::app
