@@ -123,7 +123,7 @@ std::string overlay_figure(const Image& frame, const std::vector<OverlayShape>& 
     << "\" height=\"" << display_width * h / std::max(w, 1) << "\" viewBox=\"0 0 " << w << ' ' << h
     << "\"><title>" << alt << "</title><image width=\"" << w << "\" height=\"" << h
     << "\" href=\"data:image/jpeg;base64," << base64(encode_jpeg(small, 85)) << "\"/>";
-  const double stroke = std::max(1.5, w / 480.0);
+  const double stroke = std::max(1.5, w / 240.0);  // about 2 px on the page
   for (const OverlayShape& o : shapes) {
     char colour[32];
     std::snprintf(colour, sizeof colour, "rgb(%d,%d,%d)", int(o.r * 255), int(o.g * 255),
