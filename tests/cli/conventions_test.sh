@@ -69,6 +69,12 @@ check "paths printed without //" 'grep -q "to $tmp/r4/\$" "$tmp/out.txt" && ! gr
 "$FOVEATE" render --scene cheap --size 64x36 --frames 4 --quiet --out "$tmp/r4/" > /dev/null 2> "$tmp/p.txt"
 check "--quiet: no progress" '[[ ! -s "$tmp/p.txt" ]]'
 
+if command -v script > /dev/null; then
+  # On a terminal (a pseudo-terminal from util-linux's script): a bar redrawn in place.
+  script -qec "\"$FOVEATE\" render --scene cheap --size 64x36 --frames 3 --out \"$tmp/r5\" > /dev/null" /dev/null > "$tmp/tty.txt" 2>&1
+  check "render --frames on a terminal draws a bar" 'grep -q "render \[#" "$tmp/tty.txt" && grep -q $'"'"'\r'"'"'"render \[" "$tmp/tty.txt"'
+fi
+
 # --- Numbers for people in errors.
 "$FOVEATE" render --scene cheap --size 64x36 --technique layered --param layers=9 --out "$tmp/e" > /dev/null 2> "$tmp/err.txt"; rc=$?
 check "a range error prints layers=9 (exit 1)" '[[ $rc == 1 ]] && grep -q "layers=9: out of range \[1, 6\]" "$tmp/err.txt" && ! grep -q "9.0000" "$tmp/err.txt"'
