@@ -67,3 +67,20 @@ if "Not measured" not in dom:  # the --no-metrics fallback has no quality sectio
     ok = ok and good
 sys.exit(0 if ok else 1)
 PY
+[[ $? == 0 ]] || exit 1
+# A sweep: its speed curve joins the points sorted by the swept value, with a
+# marker on each, and the quality-against-speed scatter marks the Pareto front.
+"$FOVEATE" bench --scene cheap --size 96x54 --frames 1 --warmup 0 --techniques layered \
+  --sweep slope=0.015:0.035:0.01 --quiet --out "$tmp/s" > /dev/null || { echo "FAIL: sweep bench"; exit 1; }
+python3 - "$tmp/s/report.html" <<'PY'
+import re, sys
+page = open(sys.argv[1], encoding="utf-8").read()
+charts = dict(re.findall(r'<div class="?chart"? id="([^"]+)">(.*?)</div>', page, re.S))
+speed, quality = charts.get("chart-sweep-speed", ""), charts.get("chart-sweep-quality", "")
+pts = re.search(r'<polyline class="line"[^>]*points="([^"]*)"', speed)
+xs = [float(p.split(",")[0]) for p in pts.group(1).split()] if pts else []
+ok = len(xs) == 3 and xs == sorted(xs) and speed.count('class="point"') == 3
+ok = ok and 'class="pareto"' in quality and quality.count('class="point"') == 3
+print(("ok: " if ok else "FAIL: ") + f"sweep line sorted by x with markers {xs}, Pareto front on the scatter")
+sys.exit(0 if ok else 1)
+PY
