@@ -25,24 +25,26 @@ void Progress::expect(const std::string& kind, int count) {
   kinds_[0].expected -= count;
 }
 
-double Progress::seconds_left() const {
+double time_left(const std::vector<StepKind>& kinds) {
   double total_s = 0;
   int total_n = 0;
-  for (const Kind& k : kinds_) total_s += k.seconds, total_n += k.done;
+  for (const StepKind& k : kinds) total_s += k.seconds, total_n += k.done;
   const double overall = total_n > 0 ? total_s / total_n : 0.0;
   double left = 0;
-  for (const Kind& k : kinds_) {
+  for (const StepKind& k : kinds) {
     const double per = k.done > 0 ? k.seconds / k.done : overall;
     left += per * std::max(k.expected - k.done, 0);
   }
   return left;
 }
 
+double Progress::seconds_left() const { return time_left(kinds_); }
+
 void Progress::step(const std::string& detail, const std::string& kind) {
   ++done_;
   const auto now = std::chrono::steady_clock::now();
-  Kind* k = &kinds_[0];
-  for (Kind& c : kinds_)
+  StepKind* k = &kinds_[0];
+  for (StepKind& c : kinds_)
     if (c.name == kind) k = &c;
   ++k->done;
   k->seconds += std::chrono::duration<double>(now - last_).count();

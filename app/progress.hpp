@@ -9,6 +9,17 @@
 
 namespace foveate::app {
 
+/// Steps of one kind: how many are expected, how many are done and the
+/// seconds they took.
+struct StepKind {
+  std::string name;
+  int expected = 0, done = 0;
+  double seconds = 0;
+};
+/// The time left: for every kind, the steps left times its mean time per step
+/// (a kind not yet seen counts at the mean of all steps so far).
+double time_left(const std::vector<StepKind>& kinds);
+
 class Progress {
  public:
   /// `what` names the work in plain lines ("render", "bench"); `unit` the
@@ -33,12 +44,7 @@ class Progress {
   int total_, done_ = 0;
   bool enabled_, tty_, finished_ = false;
   std::chrono::steady_clock::time_point t0_, last_;
-  struct Kind {
-    std::string name;
-    int expected = 0, done = 0;
-    double seconds = 0;
-  };
-  std::vector<Kind> kinds_;  ///< the first is "" (the rest of the total)
+  std::vector<StepKind> kinds_;  ///< the first is "" (the rest of the total)
 };
 
 }  // namespace foveate::app
