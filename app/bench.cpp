@@ -1,7 +1,5 @@
 #include "bench.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,9 +11,11 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/stats.hpp"
+#include "foveate/gaze/pupil.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/metrics/metrics.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "progress.hpp"
 #include "video.hpp"
 
 namespace foveate::app {
@@ -45,36 +45,6 @@ std::pair<double, double> speedup_interval(const std::vector<double>& native,
   }
   return {quantile(ratios, 0.025), quantile(ratios, 0.975)};
 }
-
-class Progress {
- public:
-  Progress(int total, bool enabled) : total_(total), enabled_(enabled), tty_(isatty(2) != 0) {
-    t0_ = std::chrono::steady_clock::now();
-  }
-  void step(const std::string& what) {
-    ++done_;
-    if (!enabled_) return;
-    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    const double eta = done_ > 0 ? el / done_ * (total_ - done_) : 0.0;
-    if (tty_) {
-      const int width = 30, filled = total_ > 0 ? width * done_ / total_ : width;
-      std::fprintf(stderr, "\r[%s%s] %3d%% %d/%d  ETA %5.0fs  %-28s",
-                   std::string(size_t(filled), '#').c_str(),
-                   std::string(size_t(width - filled), '.').c_str(),
-                   100 * done_ / std::max(total_, 1), done_, total_, eta, what.c_str());
-      if (done_ == total_) std::fprintf(stderr, "\n");
-    } else if (done_ == total_ || done_ % std::max(1, total_ / 10) == 0) {
-      std::fprintf(stderr, "bench: %d/%d frames rendered, %.0f s elapsed, about %.0f s left\n",
-                   done_, total_, el, eta);
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  int total_, done_ = 0;
-  bool enabled_, tty_;
-  std::chrono::steady_clock::time_point t0_;
-};
 
 // Adds a frame's pass times to the running sums, and the rest of the frame
 // (time outside every timed pass) as "other", kept last.
@@ -158,6 +128,39 @@ BenchResult run_bench(const BenchOptions& o) {
   BenchResult out;
   out.options = o;
   Session session(o.session, o.gaze);
+  // The default list: what this scene cannot run is left out, with a note.
+  if (o.skip_unfit) {
+    std::vector<std::string> kept;
+    for (const std::string& t : o.techniques) {
+      const std::string why = scene_mismatch(technique_info(t), session.scene().info());
+      if (why.empty()) {
+        kept.push_back(t);
+      } else {
+        out.skipped.push_back(t + " (" + why + ")");
+        if (!quiet())
+          std::fprintf(stderr, "foveate: note: skipping %s: %s\n", t.c_str(), why.c_str());
+      }
+    }
+    out.options.techniques = kept;
+  }
+  // A live tracker that never answers would silently bench the centre
+  // fallback: an error unless the user accepts that.
+  if (const auto* pupil = dynamic_cast<const gaze::PupilSource*>(&session.gaze().source())) {
+    if (!pupil->wait_connected(o.connect_timeout_s)) {
+      if (!o.allow_fallback) {
+        throw Error("--gaze " + o.gaze + ": no eye tracker answered (" +
+                    session.gaze().source().describe() + ", waited " + fmt(o.connect_timeout_s, 1) +
+                    " s); start Pupil Capture or Pupil Service, or pass --allow-fallback to "
+                    "measure with the gaze held at the centre");
+      }
+      out.gaze_fallback = true;
+      if (!quiet())
+        std::fprintf(stderr,
+                     "foveate: warning: --gaze %s: no eye tracker answered; measuring with the "
+                     "fallback gaze (--allow-fallback)\n",
+                     o.gaze.c_str());
+    }
+  }
   out.display = session.display();
   out.scene = session.scene().info().name;
   out.environment = capture_environment(invocation().empty() ? o.command_line : invocation());
@@ -201,7 +204,7 @@ BenchResult run_bench(const BenchOptions& o) {
   };
   // Native is the reference for speed and quality: always run, once.
   add_run("native", 0.0, false);
-  for (const std::string& t : o.techniques) {
+  for (const std::string& t : out.options.techniques) {
     if (t == "native") continue;
     if (o.sweep.applies_to(t)) {
       for (double v : o.sweep.values) add_run(t, v, true);
@@ -209,8 +212,8 @@ BenchResult run_bench(const BenchOptions& o) {
       add_run(t, 0.0, false);
     }
   }
-  const bool native_listed =
-      std::find(o.techniques.begin(), o.techniques.end(), "native") != o.techniques.end();
+  const bool native_listed = std::find(out.options.techniques.begin(), out.options.techniques.end(),
+                                       "native") != out.options.techniques.end();
 
   // Warm up until every technique is steady (its own settle_frames), at
   // least as long as asked.
@@ -233,8 +236,13 @@ BenchResult run_bench(const BenchOptions& o) {
     });
   }
 
-  const int total = static_cast<int>(runs.size()) * (o.frames + warmup);
-  Progress progress(total, o.progress);
+  // Steps: every frame rendered, and every frame judged (the metrics take as
+  // long as the rendering on a CPU), so that the time left is honest.
+  int judged_runs = 0;
+  if (o.image_metrics) judged_runs = static_cast<int>(runs.size()) - (reference ? 0 : 1);
+  const int total = static_cast<int>(runs.size()) * (o.frames + warmup) + judged_runs * o.frames;
+  Progress progress("bench", "steps", total, o.progress);
+  progress.expect("metrics", judged_runs * o.frames);
   gpu::FrameTimer timer;
   std::optional<gpu::PassProfiler> profiler;
   if (o.passes) profiler.emplace();
@@ -300,7 +308,10 @@ BenchResult run_bench(const BenchOptions& o) {
     for (auto& [idx, img] : images) {
       Run& r = runs[idx];
       const bool judged = o.image_metrics && (idx != 0 || reference);
-      if (judged) r.series->add(reference_image, img, g.gaze_px);
+      if (judged) {
+        r.series->add(reference_image, img, g.gaze_px);
+        progress.step("metrics " + r.technique, "metrics");
+      }
       if (k + 1 == o.frames) {
         if (judged) {
           r.result.heatmap = metrics::error_heatmap(reference_image, img, 64.0);
@@ -308,6 +319,7 @@ BenchResult run_bench(const BenchOptions& o) {
               reference_image, img, r.series->display(), g.gaze_px, r.series->options());
         }
         r.result.sample = std::move(img);
+        r.result.overlay = r.impl->overlay(g);
         out.sample_gaze_px = g.gaze_px;
       }
     }
@@ -317,6 +329,7 @@ BenchResult run_bench(const BenchOptions& o) {
     }
   }
 
+  progress.finish();
   out.gaze_report = gaze.report();
   finish_environment(out.environment);
   if (video) {

@@ -53,6 +53,13 @@ struct BenchOptions {
   /// when not listed, and the gaze marked on every tile.
   std::string video;
   bool side_by_side = false;
+  /// Leave out the techniques the scene cannot run (the default list) instead
+  /// of refusing them.
+  bool skip_unfit = false;
+  /// A live gaze source (pupil) that does not answer within connect_timeout_s
+  /// is an error unless this is set; then the fallback gaze is measured.
+  bool allow_fallback = false;
+  double connect_timeout_s = 3.0;
 };
 
 struct TechniqueResult {
@@ -74,6 +81,8 @@ struct TechniqueResult {
   /// and with --no-metrics.
   std::optional<metrics::QualitySummary> metrics;
   Image sample;  ///< last frame, for the report
+  std::vector<OverlayShape>
+      overlay;  ///< the technique's layers or regions at the last frame's gaze
   Image heatmap;
   Image acuity_heatmap;
 };
@@ -90,7 +99,9 @@ struct BenchResult {
   Image reference_sample;  ///< the supersampled reference's last frame (empty when native is)
   Vec2d sample_gaze_px;
   std::string gaze_report;
-  std::string video_summary;  ///< one line about the video written (empty = none)
+  std::string video_summary;         ///< one line about the video written (empty = none)
+  std::vector<std::string> skipped;  ///< techniques left out of the default list, with the reason
+  bool gaze_fallback = false;        ///< the live gaze source never answered (--allow-fallback)
 };
 
 BenchResult run_bench(const BenchOptions& options);

@@ -1,5 +1,6 @@
 #include "cli_util.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -7,6 +8,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
+#include "foveate/core/planner.hpp"
 
 namespace foveate::app {
 
@@ -69,6 +71,72 @@ std::uint64_t parse_byte_size(const std::string& text, const std::string& option
 std::string fmt(double value, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, value);
+  return buf;
+}
+
+Verbosity& verbosity() {
+  static Verbosity v = Verbosity::Normal;
+  return v;
+}
+
+SavingsCheck check_savings(const Display& display, const AcuityModel& acuity) {
+  SavingsCheck c;
+  auto bound = [&](const Display& d) {
+    PlannerOptions opt;
+    opt.layers = 3;
+    opt.grid_step_deg = 0.1;
+    return plan_layers(d, acuity, opt).pixel_ratio();
+  };
+  c.pixel_bound = bound(display);
+  const Vec2d centre{0.5 * display.width_px, 0.5 * display.height_px};
+  c.centre_ppd = display.pixels_per_degree(centre, centre);
+  c.nothing_to_save = c.pixel_bound < 1.2;
+  if (!c.nothing_to_save) return c;
+  const double eye_ppd = 1.0 / acuity.w0_deg;
+  std::string note =
+      "at " + std::to_string(display.width_px) + "x" + std::to_string(display.height_px) + " the " +
+      display.name + " display has " + fmt(c.centre_ppd, 1) +
+      " pixels per degree at the centre, coarser than the eye resolves (" + fmt(eye_ppd, 0) +
+      " at the fovea) over most of the field: the planner's pixel bound is " +
+      fmt(c.pixel_bound, 2) + "x, so foveation has little or nothing to save";
+  // The smallest common width, same aspect and field of view, that leaves
+  // something to save.
+  for (int width : {1280, 1920, 2560, 3840, 7680}) {
+    if (width <= display.width_px) continue;
+    const int height = std::max(
+        1, static_cast<int>(std::lround(double(display.height_px) * width / display.width_px)));
+    const Display bigger = display.resized(width, height);
+    const double b = bound(bigger);
+    if (b >= 1.5) {
+      note += "; try --size " + std::to_string(width) + "x" + std::to_string(height) + " (bound " +
+              fmt(b, 1) + "x)";
+      break;
+    }
+  }
+  note += " or a display with more pixels per degree or a wider field of view (e.g. hmd-quest3)";
+  c.note = note;
+  return c;
+}
+
+void note_savings(const Display& display, const AcuityModel& acuity) {
+  static bool said = false;
+  if (said || quiet()) return;
+  const SavingsCheck c = check_savings(display, acuity);
+  if (!c.nothing_to_save) return;
+  said = true;
+  std::fprintf(stderr, "foveate: note: %s\n", c.note.c_str());
+}
+
+std::string format_duration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "?";
+  const long s = std::lround(seconds);
+  if (s < 60) return std::to_string(s) + " s";
+  char buf[64];
+  if (s < 3600) {
+    std::snprintf(buf, sizeof buf, "%ld min %02ld s", s / 60, s % 60);
+  } else {
+    std::snprintf(buf, sizeof buf, "%ld h %02ld min", s / 3600, (s % 3600) / 60);
+  }
   return buf;
 }
 

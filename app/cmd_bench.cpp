@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
@@ -18,18 +19,19 @@ namespace {
 
 struct BenchArgs {
   SessionArgs session;
-  std::string techniques = "native,layered,logpolar,checkerboard,inset";
+  std::string techniques = kDefaultTechniques;
+  bool techniques_given = false;
   int frames = 12;
   int warmup = 2;
   std::string sweep;
   std::string out = "bench-out";
   std::string reference = "native";
   bool no_metrics = false;
-  bool quiet = false;
   bool passes = false;
   std::string video;
   bool side_by_side = false;
-  BenchArgs() { session.size = "960x540"; }
+  bool json = false;
+  bool allow_fallback = false;
 };
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -56,7 +58,9 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
   o.image_metrics = !a.no_metrics;
   o.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.out = a.out;
-  o.progress = !a.quiet;
+  o.progress = !quiet() && !a.json;
+  o.skip_unfit = !a.techniques_given;
+  o.allow_fallback = a.allow_fallback;
   o.passes = a.passes;
   o.command_line = command_line;
   o.video = a.video;
@@ -68,8 +72,10 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
 void add_common(CLI::App* sub, BenchArgs& a) {
   add_session_options(sub, a.session);
   sub->add_option("--techniques", a.techniques,
-                  "Comma-separated techniques (native is always measured as the reference)")
-      ->capture_default_str();
+                  "Comma-separated techniques (native is always measured as the reference); by "
+                  "default every technique the scene can run (lodmask needs meshes)")
+      ->capture_default_str()
+      ->each([&a](const std::string&) { a.techniques_given = true; });
   sub->add_option("--frames", a.frames, "Measured frames per technique")->capture_default_str();
   sub->add_option("--warmup", a.warmup, "Warm-up frames per technique (not measured)")
       ->capture_default_str();
@@ -84,7 +90,11 @@ void add_common(CLI::App* sub, BenchArgs& a) {
                 "Skip the image metrics against native (PSNR, SSIM, acuity error, FLIP; faster)");
   // The flag's old name, kept working.
   sub->add_flag("--no-quality", a.no_metrics)->group("");
-  sub->add_flag("--quiet", a.quiet, "No progress output");
+  sub->add_flag("--json", a.json,
+                "Print results.json on stdout instead of the table (the files are written too)");
+  sub->add_flag("--allow-fallback", a.allow_fallback,
+                "Measure even when a live gaze source (--gaze pupil) never answers: the gaze "
+                "falls back to the centre (an error otherwise)");
   sub->add_flag("--passes", a.passes,
                 "Time every pass (G-buffer, shading, temporal, composite, ...) and report where "
                 "each technique's frame goes; glFinish between passes on software renderers");
@@ -98,7 +108,17 @@ void add_common(CLI::App* sub, BenchArgs& a) {
       ->needs(video);
 }
 
-void print_summary(const BenchResult& r) {
+void print_summary(const BenchResult& r, bool json) {
+  // The video written (and its encoder) is a result: said even with --quiet.
+  if (!r.video_summary.empty()) std::cerr << r.video_summary << "\n";
+  if (json) {
+    std::cout << bench_json(r).dump(2) << '\n';
+    return;
+  }
+  if (quiet()) {
+    std::cout << bench_markdown(r);
+    return;
+  }
   std::cout << "\n"
             << r.scene << " at " << r.options.session.size.width << 'x'
             << r.options.session.size.height << ", " << r.options.frames << " frames, renderer "
@@ -107,7 +127,6 @@ void print_summary(const BenchResult& r) {
             << "\nreport: " << (std::filesystem::path(r.options.out) / "report.html").string()
             << "\nresults: " << (std::filesystem::path(r.options.out) / "results.json").string()
             << " (.csv, .md)\n";
-  if (!r.video_summary.empty()) std::cerr << r.video_summary << "\n";
 }
 
 }  // namespace
@@ -118,12 +137,11 @@ void register_bench(CLI::App& app) {
       "bench", "Compare techniques side by side: time, pixels and image quality");
   add_common(sub, *a);
   sub->add_option("--sweep", a->sweep, "Sweep KEY=FROM:TO:STEP (slope, or a technique parameter)");
-  sub->callback([a, &app] {
-    std::string cl = "foveate bench";
-    for (const auto& s : app.remaining()) cl += " " + s;
-    const BenchResult r = run_bench(to_options(*a, cl));
+  sub->callback([a] {
+    const BenchResult r = run_bench(to_options(*a, "foveate bench"));
+    if (!quiet() && !a->json) std::cerr << "bench: writing the report" << std::endl;
     write_bench_outputs(r);
-    print_summary(r);
+    print_summary(r, a->json);
   });
 }
 
@@ -131,8 +149,6 @@ void register_demo(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   // The test scene of Guenter et al. has meshes, so every technique runs on it.
   a->session.scene = "guenter";
-  a->techniques = "native,layered,logpolar,checkerboard,lodmask,inset";
-  a->session.size = "1920x1080";  // the paper's display at its own resolution: about a minute here
   a->frames = 6;
   a->warmup = 2;
   a->out = "foveate-demo";
@@ -141,12 +157,14 @@ void register_demo(CLI::App& app) {
                                      "at quality A; prints the table and the report's path");
   add_common(sub, *a);
   sub->callback([a] {
-    std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
-              << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
-              << ", display " << a->session.display << " at " << a->session.size << std::endl;
+    if (!quiet() && !a->json)
+      std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
+                << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
+                << ", display " << a->session.display << " at " << a->session.size << std::endl;
     const BenchResult r = run_bench(to_options(*a, "foveate demo"));
+    if (!quiet() && !a->json) std::cerr << "demo: writing the report" << std::endl;
     write_bench_outputs(r);
-    print_summary(r);
+    print_summary(r, a->json);
   });
 }
 

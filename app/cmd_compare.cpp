@@ -12,7 +12,9 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/image.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/metrics/metrics.hpp"
+#include "progress.hpp"
 
 namespace foveate::app {
 
@@ -57,31 +59,46 @@ void run_compare(const CompareArgs& a) {
     throw Error("--heatmap-max / --acuity-heatmap-max / --jnd-heatmap-max: must be > 0");
   }
   if (!(a.threshold >= 0) || !std::isfinite(a.threshold)) {
-    throw Error("--threshold: must be >= 0 JND, got " + std::to_string(a.threshold));
+    throw Error("--threshold: must be >= 0 JND, got " + format_number(a.threshold));
   }
   metrics::QualityOptions opt;
   if (!(a.peak > opt.contrast.black_cd_m2) || !std::isfinite(a.peak)) {
     throw Error("--peak-luminance: must be above the black level (" +
-                fmt(opt.contrast.black_cd_m2, 2) + " cd/m^2), got " + std::to_string(a.peak));
+                format_number(opt.contrast.black_cd_m2) + " cd/m^2), got " + format_number(a.peak));
   }
   // The display's field of view at the images' resolution.
   const Display display = Display::load(a.display).resized(ref.width, ref.height);
   const Vec2d gaze = a.gaze.empty() ? Vec2d{0.5 * ref.width, 0.5 * ref.height}
                                     : parse_point(a.gaze, ref.width, ref.height, "--gaze");
+  if (!(gaze.x >= 0 && gaze.x < ref.width && gaze.y >= 0 && gaze.y < ref.height)) {
+    throw Error("--gaze: '" + a.gaze + "' is (" + format_number(gaze.x, 1) + ", " +
+                format_number(gaze.y, 1) + ") px, outside the " + std::to_string(ref.width) + "x" +
+                std::to_string(ref.height) + " images (pixels 0.." + std::to_string(ref.width - 1) +
+                ", 0.." + std::to_string(ref.height - 1) + ", or normalized 0.0..1.0)");
+  }
   opt.acuity = acuity_from_options(a.quality, a.slope);
   opt.flip = !a.no_flip;
   opt.jnd_threshold = a.threshold;
   opt.contrast.peak_cd_m2 = a.peak;
+  const int steps = 1 + !a.heatmap.empty() + !a.acuity_heatmap.empty() + !a.jnd_heatmap.empty();
+  // Only worth a bar where it takes a while (a megapixel and more).
+  Progress progress("compare", "steps", steps, !a.json && double(ref.width) * ref.height >= 1e6);
   const metrics::QualityReport r = metrics::compare(ref, test, display, gaze, opt);
+  progress.step("metrics");
 
-  if (!a.heatmap.empty()) write_png(a.heatmap, metrics::error_heatmap(ref, test, a.heatmap_max));
+  if (!a.heatmap.empty()) {
+    write_png(a.heatmap, metrics::error_heatmap(ref, test, a.heatmap_max));
+    progress.step("heat map");
+  }
   if (!a.acuity_heatmap.empty()) {
     write_png(a.acuity_heatmap,
               metrics::acuity_error_heatmap(ref, test, display, gaze, opt, a.acuity_heatmap_max));
+    progress.step("acuity heat map");
   }
   if (!a.jnd_heatmap.empty()) {
     write_png(a.jnd_heatmap,
               metrics::heatmap(metrics::jnd_map(ref, test, display, gaze, opt), a.jnd_heatmap_max));
+    progress.step("JND heat map");
   }
 
   if (a.json) {
@@ -144,7 +161,8 @@ void register_compare(CLI::App& app) {
                   "field of view is kept at the images' size")
       ->capture_default_str();
   sub->add_option("--gaze", a->gaze,
-                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
+                  "Gaze point X,Y in pixels or normalized (0.5,0.5), inside the images; default "
+                  "centre");
   sub->add_option("--quality", a->quality,
                   "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
   sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");

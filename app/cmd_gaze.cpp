@@ -160,8 +160,9 @@ void run_record(const RecordArgs& a) {
     throw Error("cannot reach Pupil Capture at " + po.host + ":" + std::to_string(po.port) +
                 " within " + fmt(a.connect_timeout, 1) + " s (is Pupil Remote enabled?)");
   }
-  std::fprintf(stderr, "recording %s for %.1f s (Ctrl-C stops early)\n", src.describe().c_str(),
-               a.seconds);
+  if (!quiet())
+    std::fprintf(stderr, "recording %s for %.1f s (Ctrl-C stops early)\n", src.describe().c_str(),
+                 a.seconds);
   g_interrupted.store(false);
   auto previous = std::signal(SIGINT, on_interrupt);
   Trace trace;

@@ -13,7 +13,9 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/core/planner.hpp"
+#include "progress.hpp"
 #include "svg_plot.hpp"
 
 namespace foveate::app {
@@ -26,7 +28,7 @@ struct PlanArgs {
   std::optional<double> slope;
   int layers = 3;
   std::string gaze;
-  std::string size;
+  std::string size = kDefaultSize;
   std::optional<double> fixed_s2;
   double step = 0.05;
   bool half_rate_weights = false;
@@ -44,13 +46,13 @@ std::string sweep_csv(const std::vector<SweepRow>& rows) {
     for (const SweepVariant& v : sweep_variants()) s << ",pixels_" << q << "_n" << v.name;
   }
   s << '\n';
-  s.precision(8);
   for (const SweepRow& r : rows) {
-    s << r.fov_deg << ',' << r.display_width_px << ',' << r.native_pixels;
-    for (double x : r.speedup_a) s << ',' << x;
-    for (double x : r.speedup_b) s << ',' << x;
-    for (double x : r.pixels_a) s << ',' << x;
-    for (double x : r.pixels_b) s << ',' << x;
+    s << format_number(r.fov_deg) << ',' << format_number(r.display_width_px) << ','
+      << format_number(r.native_pixels, 0);
+    for (double x : r.speedup_a) s << ',' << format_number(x);
+    for (double x : r.speedup_b) s << ',' << format_number(x);
+    for (double x : r.pixels_a) s << ',' << format_number(x, 0);
+    for (double x : r.pixels_b) s << ',' << format_number(x, 0);
     s << '\n';
   }
   return s.str();
@@ -110,18 +112,45 @@ void run_plan(const PlanArgs& a) {
     if (ext != ".csv" && ext != ".svg") {
       throw Error("--sweep: the file must end in .csv or .svg, got '" + a.sweep + "'");
     }
-    const auto rows = fov_sweep(10.0, 120.0, 5.0, a.step);
+    // One field of view at a time, for the progress bar (the whole sweep
+    // takes seconds at the default grid).
+    std::vector<SweepRow> rows;
+    Progress progress("plan --sweep", "fields of view", 23, !a.json);
+    for (int i = 0; i <= 22; ++i) {
+      const double fov = 10.0 + 5.0 * i;
+      for (SweepRow& r : fov_sweep(fov, fov, 5.0, a.step)) rows.push_back(std::move(r));
+      progress.step(format_number(fov) + " deg");
+    }
     write_file_atomic(a.sweep, ext == ".csv" ? sweep_csv(rows) : sweep_svg(rows));
+    if (a.json) {
+      nlohmann::json j = {{"file", a.sweep}, {"rows", nlohmann::json::array()}};
+      for (const SweepRow& r : rows) {
+        nlohmann::json row = {{"fov_deg", r.fov_deg},
+                              {"display_width_px", r.display_width_px},
+                              {"native_pixels", r.native_pixels}};
+        for (size_t v = 0; v < sweep_variants().size(); ++v) {
+          const std::string n = sweep_variants()[v].name;
+          row["speedup_A_n" + n] = r.speedup_a[v];
+          row["speedup_B_n" + n] = r.speedup_b[v];
+          row["pixels_A_n" + n] = r.pixels_a[v];
+          row["pixels_B_n" + n] = r.pixels_b[v];
+        }
+        j["rows"].push_back(row);
+      }
+      std::cout << j.dump(2) << '\n';
+      return;
+    }
     std::cout << "wrote " << a.sweep << " (" << rows.size() << " fields of view, 10-120 deg)\n";
     return;
   }
 
   Display display = Display::load(a.display);
-  if (!a.size.empty()) {
+  {
     const Size sz = parse_size(a.size, "--size");
     display = display.resized(sz.width, sz.height);
   }
   const AcuityModel acuity = acuity_from_options(a.quality, a.slope);
+  note_savings(display, acuity);
   PlannerOptions opt;
   opt.layers = a.layers;
   opt.grid_step_deg = a.step;
@@ -206,14 +235,17 @@ void register_plan(CLI::App& app) {
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
-  sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
+  sub->add_option("--size", a->size,
+                  "Render at WxH with the display's geometry (field of view kept); render's "
+                  "default")
+      ->capture_default_str();
   sub->add_option("--fixed-s2", a->fixed_s2,
                   "Fix the second layer's sampling factor (the paper's 3* uses 2)");
   sub->add_option("--step", a->step, "Grid step of the radius search in degrees")
       ->capture_default_str();
   sub->add_flag("--half-rate-weights", a->half_rate_weights,
                 "Optimise with weights 1, 1/2, 1/2, ... (outer layers at half rate)");
-  sub->add_flag("--json", a->json, "Print the plan as JSON");
+  sub->add_flag("--json", a->json, "Print the plan (or with --sweep, the sweep's rows) as JSON");
   sub->add_option("--sweep", a->sweep,
                   "Write the field-of-view sweep (eq. 9; Figures 12-13) to FILE.csv or FILE.svg");
   sub->callback([a] { run_plan(*a); });

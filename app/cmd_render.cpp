@@ -4,14 +4,17 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/techniques/reference.hpp"
 #include "process_stats.hpp"
+#include "progress.hpp"
 #include "session.hpp"
 #include "video.hpp"
 
@@ -31,7 +34,7 @@ struct RenderArgs {
   bool side_by_side = false;
   bool no_write = false;
   int stats_every = 0;
-  RenderArgs() { session.size = "640x360"; }
+  bool json = false;
 };
 
 void run_render(const RenderArgs& a) {
@@ -74,6 +77,7 @@ void run_render(const RenderArgs& a) {
   const std::unique_ptr<Reference> supersampled =
       reference > 1 ? session.make_reference(reference) : nullptr;
   double shaded = 0, native_pixels = 0;
+  Progress progress("render", "frames", a.frames, a.frames > 1);
   for (int k = 0; k < a.frames; ++k) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
     Image native_image;
@@ -88,16 +92,19 @@ void run_render(const RenderArgs& a) {
       std::cerr << process_stats_line(k) << std::endl;
     }
     Image image = renderer.read_output();
+    if (verbose())
+      std::fprintf(stderr, "render: frame %d: %s shaded pixels\n", k,
+                   format_number(s.shaded_pixels, 0).c_str());
+    char name[64];
+    std::snprintf(name, sizeof name, "frame-%04d.png", k);
     if (a.no_write && !video) {
       // Read back as a written run would (the readback is part of the frame's cost).
       if (supersampled) (void)supersampled->render(renderer.frame_input(k));
+      progress.step(name);
       continue;
     }
-    char name[64];
-    if (!a.out.empty() && !a.no_write) {
-      std::snprintf(name, sizeof name, "frame-%04d.png", k);
+    if (!a.out.empty() && !a.no_write)
       write_png((std::filesystem::path(a.out) / name).string(), image);
-    }
     if (video && native) {
       mark_gaze(native_image, gaze.gaze_px);
       mark_gaze(image, gaze.gaze_px);
@@ -106,19 +113,40 @@ void run_render(const RenderArgs& a) {
       video->write(image);
     }
     if (supersampled && !a.no_write) {
-      std::snprintf(name, sizeof name, "reference-%04d.png", k);
-      write_png((std::filesystem::path(a.out) / name).string(),
+      char ref[64];
+      std::snprintf(ref, sizeof ref, "reference-%04d.png", k);
+      write_png((std::filesystem::path(a.out) / ref).string(),
                 supersampled->render(renderer.frame_input(k)));
     }
+    progress.step(name);
   }
   if (video) {
     video->finish();
     std::cerr << video_summary(*video, o.fps) << "\n";
   }
+  if (a.json) {
+    nlohmann::json j = {
+        {"frames", a.frames},
+        {"scene", session.scene().info().name},
+        {"technique", a.technique},
+        {"size", {o.size.width, o.size.height}},
+        {"out", a.out.empty()
+                    ? nlohmann::json(nullptr)
+                    : nlohmann::json(std::filesystem::path(a.out).lexically_normal().string())},
+        {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
+        {"shaded_pixels_per_frame", shaded / a.frames},
+        {"native_pixels_per_frame", native_pixels / a.frames},
+        {"pixel_ratio", shaded / native_pixels},
+        {"gaze_report", session.gaze().report()}};
+    std::cout << j.dump(2) << '\n';
+    return;
+  }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
             << a.technique << " at " << o.size.width << 'x' << o.size.height
-            << (a.out.empty() ? (a.video.empty() ? std::string(" (not written)") : " to " + a.video)
-                              : " to " + a.out + "/" + (a.video.empty() ? "" : " and " + a.video))
+            << (a.out.empty()
+                    ? (a.video.empty() ? std::string(" (not written)") : " to " + a.video)
+                    : " to " + (std::filesystem::path(a.out) / "").lexically_normal().string() +
+                          (a.video.empty() ? "" : " and " + a.video))
             << "\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
             << fmt(100.0 * shaded / native_pixels, 1) << " % of native)\n"
@@ -146,7 +174,9 @@ void register_render(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--technique", a->technique, "Technique (see 'foveate techniques')")
       ->capture_default_str();
-  sub->add_flag("--overlay", a->overlay, "Draw layer/region borders and the gaze point");
+  sub->add_flag("--overlay", a->overlay,
+                "Draw the technique's layer/region borders and the gaze point (off by default)");
+  sub->add_flag("--json", a->json, "Print the summary as JSON");
   CLI::Option* video =
       sub->add_option("--video", a->video,
                       "Also (or only) write the frames as a video, e.g. out.mp4: H.264 (libx264) "
@@ -164,7 +194,16 @@ void register_render(CLI::App& app) {
 
 void register_scenes(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("scenes", "List the built-in scenes");
-  sub->callback([] {
+  auto json = std::make_shared<bool>(false);
+  sub->add_flag("--json", *json, "Print the list as JSON");
+  sub->callback([json] {
+    if (*json) {
+      nlohmann::json j = nlohmann::json::array();
+      for (const SceneListing& s : builtin_scenes())
+        j.push_back({{"name", s.name}, {"description", s.description}});
+      std::cout << j.dump(2) << '\n';
+      return;
+    }
     for (const SceneListing& s : builtin_scenes())
       std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
     std::printf(
@@ -175,13 +214,16 @@ void register_scenes(CLI::App& app) {
 
 void register_techniques(CLI::App& app) {
   auto display = std::make_shared<std::string>("desktop-1080p");
-  auto size = std::make_shared<std::string>("1920x1080");
+  auto size = std::make_shared<std::string>(kDefaultSize);
+  auto json = std::make_shared<bool>(false);
   auto quality = std::make_shared<std::string>();
   auto slope = std::make_shared<std::optional<double>>();
   CLI::App* sub =
       app.add_subcommand("techniques", "List the techniques with their parameters and defaults");
   sub->add_option("--display", *display, "Display for the derived defaults")->capture_default_str();
-  sub->add_option("--size", *size, "Render size for the derived defaults")->capture_default_str();
+  sub->add_option("--size", *size, "Render size for the derived defaults (render's default)")
+      ->capture_default_str();
+  sub->add_flag("--json", *json, "Print the techniques, parameters and defaults as JSON");
   sub->add_option("--quality", *quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", *slope, "Custom MAR slope m");
   sub->callback([=] {
@@ -191,8 +233,38 @@ void register_techniques(CLI::App& app) {
                   return Display::load(*display);
                 }).resized(sz.width, sz.height);
     c.acuity = acuity_from_options(*quality, *slope);
-    std::printf("defaults derived for %s at %dx%d, MAR slope %.4f\n\n", c.display.name.c_str(),
-                sz.width, sz.height, c.acuity.slope);
+    note_savings(c.display, c.acuity);
+    if (*json) {
+      nlohmann::json j = {{"display", c.display},
+                          {"size", {sz.width, sz.height}},
+                          {"acuity", {{"slope", c.acuity.slope}, {"w0_deg", c.acuity.w0_deg}}}};
+      nlohmann::json list = nlohmann::json::array();
+      for (const TechniqueInfo& t : techniques()) {
+        const ParamValues values = resolve_parameters(t, c);
+        nlohmann::json params = nlohmann::json::array();
+        for (const ParamDecl& p : t.params) {
+          params.push_back({{"key", p.key},
+                            {"value", values.real(p.key)},
+                            {"unit", p.unit},
+                            {"type", p.type == ParamType::Real      ? "real"
+                                     : p.type == ParamType::Integer ? "integer"
+                                                                    : "boolean"},
+                            {"min", p.min},
+                            {"max", p.max},
+                            {"help", p.help}});
+        }
+        list.push_back({{"name", t.name},
+                        {"summary", t.summary},
+                        {"after", t.source},
+                        {"needs_meshes", t.needs.meshes},
+                        {"parameters", params}});
+      }
+      j["techniques"] = list;
+      std::cout << j.dump(2) << '\n';
+      return;
+    }
+    std::printf("defaults derived for %s at %dx%d, MAR slope %s\n\n", c.display.name.c_str(),
+                sz.width, sz.height, format_number(c.acuity.slope, 4).c_str());
     for (const TechniqueInfo& t : techniques()) {
       std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
       if (t.needs.meshes) std::printf("  needs: a scene with meshes\n");
@@ -200,8 +272,8 @@ void register_techniques(CLI::App& app) {
       for (const ParamDecl& p : t.params) {
         const std::string value = fmt(values.real(p.key), p.type == ParamType::Real ? 3 : 0) +
                                   (p.unit.empty() ? "" : " " + p.unit);
-        std::printf("  %-22s = %-14s %s [%g..%g]\n", p.key.c_str(), value.c_str(), p.help.c_str(),
-                    p.min, p.max);
+        std::printf("  %-22s = %-14s %s [%s..%s]\n", p.key.c_str(), value.c_str(), p.help.c_str(),
+                    format_number(p.min).c_str(), format_number(p.max).c_str());
       }
       std::printf("\n");
     }

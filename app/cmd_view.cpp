@@ -26,7 +26,6 @@ struct ViewArgs {
   bool overlay = true;
   int frames = 0;
   std::string screenshot;
-  ViewArgs() { session.size = "960x540"; }
 };
 
 void run_view(const ViewArgs& a) {
@@ -115,8 +114,10 @@ void register_view(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("view", "Interactive window: the gaze follows the mouse");
   add_session_options(sub, a->session);
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();
-  sub->add_flag("--overlay,!--no-overlay", a->overlay,
-                "Draw layer/region borders (on unless --no-overlay; toggle with O)");
+  sub->add_flag(
+      "--overlay,!--no-overlay", a->overlay,
+      "Draw layer/region borders: on by default, --no-overlay starts without them (toggle "
+      "with O)");
   sub->add_option("--frames", a->frames, "Quit after N frames (0 = run until closed)")
       ->capture_default_str();
   sub->add_option("--screenshot", a->screenshot, "Save the window's last frame as PNG on exit");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <sstream>
 
 #include "cli_util.hpp"
@@ -77,50 +78,67 @@ Worst worst_window(const metrics::Map& error, const Display& display, Vec2d gaze
   return found ? best : best_any;
 }
 
-std::string img_tag(const Image& img, const std::string& alt, int display_width) {
+std::string img_tag(const Image& img, const std::string& alt, int display_width, bool png,
+                    int max_width) {
   if (img.empty()) return "<span class=missing>(no image)</span>";
+  const Image small = max_width > 0 ? downscale(img, max_width) : img;
   return "<img alt=\"" + alt + "\" width=\"" + std::to_string(display_width) +
-         "\" src=\"data:image/png;base64," + base64(encode_png(img)) + "\">";
+         "\" src=\"data:image/" + (png ? "png" : "jpeg") + ";base64," +
+         base64(png ? encode_png(small) : encode_jpeg(small, 90)) + "\">";
 }
 
-std::string bar_chart(const std::vector<std::string>& names, const std::vector<double>& a,
-                      const std::vector<double>& b, const std::string& a_name,
-                      const std::string& b_name, const std::string& title) {
-  const int w = 720, row = 34, top = 40, left = 200;
-  const int h = top + row * static_cast<int>(names.size()) + 30;
-  double mx = 1e-9;
-  for (double v : a) mx = std::max(mx, std::isfinite(v) ? v : 0.0);
-  for (double v : b) mx = std::max(mx, std::isfinite(v) ? v : 0.0);
-  const double scale = (w - left - 80) / mx;
+std::string colour_bar(double max, const std::string& unit, int width) {
   std::ostringstream s;
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h
-    << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"100%\" height=\"100%\" "
-       "fill=\"white\"/>"
-    << "<text x=\"" << w / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">" << title
-    << "</text>";
-  for (size_t i = 0; i < names.size(); ++i) {
-    const int y = top + row * static_cast<int>(i);
-    const double va = std::isfinite(a[i]) ? a[i] : 0.0,
-                 vb = i < b.size() && std::isfinite(b[i]) ? b[i] : 0.0;
-    s << "<text x=\"" << left - 8 << "\" y=\"" << y + 16 << "\" text-anchor=\"end\">" << names[i]
-      << "</text>";
-    s << "<rect class=\"bar\" x=\"" << left << "\" y=\"" << y + 2 << "\" width=\"" << va * scale
-      << "\" height=\"13\" fill=\"#1f77b4\"/><text x=\"" << left + va * scale + 4 << "\" y=\""
-      << y + 13 << "\">" << fmt(va, 2) << "</text>";
-    if (!b.empty()) {
-      s << "<rect class=\"bar\" x=\"" << left << "\" y=\"" << y + 16 << "\" width=\"" << vb * scale
-        << "\" height=\"13\" fill=\"#ff7f0e\"/><text x=\"" << left + vb * scale + 4 << "\" y=\""
-        << y + 27 << "\">" << fmt(vb, 2) << "</text>";
-    }
+  const int h = 44, left = 10, bar_w = width - 20;
+  s << "<svg class=\"colourbar\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width
+    << "\" height=\"" << h
+    << "\" font-family=\"sans-serif\" font-size=\"11\"><defs><linearGradient "
+       "id=\"heat\">";
+  for (int i = 0; i <= 8; ++i) {
+    std::uint8_t c[3];
+    metrics::heat_color(i / 8.0, c);
+    s << "<stop offset=\"" << i / 8.0 << "\" stop-color=\"rgb(" << int(c[0]) << ',' << int(c[1])
+      << ',' << int(c[2]) << ")\"/>";
   }
-  const int ly = h - 14;
-  s << "<rect x=\"" << left << "\" y=\"" << ly - 9
-    << "\" width=\"12\" height=\"10\" fill=\"#1f77b4\"/><text x=\"" << left + 16 << "\" y=\"" << ly
-    << "\">" << a_name << "</text>";
-  if (!b.empty()) {
-    s << "<rect x=\"" << left + 260 << "\" y=\"" << ly - 9
-      << "\" width=\"12\" height=\"10\" fill=\"#ff7f0e\"/><text x=\"" << left + 276 << "\" y=\""
-      << ly << "\">" << b_name << "</text>";
+  s << "</linearGradient></defs><rect x=\"" << left << "\" y=\"2\" width=\"" << bar_w
+    << "\" height=\"12\" fill=\"url(#heat)\" stroke=\"#444\"/>";
+  for (int i = 0; i <= 4; ++i) {
+    const double x = left + bar_w * i / 4.0;
+    s << "<line x1=\"" << x << "\" y1=\"14\" x2=\"" << x << "\" y2=\"18\" stroke=\"#444\"/><text "
+      << "class=\"tick\" x=\"" << x << "\" y=\"29\" text-anchor=\"middle\">"
+      << fmt(max * i / 4.0, 0) << (i == 4 ? "+" : "") << "</text>";
+  }
+  s << "<text x=\"" << width / 2 << "\" y=\"" << h - 3 << "\" text-anchor=\"middle\">" << unit
+    << "</text></svg>";
+  return s.str();
+}
+
+std::string overlay_figure(const Image& frame, const std::vector<OverlayShape>& shapes,
+                           const std::string& alt, int display_width) {
+  if (frame.empty()) return "<span class=missing>(no image)</span>";
+  const int w = frame.width, h = frame.height;
+  const Image small = downscale(frame, display_width);
+  std::ostringstream s;
+  s << "<svg class=\"overlay\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << display_width
+    << "\" height=\"" << display_width * h / std::max(w, 1) << "\" viewBox=\"0 0 " << w << ' ' << h
+    << "\"><title>" << alt << "</title><image width=\"" << w << "\" height=\"" << h
+    << "\" href=\"data:image/jpeg;base64," << base64(encode_jpeg(small, 85)) << "\"/>";
+  const double stroke = std::max(1.5, w / 240.0);  // about 2 px on the page
+  for (const OverlayShape& o : shapes) {
+    char colour[32];
+    std::snprintf(colour, sizeof colour, "rgb(%d,%d,%d)", int(o.r * 255), int(o.g * 255),
+                  int(o.b * 255));
+    if (o.kind == OverlayShape::Kind::Rect) {
+      s << "<rect class=\"shape\" x=\"" << o.x << "\" y=\"" << o.y << "\" width=\"" << o.w
+        << "\" height=\"" << o.h << "\"";
+    } else {
+      s << "<circle class=\"shape\" cx=\"" << o.x << "\" cy=\"" << o.y << "\" r=\""
+        << (o.kind == OverlayShape::Kind::Dot ? std::max(o.w, 2 * stroke) : o.w) << "\"";
+    }
+    s << (o.kind == OverlayShape::Kind::Dot ? " fill=\"" + std::string(colour) + "\""
+                                            : " fill=\"none\" stroke=\"" + std::string(colour) +
+                                                  "\" stroke-width=\"" + fmt(stroke, 1) + "\"")
+      << "/>";
   }
   s << "</svg>";
   return s.str();

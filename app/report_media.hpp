@@ -7,6 +7,7 @@
 #include "foveate/core/display.hpp"
 #include "foveate/core/image.hpp"
 #include "foveate/metrics/metrics.hpp"
+#include "foveate/techniques/technique.hpp"
 
 namespace foveate::app {
 
@@ -25,11 +26,16 @@ struct Worst {
 Worst worst_window(const metrics::Map& error, const Display& display, Vec2d gaze, int size,
                    double min_ecc);
 
-/// An <img> with the PNG inline.
-std::string img_tag(const Image& img, const std::string& alt, int display_width);
-/// Horizontal bars: `a` (and `b` beside it when not empty) per name, as SVG.
-std::string bar_chart(const std::vector<std::string>& names, const std::vector<double>& a,
-                      const std::vector<double>& b, const std::string& a_name,
-                      const std::string& b_name, const std::string& title);
+/// An <img> with the image inline: JPEG (quality 90) unless `png`, first
+/// downscaled to at most `max_width` pixels (0 = as it is).
+std::string img_tag(const Image& img, const std::string& alt, int display_width, bool png = false,
+                    int max_width = 0);
+/// The heat maps' colour scale (metrics::heat_color) as an SVG bar with ticks
+/// from 0 to `max` in `unit`.
+std::string colour_bar(double max, const std::string& unit, int width = 240);
+/// The frame with the technique's overlay shapes (layer or region borders,
+/// the gaze) drawn over it as SVG, `display_width` wide.
+std::string overlay_figure(const Image& frame, const std::vector<OverlayShape>& shapes,
+                           const std::string& alt, int display_width);
 
 }  // namespace foveate::app

@@ -1,6 +1,7 @@
 #include "session.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "foveate/gaze/gaze.hpp"
@@ -85,7 +86,10 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required) {
   } else {
     scene->capture_default_str();
   }
-  sub->add_option("--size", a.size, "Output size WxH in pixels")->capture_default_str();
+  sub->add_option("--size", a.size,
+                  "Output size WxH in pixels (the display's field of view is kept; below about "
+                  "1280x720 on a desktop display foveation has little to save, and a note says so)")
+      ->capture_default_str();
   sub->add_option("--display", a.display,
                   "Display preset or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
@@ -172,6 +176,16 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
     return out;
   };
   gaze_ = with_flag("--gaze", [&] { return std::make_unique<gaze::GazeTracker>(gaze_spec, ctx); });
+  if (verbose()) {
+    const Vec2d c{0.5 * o.size.width, 0.5 * o.size.height};
+    std::fprintf(stderr,
+                 "foveate: renderer %s; scene %s; display %s at %dx%d, %s px/deg at the centre; "
+                 "gaze %s\n",
+                 context_->renderer().c_str(), scene_->info().name.c_str(), display_.name.c_str(),
+                 o.size.width, o.size.height, fmt(display_.pixels_per_degree(c, c), 1).c_str(),
+                 gaze_->describe().c_str());
+  }
+  note_savings(display_, o.acuity);
 }
 
 Session::~Session() = default;

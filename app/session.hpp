@@ -38,7 +38,7 @@ struct SessionOptions {
   std::string camera_path;
   std::string up;                        ///< mesh files: "y", "z" or "" (the file's)
   std::uint64_t model_memory_limit = 0;  ///< mesh files: bytes; 0 = the default
-  Size size{640, 360};
+  Size size{1920, 1080};
   std::string display = "desktop-1080p";
   AcuityModel acuity;
   double fps = 60.0;  ///< the fixed clock: frame k is at time start + k / fps
@@ -52,7 +52,7 @@ struct SessionOptions {
 /// The options every rendering command has, as typed on the command line.
 struct SessionArgs {
   std::string scene = "raymarch";
-  std::string size;
+  std::string size = kDefaultSize;
   std::string display = "desktop-1080p";
   std::string quality;
   std::optional<double> slope;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate {
 
@@ -27,7 +28,7 @@ AcuityModel AcuityModel::quality(const std::string& name) {
 AcuityModel AcuityModel::with_slope(double m) {
   if (!std::isfinite(m) || m <= 0.0 || m > 1.0) {
     throw Error("slope: expected a number in (0, 1] (degrees of MAR per degree), got " +
-                std::to_string(m));
+                format_number(m));
   }
   return AcuityModel{m, kFovealMarDeg};
 }

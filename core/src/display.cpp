@@ -8,6 +8,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/json_read.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate {
 
@@ -85,19 +86,19 @@ void Display::validate() const {
   }
   if (head_mounted()) {
     if (!std::isfinite(fov_h_deg) || fov_h_deg >= 179.0) {
-      throw Error(w + ": fov_h_deg must be in (0, 179), got " + std::to_string(fov_h_deg));
+      throw Error(w + ": fov_h_deg must be in (0, 179), got " + format_number(fov_h_deg));
     }
     return;
   }
   if (!std::isfinite(fov_h_deg) || fov_h_deg < 0.0) {
     throw Error(w + ": fov_h_deg must be in (0, 179) or 0 for a flat display, got " +
-                std::to_string(fov_h_deg));
+                format_number(fov_h_deg));
   }
   if (!std::isfinite(width_mm) || width_mm <= 0.0) {
     throw Error(w + ": width_mm must be > 0, got " + std::to_string(width_mm));
   }
   if (!std::isfinite(distance_mm) || distance_mm <= 0.0) {
-    throw Error(w + ": distance_mm must be > 0, got " + std::to_string(distance_mm));
+    throw Error(w + ": distance_mm must be > 0, got " + format_number(distance_mm));
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate {
 
@@ -33,8 +34,8 @@ bool JsonReader::number(const char* key, double& out, double min, double max) {
   double x = v->get<double>();
   if (!std::isfinite(x)) throw Error(path(key) + ": must be finite");
   if (x < min || x > max) {
-    throw Error(path(key) + ": " + std::to_string(x) + " is out of range [" + std::to_string(min) +
-                ", " + std::to_string(max) + "]");
+    throw Error(path(key) + ": " + format_number(x) + " is out of range [" + format_number(min) +
+                ", " + format_number(max) + "]");
   }
   out = x;
   return true;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate {
 
@@ -23,14 +24,14 @@ void require(bool ok, const std::string& what) {
 
 void LatencyAwareFovea::validate() const {
   require(std::isfinite(latency_ms) && latency_ms >= 0.0 && latency_ms <= 1000.0,
-          "latency_ms: expected 0..1000 ms, got " + std::to_string(latency_ms));
+          "latency_ms: expected 0..1000 ms, got " + format_number(latency_ms));
   require(std::isfinite(max_saccade_deg_per_s) && max_saccade_deg_per_s >= 0.0 &&
               max_saccade_deg_per_s <= 1000.0,
-          "max_saccade_deg_per_s: expected 0..1000, got " + std::to_string(max_saccade_deg_per_s));
+          "max_saccade_deg_per_s: expected 0..1000, got " + format_number(max_saccade_deg_per_s));
   require(std::isfinite(fovea_deg) && fovea_deg > 0.0 && fovea_deg < 179.0,
-          "fovea_deg: expected (0, 179), got " + std::to_string(fovea_deg));
+          "fovea_deg: expected (0, 179), got " + format_number(fovea_deg));
   require(std::isfinite(blend_border_px) && blend_border_px >= 0.0,
-          "blend_border_px: must be >= 0, got " + std::to_string(blend_border_px));
+          "blend_border_px: must be >= 0, got " + format_number(blend_border_px));
   require(std::isfinite(error_px), "error_px: must be finite");
 }
 
@@ -51,9 +52,9 @@ void KernelLogPolar::validate() const {
   require(std::isfinite(screen_w) && screen_w >= 1.0 && std::isfinite(screen_h) && screen_h >= 1.0,
           "logpolar: screen size must be >= 1 pixel");
   require(std::isfinite(sigma) && sigma >= 1.0 && sigma <= 16.0,
-          "sigma: expected 1..16, got " + std::to_string(sigma));
+          "sigma: expected 1..16, got " + format_number(sigma));
   require(std::isfinite(alpha) && alpha >= 0.1 && alpha <= 16.0,
-          "alpha: expected 0.1..16, got " + std::to_string(alpha));
+          "alpha: expected 0.1..16, got " + format_number(alpha));
 }
 
 double KernelLogPolar::log_extent() const { return std::log(std::hypot(screen_w, screen_h)); }

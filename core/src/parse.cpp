@@ -1,11 +1,31 @@
 #include "foveate/core/parse.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "foveate/core/error.hpp"
 
 namespace foveate {
+
+std::string format_number(double v, int max_decimals) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  const double a = std::fabs(v);
+  if (a >= 1e15 || (a > 0 && a < std::pow(10.0, -max_decimals))) {
+    std::snprintf(buf, sizeof buf, "%.6g", v);  // beyond the everyday range
+    return buf;
+  }
+  std::snprintf(buf, sizeof buf, "%.*f", max_decimals < 0 ? 0 : max_decimals, v);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
 
 bool parse_number(const std::string& s, double& out) {
   if (s.empty()) return false;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate {
 
@@ -45,10 +46,10 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   const int n = opt.layers;
   if (n < 1 || n > 6) throw Error("layers: expected 1..6, got " + std::to_string(n));
   if (!(opt.grid_step_deg > 0.0) || opt.grid_step_deg > 1.0) {
-    throw Error("grid step: expected (0, 1] degrees, got " + std::to_string(opt.grid_step_deg));
+    throw Error("grid step: expected (0, 1] degrees, got " + format_number(opt.grid_step_deg));
   }
   if (!(acuity.slope > 0.0) || !std::isfinite(acuity.slope)) {
-    throw Error("slope: must be a positive number, got " + std::to_string(acuity.slope));
+    throw Error("slope: must be a positive number, got " + format_number(acuity.slope));
   }
   std::vector<double> w = opt.weights;
   if (w.empty()) w.assign(n, 1.0);
@@ -85,7 +86,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
       if (!(s2 >= 1.0)) throw Error("fixed s2: must be >= 1");
       const double e1 = acuity.eccentricity_for_mar(s2 * g.sharp);
       if (!(e1 > 0.0 && e1 < g.e_star)) {
-        throw Error("fixed s2: s2 = " + std::to_string(s2) + " puts e1 outside the display");
+        throw Error("fixed s2: s2 = " + format_number(s2) + " puts e1 outside the display");
       }
       first = {e1};
     }

@@ -79,7 +79,7 @@ std::string DropCounts::summary() const {
 
 SampleValidator::SampleValidator(double margin) : margin_(margin) {
   if (!(std::isfinite(margin) && margin >= 0.0 && margin <= 10.0)) {
-    throw Error("gaze margin: expected 0..10 screen widths, got " + std::to_string(margin));
+    throw Error("gaze margin: expected 0..10 screen widths, got " + format_number(margin));
   }
 }
 
@@ -149,7 +149,8 @@ Vec2d parse_fixed(const std::string& text, const Display& d) {
 }  // namespace
 
 const char* gaze_spec_help() {
-  return "fixed:X,Y (pixels, or normalized 0.5,0.5) | trace:FILE (CSV, Pupil gaze_positions.csv, "
+  return "X,Y or fixed:X,Y (pixels, or normalized with a decimal point: 0.5,0.5) | trace:FILE "
+         "(CSV, Pupil gaze_positions.csv, "
          "JSON) | synthetic[:SEED] | pupil[:HOST[:PORT]] (default 127.0.0.1:50020) | mouse | "
          "nearest (the nearest scene object)";
 }

@@ -30,5 +30,10 @@ Image read_image(const std::string& path);
 void write_png(const std::string& path, const Image& image);
 /// Encodes as PNG in memory (e.g. to embed in an HTML report).
 std::string encode_png(const Image& image);
+/// Encodes as baseline JPEG (alpha dropped) in memory; quality 1..100.
+std::string encode_jpeg(const Image& image, int quality = 85);
+/// A box-filtered copy at most `max_width` wide (the image itself when it is
+/// narrower), keeping the aspect ratio.
+Image downscale(const Image& image, int max_width);
 
 }  // namespace foveate

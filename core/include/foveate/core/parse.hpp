@@ -7,6 +7,11 @@
 
 namespace foveate {
 
+/// A number as people read it: no exponent in the everyday range, at most
+/// `max_decimals` decimals, trailing zeros dropped (9 -> "9", 2073600 ->
+/// "2073600", 0.0275 -> "0.0275", 1.0 / 3 -> "0.333333"); "nan", "inf", "-inf".
+std::string format_number(double value, int max_decimals = 6);
+
 /// The whole string as a finite number; false otherwise.
 bool parse_number(const std::string& text, double& out);
 
