@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "output_dir.hpp"
 
 namespace foveate::app {
 
@@ -103,7 +104,9 @@ void register_bench(CLI::App& app) {
   sub->callback([a, &app] {
     std::string cl = "foveate bench";
     for (const auto& s : app.remaining()) cl += " " + s;
-    const BenchResult r = run_bench(to_options(*a, cl));
+    const BenchOptions o = to_options(*a, cl);
+    const OutputDirLock out_lock(o.out, "--out");
+    const BenchResult r = run_bench(o);
     write_bench_outputs(r);
     print_summary(r);
   });
@@ -126,7 +129,9 @@ void register_demo(CLI::App& app) {
     std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
               << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
               << ", display " << a->session.display << " at " << a->session.size << std::endl;
-    const BenchResult r = run_bench(to_options(*a, "foveate demo"));
+    const BenchOptions o = to_options(*a, "foveate demo");
+    const OutputDirLock out_lock(o.out, "--out");
+    const BenchResult r = run_bench(o);
     write_bench_outputs(r);
     print_summary(r);
   });

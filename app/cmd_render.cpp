@@ -11,6 +11,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "output_dir.hpp"
 #include "session.hpp"
 
 namespace foveate::app {
@@ -40,7 +41,7 @@ void run_render(const RenderArgs& a) {
   const int reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   const ParamArgs params = parse_params(a.session.params);
   validate_params(params, {a.technique});
-  std::filesystem::create_directories(a.out);
+  const OutputDirLock out_lock(a.out, "--out");
   Session session(o, a.session.gaze);
   Renderer& renderer = session.renderer();
   renderer.set_overlay(a.overlay);
@@ -50,7 +51,9 @@ void run_render(const RenderArgs& a) {
   double shaded = 0, native = 0;
   for (int k = 0; k < a.frames; ++k) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
-    const FrameStats s = renderer.render(*technique, k, gaze);
+    const std::string frame = "frame " + std::to_string(k) + " (" + a.technique + ")";
+    const FrameStats s = session.watchdog().run(
+        frame, [&] { return renderer.render(*technique, k, gaze); });
     shaded += s.shaded_pixels;
     native += s.native_pixels;
     char name[64];
@@ -58,8 +61,11 @@ void run_render(const RenderArgs& a) {
     write_png((std::filesystem::path(a.out) / name).string(), renderer.read_output());
     if (supersampled) {
       std::snprintf(name, sizeof name, "reference-%04d.png", k);
-      write_png((std::filesystem::path(a.out) / name).string(),
-                supersampled->render(renderer.frame_input(k)));
+      const Image ref = session.watchdog().run(
+          "frame " + std::to_string(k) + " of the ssaa:" + std::to_string(reference) + " reference",
+          [&] { return supersampled->render(renderer.frame_input(k)); },
+          double(reference) * reference);
+      write_png((std::filesystem::path(a.out) / name).string(), ref);
     }
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "

@@ -10,6 +10,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/stats.hpp"
+#include "output_dir.hpp"
 #include "report_media.hpp"
 #include "svg_plot.hpp"
 
@@ -402,7 +403,7 @@ std::string bench_markdown(const BenchResult& b) {
 
 void write_bench_outputs(const BenchResult& b) {
   namespace fs = std::filesystem;
-  fs::create_directories(b.options.out);
+  make_output_dir(b.options.out, "--out");
   const fs::path dir(b.options.out);
   write_file_atomic((dir / "results.json").string(), to_json(b).dump(2) + "\n");
   write_file_atomic((dir / "results.csv").string(), csv(b));

@@ -82,7 +82,7 @@ CameraPath CameraPath::from_json(const nlohmann::json& j, const std::string& whe
 }
 
 CameraPath CameraPath::load(const std::string& file) {
-  return from_json(read_json_file(file), file);
+  return from_json(read_json_file(file, "camera path"), file);
 }
 
 CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double period,
