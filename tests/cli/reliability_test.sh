@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# Hostile and extreme input (issue 13): every case ends with the documented
+# exit code (1 = bad input, 2 = bad usage) and a message naming the input;
+# nothing hangs, crashes or silently renders something wrong.
+set -u
+fail=0
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+data="$FOVEATE_SOURCE_DIR/tests/data/shadertoy"
+# name, expected exit code, expected text, args... (each run bounded in time)
+expect() {
+  local name=$1 code=$2 text=$3; shift 3
+  local err rc
+  err=$(timeout 60 "$FOVEATE" "$@" 2>&1); rc=$?
+  if [[ $rc -eq $code && "$err" == *"$text"* ]]; then echo "ok: $name"; else
+    echo "FAIL: $name (exit $rc, expected $code with '$text'): $err"; fail=1; fi
+}
+
+# ---- usage errors exit 2, help and version 0
+expect "unknown option: exit 2" 2 "--bogus" render --scene cheap --out "$tmp/u" --bogus
+expect "missing required option: exit 2" 2 "--scene is required" render --out "$tmp/u"
+expect "value of the wrong type: exit 2" 2 "--frames" render --scene cheap --out "$tmp/u" --frames abc
+expect "20-digit --frames: exit 2" 2 "--frames" render --scene cheap --out "$tmp/u" --frames 99999999999999999999
+expect "no subcommand: exit 2" 2 "A subcommand is required"
+expect "--help: exit 0" 0 "Usage" render --help
+expect "--version: exit 0" 0 "foveate" --version
+
+# ---- caps
+expect "sweep with too many values names the limit" 1 "over the limit of 50" \
+  bench --scene cheap --size 32x32 --sweep slope=1e16:2e16:1 --out "$tmp/s1"
+"$FOVEATE" bench --scene cheap --size 32x18 --frames 1 --warmup 0 --no-metrics --quiet --techniques native \
+  --sweep slope=1e16:1e16:1 --out "$tmp/s2" > /dev/null 2>&1 & pid=$!
+for _ in $(seq 600); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+if kill -0 $pid 2>/dev/null; then kill $pid; echo "FAIL: a sweep whose step does not change the value runs on"; fail=1
+else echo "ok: a sweep whose step does not change the value ends"; fi
+expect "plan --step 1e-9 is capped, naming the limit and how to raise it" 1 "over the limit of 10000" plan --step 1e-9
+expect "... and says --max-grid" 1 "--max-grid" plan --step 1e-9
+expect "plan --sweep with a tiny step is capped too" 1 "over the limit" plan --step 1e-7 --sweep "$tmp/sweep.csv"
+out=$("$FOVEATE" plan --step 0.002 --max-grid 20000 2>&1); rc=$?
+if [[ $rc -eq 0 && "$out" == *"pixel ratio"* ]]; then echo "ok: --max-grid raises the limit"; else echo "FAIL: --max-grid: $out"; fail=1; fi
+expect "bad --max-grid" 1 "--max-grid" plan --max-grid 0
+printf 'time_s,x,y\n' > "$tmp/big.csv"
+head -c 2200000 /dev/zero | tr '\0' '\n' >> "$tmp/big.csv"
+FOVEATE_MAX_TRACE_MB=1 expect "a trace over the size limit names it and how to raise it" 1 "FOVEATE_MAX_TRACE_MB" gaze stats "$tmp/big.csv"
+FOVEATE_MAX_TRACE_MB=1 expect "... and the limit" 1 "over the limit of 1.0 MiB" gaze stats "$tmp/big.csv"
+FOVEATE_MAX_TRACE_MB=lots expect "a bad FOVEATE_MAX_TRACE_MB" 1 "FOVEATE_MAX_TRACE_MB" gaze stats "$tmp/big.csv"
+
+# ---- inputs that are not regular files are refused before they are opened
+mkfifo "$tmp/fifo"
+expect "display JSON that is a FIFO" 1 "fifo: the display JSON is a named pipe" plan --display "$tmp/fifo"
+expect "camera path that is a FIFO" 1 "fifo: the camera path is a named pipe" render --scene cheap --size 32x32 --camera-path "$tmp/fifo" --out "$tmp/f"
+expect "gaze trace that is a FIFO (render)" 1 "the gaze trace is a named pipe" render --scene cheap --size 32x32 --gaze "trace:$tmp/fifo" --out "$tmp/f"
+expect "gaze trace that is a FIFO (stats)" 1 "the gaze trace is a named pipe" gaze stats "$tmp/fifo"
+expect "gaze trace that is a device" 1 "/dev/zero: the gaze trace is a character device" gaze stats /dev/zero
+expect "gaze trace that is a directory" 1 "the gaze trace is a directory" gaze stats "$tmp"
+expect "display JSON that is a directory" 1 "the display JSON is a directory" plan --display "$tmp"
+expect "image that is a FIFO (compare)" 1 "the image is a named pipe" compare "$tmp/fifo" "$tmp/fifo"
+
+# ---- the watchdog: a frame over --frame-timeout stops the run, naming scene and frame
+start=$(date +%s)
+expect "a frame over --frame-timeout: exit 1 naming the scene and the frame" 1 \
+  "scene 'slow.glsl': frame 0 (native) did not finish within 1 s (--frame-timeout)" \
+  render --scene "$data/slow.glsl" --size 64x36 --frame-timeout 1 --out "$tmp/slow"
+took=$(( $(date +%s) - start ))
+if [[ $took -lt 30 ]]; then echo "ok: the watchdog stopped it in ${took} s"; else echo "FAIL: the watchdog took ${took} s"; fail=1; fi
+if [[ ! -e "$tmp/slow/frame-0000.png" ]]; then echo "ok: no frame written"; else echo "FAIL: a frame was written"; fail=1; fi
+expect "bench under the watchdog" 1 "did not finish within 1 s" \
+  bench --scene "$data/slow.glsl" --size 64x36 --frame-timeout 1 --techniques native --quiet --out "$tmp/slowb"
+expect "bad --frame-timeout" 1 "--frame-timeout: expected 0 (no limit) to 86400 seconds, got -1" \
+  render --scene cheap --size 32x32 --frame-timeout -1 --out "$tmp/x"
+expect "--frame-timeout 0 turns it off" 0 "rendered 1 frame" render --scene cheap --size 32x32 --frame-timeout 0 --out "$tmp/w0"
+
+# ---- outputs: errors name the path and the reason, exit 1
+echo "a file" > "$tmp/afile"
+expect "--out on an existing file" 1 "--out $tmp/afile: exists and is not a folder" render --scene cheap --size 32x32 --out "$tmp/afile"
+expect "--out below a file" 1 "cannot create the folder: Not a directory" render --scene cheap --size 32x32 --out "$tmp/afile/sub"
+expect "--out in /proc" 1 "--out /proc/foveate-out: cannot create the folder" render --scene cheap --size 32x32 --out /proc/foveate-out
+expect "--out /proc" 1 "--out /proc: cannot write into the folder" render --scene cheap --size 32x32 --out /proc
+expect "bench --out on an existing file" 1 "exists and is not a folder" bench --scene cheap --size 32x32 --out "$tmp/afile"
+if [[ $(id -u) -ne 0 ]]; then
+  mkdir "$tmp/ro"; chmod 555 "$tmp/ro"
+  expect "--out in a read-only folder" 1 "cannot write into the folder" render --scene cheap --size 32x32 --out "$tmp/ro"
+  chmod 755 "$tmp/ro"
+fi
+
+# ---- an output folder is locked by the run using it
+"$FOVEATE" render --scene "$data/slow.glsl" --size 64x36 --frame-timeout 20 --out "$tmp/busy" > /dev/null 2>&1 & busy=$!
+for _ in $(seq 100); do [[ -s "$tmp/busy/.foveate.lock" ]] && break; sleep 0.1; done
+expect "a second run into a folder in use" 1 "--out $tmp/busy: the folder is in use by another foveate run (pid $busy)" \
+  render --scene cheap --size 32x32 --out "$tmp/busy"
+expect "... bench too" 1 "the folder is in use by another foveate run" bench --scene cheap --size 32x32 --quiet --out "$tmp/busy"
+kill $busy 2>/dev/null; wait $busy 2>/dev/null
+expect "the folder is free again once the run ended" 0 "rendered 1 frame" render --scene cheap --size 32x32 --out "$tmp/busy"
+
+# ---- JSON values the parser cannot hold name the file and the key
+printf '{"name": "x", "width_px": 100, "height_px": 100, "width_mm": 1e999, "distance_mm": 500}' > "$tmp/d1.json"
+expect "1e999 in a display JSON" 1 "d1.json: the number 1e999 at byte 66 (key width_mm) is out of range" plan --display "$tmp/d1.json"
+printf '{"loop": false, "keyframes": [{"t": 0, "position": [0, -1e999, 5]}]}' > "$tmp/c1.json"
+expect "1e999 in a camera path" 1 "(key keyframes[0].position[1]) is out of range" render --scene cheap --size 32x32 --camera-path "$tmp/c1.json" --out "$tmp/x"
+printf '{"samples": [[0, 0.5, 0.5], [1e999, 0.5, 0.5]]}' > "$tmp/t1.json"
+expect "1e999 in a JSON trace" 1 "(key samples[1][0]) is out of range" gaze stats "$tmp/t1.json"
+printf '{"name": "x", "width_px": 99999999999999999999, "height_px": 100, "width_mm": 100, "distance_mm": 500}' > "$tmp/d2.json"
+expect "a 20-digit integer is out of range, not a fraction" 1 "width_px: 1e+20 is out of range [1, 65536]" plan --display "$tmp/d2.json"
+printf '{"name": "x", "width_px": 12345678901234567890, "height_px": 100, "width_mm": 100, "distance_mm": 500}' > "$tmp/d3.json"
+expect "a 20-digit integer within uint64 is out of range" 1 "width_px: 12345678901234567890 is out of range" plan --display "$tmp/d3.json"
+printf '{"name": "x", "width_px": 100.5, "height_px": 100, "width_mm": 100, "distance_mm": 500}' > "$tmp/d4.json"
+expect "a fraction is still a fraction" 1 "width_px: expected an integer, got a fraction" plan --display "$tmp/d4.json"
+
+# ---- values beyond a limit say the limit
+expect "--fps 1000000 names the limit" 1 "--fps: expected a rate above 0 and at most 10000 frames per second, got 1e+06" \
+  render --scene cheap --size 32x32 --fps 1000000 --out "$tmp/x"
+expect "--param msaa beyond the GL implementation" 1 "supports G-buffer MSAA of at most" \
+  render --scene guenter --size 32x32 --technique layered --param msaa=8 --out "$tmp/x"
+
+# ---- a camera looking straight down renders the scene (not an empty frame)
+printf '{"loop": false, "keyframes": [{"t": 0, "position": [0, 6, 0], "target": [0, 0, 0]}]}' > "$tmp/down.json"
+for scene in cheap guenter; do
+  "$FOVEATE" render --scene "$scene" --size 64x36 --camera-path "$tmp/down.json" --out "$tmp/down-$scene" > /dev/null 2>&1
+  "$FOVEATE" render --scene "$scene" --size 64x36 --out "$tmp/default-$scene" > /dev/null 2>&1
+  # An empty frame is one colour: its PNG compresses to almost nothing.
+  size=$(stat -c %s "$tmp/down-$scene/frame-0000.png" 2>/dev/null || echo 0)
+  if [[ $size -gt 1000 ]]; then echo "ok: $scene seen from straight above has content ($size bytes)"; else
+    echo "FAIL: $scene seen from straight above is empty ($size bytes)"; fail=1; fi
+done
+
+# ---- techniques: every default lies within its declared range, at any size
+for size in 64x36 1x1 16384x16384; do
+  "$FOVEATE" techniques --size $size > "$tmp/tech.txt"
+  if awk '/^  [a-z_0-9]+ +=/ { v=$3; r=$NF; gsub(/[\[\]]/, "", r); split(r, b, "\\.\\."); if (v+0 < b[1]+0 || v+0 > b[2]+0) { print; bad=1 } } END { exit bad }' "$tmp/tech.txt"; then
+    echo "ok: defaults within their ranges at $size"; else echo "FAIL: a default outside its range at $size"; fail=1; fi
+done
+exit $fail
