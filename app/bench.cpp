@@ -228,8 +228,8 @@ BenchResult run_bench(const BenchOptions& o) {
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
       FrameStats s;
-      const double ms = session.watchdog().run(
-          "frame " + std::to_string(frame) + " (" + r.technique + ")", [&] {
+      const double ms =
+          session.watchdog().run("frame " + std::to_string(frame) + " (" + r.technique + ")", [&] {
             timer.start();
             s = renderer.render(*r.impl, frame, g);
             return timer.stop();

@@ -77,7 +77,8 @@ void run_stats(const StatsArgs& a) {
   if (!(a.min_confidence >= 0 && a.min_confidence <= 1))
     throw Error("--min-confidence: expected 0..1");
   const Trace trace = load_trace(a.file, to);
-  for (const std::string& w : trace.warnings) std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
+  for (const std::string& w : trace.warnings)
+    std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
   IvtOptions io;
   io.velocity_deg_per_s = a.velocity;
   io.min_fixation_s = a.min_fixation_ms * 1e-3;
@@ -176,7 +177,7 @@ class StopSignals {
 
  private:
   static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
-  struct sigaction previous_[3] {};
+  struct sigaction previous_[3]{};
 };
 
 const char* signal_name(int sig) {

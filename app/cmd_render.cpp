@@ -52,8 +52,8 @@ void run_render(const RenderArgs& a) {
   for (int k = 0; k < a.frames; ++k) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
     const std::string frame = "frame " + std::to_string(k) + " (" + a.technique + ")";
-    const FrameStats s = session.watchdog().run(
-        frame, [&] { return renderer.render(*technique, k, gaze); });
+    const FrameStats s =
+        session.watchdog().run(frame, [&] { return renderer.render(*technique, k, gaze); });
     shaded += s.shaded_pixels;
     native += s.native_pixels;
     char name[64];

@@ -91,8 +91,8 @@ void run_view(const ViewArgs& a) {
     FrameInput input = renderer.frame_input(frame);
     input.time_s = o.start_time + t;  // the viewer runs on the wall clock
     FrameStats s;
-    const double ms = session.watchdog().run(
-        "frame " + std::to_string(frame) + " (" + names[current] + ")", [&] {
+    const double ms =
+        session.watchdog().run("frame " + std::to_string(frame) + " (" + names[current] + ")", [&] {
           timer.start();
           s = renderer.render(*technique, input, gaze);
           return timer.stop();

@@ -125,8 +125,9 @@ SessionOptions to_session_options(const SessionArgs& a) {
   if (!(a.fps > 0.0 && a.fps <= 10000.0)) {
     char got[32];
     std::snprintf(got, sizeof got, "%g", a.fps);
-    throw Error(std::string("--fps: expected a rate above 0 and at most 10000 frames per second, got ") +
-                got);
+    throw Error(
+        std::string("--fps: expected a rate above 0 and at most 10000 frames per second, got ") +
+        got);
   }
   if (!std::isfinite(a.time)) throw Error("--time: must be finite");
   o.fps = a.fps;
@@ -165,7 +166,9 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   gaze::GazeContext ctx;
   ctx.display = display_;
   ctx.strict_traces = o.strict_traces;
-  ctx.warn = [](const std::string& w) { std::fprintf(stderr, "foveate: warning: %s\n", w.c_str()); };
+  ctx.warn = [](const std::string& w) {
+    std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
+  };
   ctx.mouse = std::move(mouse);
   Scene* scene = scene_.get();
   const double w = o.size.width, h = o.size.height;

@@ -111,8 +111,8 @@ bool JsonReader::number(const char* key, double& out, double min, double max) {
 bool JsonReader::integer(const char* key, int& out, int min, int max) {
   const nlohmann::json* v = get(key);
   if (!v) return false;
-  const std::string range = " is out of range [" + std::to_string(min) + ", " +
-                            std::to_string(max) + "]";
+  const std::string range =
+      " is out of range [" + std::to_string(min) + ", " + std::to_string(max) + "]";
   if (v->is_number_float()) {
     // A whole number too long for a 64-bit integer (20 digits) is read as a
     // double: out of range, not a fraction; 1e3 is a whole number too.

@@ -211,7 +211,8 @@ struct PupilSource::Impl {
     if (!t_text) return fail_request("no answer to t (the tracker's clock)"), false;
     const double t = std::strtod(t_text->c_str(), &end);
     if (t_text->empty() || *end != '\0' || !std::isfinite(t)) {
-      return fail_request("the answer to t, '" + printable(*t_text) + "', is not a time in seconds"),
+      return fail_request("the answer to t, '" + printable(*t_text) +
+                          "', is not a time in seconds"),
              false;
     }
     offset = t - 0.5 * (before + after);

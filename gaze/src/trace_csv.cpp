@@ -249,7 +249,8 @@ Trace parse_trace_csv(const std::string& text, const std::string& where,
     }
   }
   if (b.trace.skipped_rows > kMaxRowWarnings) {
-    b.trace.warnings.push_back(where + ": " + std::to_string(b.trace.skipped_rows - kMaxRowWarnings) +
+    b.trace.warnings.push_back(where + ": " +
+                               std::to_string(b.trace.skipped_rows - kMaxRowWarnings) +
                                " more rows skipped");
   }
   if (header.empty()) throw Error(where + ": empty file: expected a header line and samples");

@@ -68,8 +68,8 @@ struct Builder {
     if (trace.samples.empty()) {
       std::string msg = where + ": no usable gaze sample (" + trace.dropped.summary();
       if (trace.skipped_rows > 0) {
-        msg += "; " + std::to_string(trace.skipped_rows) + " row(s) could not be read, the first: " +
-               trace.warnings.front();
+        msg += "; " + std::to_string(trace.skipped_rows) +
+               " row(s) could not be read, the first: " + trace.warnings.front();
       }
       msg += ")";
       if (trace.dropped.out_of_range > 0 && pos_unit == PosUnit::kNormalized) {

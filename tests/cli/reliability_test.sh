@@ -35,7 +35,8 @@ else echo "ok: a sweep whose step does not change the value ends"; fi
 expect "plan --step 1e-9 is capped, naming the limit and how to raise it" 1 "over the limit of 10000" plan --step 1e-9
 expect "... and says --max-grid" 1 "--max-grid" plan --step 1e-9
 expect "plan --sweep with a tiny step is capped too" 1 "over the limit" plan --step 1e-7 --sweep "$tmp/sweep.csv"
-out=$("$FOVEATE" plan --step 0.002 --max-grid 20000 2>&1); rc=$?
+expect "a small --max-grid refuses a step within the default" 1 "over the limit of 20" plan --step 0.5 --max-grid 20
+out=$("$FOVEATE" plan --step 0.5 --max-grid 50 2>&1); rc=$?
 if [[ $rc -eq 0 && "$out" == *"pixel ratio"* ]]; then echo "ok: --max-grid raises the limit"; else echo "FAIL: --max-grid: $out"; fail=1; fi
 expect "bad --max-grid" 1 "--max-grid" plan --max-grid 0
 printf 'time_s,x,y\n' > "$tmp/big.csv"
