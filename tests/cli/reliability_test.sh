@@ -123,6 +123,46 @@ for scene in cheap guenter; do
     echo "FAIL: $scene seen from straight above is empty ($size bytes)"; fail=1; fi
 done
 
+# ---- logpolar at tiny and flat sizes: native where the disc covers the screen,
+# and never a black (unshaded) pixel
+cat > "$tmp/png.py" <<'PY'
+import struct, sys, zlib
+def load(path):
+    d = open(path, "rb").read(); i = 8; idat = b""
+    while i < len(d):
+        n = struct.unpack(">I", d[i:i + 4])[0]; t = d[i + 4:i + 8]
+        if t == b"IHDR": w, h, _, ct = struct.unpack(">IIBB", d[i + 8:i + 18])
+        if t == b"IDAT": idat += d[i + 8:i + 8 + n]
+        i += 12 + n
+    raw = zlib.decompress(idat); bpp = 4 if ct == 6 else 3; stride = w * bpp
+    rows, prev, k = [], bytearray(stride), 0
+    for _ in range(h):
+        f = raw[k]; line = bytearray(raw[k + 1:k + 1 + stride]); k += 1 + stride
+        for x in range(stride):
+            a = line[x - bpp] if x >= bpp else 0; b = prev[x]; c = prev[x - bpp] if x >= bpp else 0
+            if f == 1: line[x] = (line[x] + a) & 255
+            elif f == 2: line[x] = (line[x] + b) & 255
+            elif f == 3: line[x] = (line[x] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line); prev = line
+    return [tuple(r[x * bpp:x * bpp + 3]) for r in rows for x in range(w)]
+native, test = load(sys.argv[1]), load(sys.argv[2])
+diff = max(max(abs(p - q) for p, q in zip(a, b)) for a, b in zip(native, test))
+black = sum(1 for p in test if p == (0, 0, 0) and p not in native)
+print(diff, black)
+PY
+for size in 1x1 2x2 3x3 8x1 1x8 16x2 2x16 200x3; do
+  "$FOVEATE" render --scene cheap --size $size --out "$tmp/lpn-$size" > /dev/null
+  "$FOVEATE" render --scene cheap --size $size --technique logpolar --out "$tmp/lpl-$size" > /dev/null
+  read -r diff black < <(python3 "$tmp/png.py" "$tmp/lpn-$size/frame-0000.png" "$tmp/lpl-$size/frame-0000.png")
+  case $size in 1x1|2x2|3x3) want="diff=0";; *) want="no black";; esac
+  if [[ ( $want == "diff=0" && $diff -eq 0 ) || ( $want == "no black" && $black -eq 0 && $diff -lt 80 ) ]]; then
+    echo "ok: logpolar at $size ($want: max difference $diff, $black black)"; else
+    echo "FAIL: logpolar at $size: max difference $diff from native, $black black pixels"; fail=1; fi
+done
+
 # ---- techniques: every default lies within its declared range, at any size
 for size in 64x36 1x1 16384x16384; do
   "$FOVEATE" techniques --size $size > "$tmp/tech.txt"
