@@ -93,7 +93,12 @@ Sweep Sweep::parse(const std::string& text) {
   if (!(v[2] > 0) || v[1] < v[0]) throw Error("--sweep: need FROM <= TO and STEP > 0");
   // Counted, not accumulated: a step too small to change the value cannot loop.
   const double count = std::floor((v[1] - v[0]) / v[2] + 1e-9) + 1;
-  if (!(count <= 50)) throw Error("--sweep: at most 50 values");
+  if (!(count <= kMaxSweepValues)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "%.0f values, over the limit of %d; use a larger STEP", count,
+                  kMaxSweepValues);
+    throw Error("--sweep " + text + ": " + msg);
+  }
   Sweep s;
   s.key = text.substr(0, eq);
   for (int i = 0; i < static_cast<int>(count); ++i) s.values.push_back(v[0] + i * v[2]);
@@ -251,7 +256,8 @@ BenchResult run_bench(const BenchOptions& o) {
     const double t = renderer.frame_input(k).time_s;
     const GazeState g = gaze.at(t);
     for (Run& r : runs) {
-      renderer.render(*r.impl, k, g);
+      session.watchdog().run("warm-up frame " + std::to_string(k) + " (" + r.technique + ")",
+                             [&] { renderer.render(*r.impl, k, g); });
       progress.step("warm-up " + r.technique);
     }
   }
@@ -267,14 +273,24 @@ BenchResult run_bench(const BenchOptions& o) {
     // The image every run is judged against: native, or the supersampled
     // reference (untimed, rendered from a scene of its own).
     Image reference_image;
-    if (reference) reference_image = reference->render(renderer.frame_input(frame));
+    if (reference) {
+      reference_image = session.watchdog().run(
+          "frame " + std::to_string(frame) + " of the ssaa:" + std::to_string(o.reference) +
+              " reference",
+          [&] { return reference->render(renderer.frame_input(frame)); },
+          double(o.reference) * o.reference);
+    }
     std::vector<std::pair<size_t, Image>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
-      timer.start();
+      FrameStats s;
       if (profiler) profiler->begin_frame();
-      const FrameStats s = renderer.render(*r.impl, frame, g);
-      const double ms = timer.stop();
+      const double ms =
+          session.watchdog().run("frame " + std::to_string(frame) + " (" + r.technique + ")", [&] {
+            timer.start();
+            s = renderer.render(*r.impl, frame, g);
+            return timer.stop();
+          });
       r.result.frame_ms.push_back(ms);
       if (profiler) add_passes(r.result.passes, profiler->end_frame(), ms);
       if (std::isfinite(timer.gpu_ms())) r.result.gpu_ms.push_back(timer.gpu_ms());

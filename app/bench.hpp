@@ -15,6 +15,9 @@
 
 namespace foveate::app {
 
+/// The most values one --sweep may have (each is a full run of the frames).
+inline constexpr int kMaxSweepValues = 50;
+
 /// --sweep KEY=FROM:TO:STEP: the MAR slope, a parameter of every technique
 /// that declares it, or one technique's (TECHNIQUE.KEY).
 struct Sweep {

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "output_dir.hpp"
 
 namespace foveate::app {
 
@@ -138,7 +139,9 @@ void register_bench(CLI::App& app) {
   add_common(sub, *a);
   sub->add_option("--sweep", a->sweep, "Sweep KEY=FROM:TO:STEP (slope, or a technique parameter)");
   sub->callback([a] {
-    const BenchResult r = run_bench(to_options(*a, "foveate bench"));
+    const BenchOptions o = to_options(*a, "foveate bench");
+    const OutputDirLock out_lock(o.out, "--out");
+    const BenchResult r = run_bench(o);
     if (!quiet() && !a->json) std::cerr << "bench: writing the report" << std::endl;
     write_bench_outputs(r);
     print_summary(r, a->json);
@@ -161,7 +164,9 @@ void register_demo(CLI::App& app) {
       std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
                 << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
                 << ", display " << a->session.display << " at " << a->session.size << std::endl;
-    const BenchResult r = run_bench(to_options(*a, "foveate demo"));
+    const BenchOptions o = to_options(*a, "foveate demo");
+    const OutputDirLock out_lock(o.out, "--out");
+    const BenchResult r = run_bench(o);
     if (!quiet() && !a->json) std::cerr << "demo: writing the report" << std::endl;
     write_bench_outputs(r);
     print_summary(r, a->json);

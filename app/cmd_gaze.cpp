@@ -60,6 +60,7 @@ struct StatsArgs {
   double min_fixation_ms = 60.0;
   double min_confidence = 0.6;
   bool json = false;
+  bool strict = false;
 };
 
 void run_stats(const StatsArgs& a) {
@@ -69,12 +70,15 @@ void run_stats(const StatsArgs& a) {
   to.pos_unit = pos_unit_from(a.units);
   to.width_px = d.width_px;
   to.height_px = d.height_px;
+  to.strict = a.strict;
   if (!(a.velocity > 0 && a.velocity < 10000)) throw Error("--velocity: expected 0..10000 deg/s");
   if (!(a.min_fixation_ms >= 0 && a.min_fixation_ms < 10000))
     throw Error("--min-fixation: expected 0..10000 ms");
   if (!(a.min_confidence >= 0 && a.min_confidence <= 1))
     throw Error("--min-confidence: expected 0..1");
   const Trace trace = load_trace(a.file, to);
+  for (const std::string& w : trace.warnings)
+    std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
   IvtOptions io;
   io.velocity_deg_per_s = a.velocity;
   io.min_fixation_s = a.min_fixation_ms * 1e-3;
@@ -99,6 +103,7 @@ void run_stats(const StatsArgs& a) {
                     {"backwards", st.dropped.backwards},
                     {"duplicate", st.dropped.duplicate},
                     {"total", st.dropped.total()}};
+    j["skipped_rows"] = trace.skipped_rows;
     j["lost_samples"] = st.lost_samples;
     j["dropouts"] = {
         {"count", st.dropouts}, {"total_s", st.dropout_s}, {"longest_s", st.longest_dropout_s}};
@@ -117,6 +122,10 @@ void run_stats(const StatsArgs& a) {
   std::printf("%s (%s): %zu samples over %.2f s, %.1f Hz\n", a.file.c_str(), trace.format.c_str(),
               st.samples, st.duration_s, st.rate_hz);
   std::printf("dropped while reading: %s\n", st.dropped.summary().c_str());
+  if (trace.skipped_rows > 0) {
+    std::printf("rows that could not be read (skipped): %llu\n",
+                static_cast<unsigned long long>(trace.skipped_rows));
+  }
   std::printf("lost samples (invalid or confidence < %.2f): %zu\n", a.min_confidence,
               st.lost_samples);
   std::printf("dropouts: %zu, %.3f s in total, longest %.0f ms\n", st.dropouts, st.dropout_s,
@@ -143,8 +152,46 @@ struct RecordArgs {
   double connect_timeout = 5.0;
 };
 
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted.store(true); }
+// The signal that stopped the recording (0: none yet).
+std::atomic<int> g_stop_signal{0};
+extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
+
+/// SIGINT, SIGTERM and SIGHUP stop the recording the same way: what was
+/// received so far is written (atomically) before the process ends. The
+/// previous handlers come back when the recording is written or abandoned.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal.store(0);
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    for (size_t i = 0; i < 3; ++i) sigaction(kSignals[i], &sa, &previous_[i]);
+  }
+  ~StopSignals() {
+    for (size_t i = 0; i < 3; ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  [[nodiscard]] static int received() { return g_stop_signal.load(); }
+
+ private:
+  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction previous_[3]{};
+};
+
+const char* signal_name(int sig) {
+  switch (sig) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGHUP:
+      return "SIGHUP";
+    default:
+      return "a signal";
+  }
+}
 
 void run_record(const RecordArgs& a) {
   if (a.from != "pupil" && a.from.rfind("pupil:", 0) != 0) {
@@ -157,14 +204,21 @@ void run_record(const RecordArgs& a) {
   po.queue_limit = 1 << 20;
   PupilSource src(po);
   if (!src.wait_connected(a.connect_timeout)) {
+    const std::string why = src.counters().last_failure;
+    if (why.rfind("the answer", 0) == 0) {  // it answered, but not as Pupil Remote does
+      throw Error("--from " + a.from + ": Pupil Capture at " + po.host + ":" +
+                  std::to_string(po.port) + " answered, but " + why);
+    }
     throw Error("cannot reach Pupil Capture at " + po.host + ":" + std::to_string(po.port) +
-                " within " + fmt(a.connect_timeout, 1) + " s (is Pupil Remote enabled?)");
+                " within " + fmt(a.connect_timeout, 1) + " s (is Pupil Remote enabled?)" +
+                (why.empty() ? "" : ": " + why));
   }
+  const StopSignals signals;
   if (!quiet())
-    std::fprintf(stderr, "recording %s for %.1f s (Ctrl-C stops early)\n", src.describe().c_str(),
-                 a.seconds);
-  g_interrupted.store(false);
-  auto previous = std::signal(SIGINT, on_interrupt);
+    std::fprintf(stderr,
+                 "recording %s for %.1f s (Ctrl-C, SIGTERM or SIGHUP stop early and keep what was "
+                 "recorded)\n",
+                 src.describe().c_str(), a.seconds);
   Trace trace;
   trace.format = "csv";
   std::vector<double> arrivals;
@@ -176,12 +230,11 @@ void run_record(const RecordArgs& a) {
       trace.latency_ms.push_back((arrivals[i] - got[i].time_s) * 1e3);
     }
   };
-  while (!g_interrupted.load() && src.now_s() - start < a.seconds) {
+  while (StopSignals::received() == 0 && src.now_s() - start < a.seconds) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     collect();
   }
   collect();
-  std::signal(SIGINT, previous);
   const PupilCounters c = src.counters();
   if (trace.samples.empty()) {
     throw Error("no gaze received from " + po.host + ":" + std::to_string(po.port) + " (" +
@@ -191,8 +244,12 @@ void run_record(const RecordArgs& a) {
   for (GazeSample& s : trace.samples) s.time_s -= trace.time_origin_s;
   trace.dropped = c.dropped;
   write_file_atomic(a.out, trace_to_csv(trace));
+  if (StopSignals::received() != 0) {
+    std::fprintf(stderr, "stopped by %s\n", signal_name(StopSignals::received()));
+  }
   std::printf("wrote %s: %zu samples over %.2f s; %s\n", a.out.c_str(), trace.samples.size(),
               trace.duration_s(), c.summary().c_str());
+  std::fflush(stdout);
 }
 
 // ------------------------------------------------------------ synth
@@ -268,6 +325,9 @@ void register_gaze(CLI::App& app) {
   stats->add_option("--min-confidence", s->min_confidence, "Samples below are lost")
       ->capture_default_str();
   stats->add_flag("--json", s->json, "Print JSON");
+  stats->add_flag("--strict", s->strict,
+                  "A row that cannot be read is an error (default: skipped with a warning naming "
+                  "its line; a last line cut off mid-write likewise)");
   stats->callback([s] { run_stats(*s); });
 
   auto r = std::make_shared<RecordArgs>();

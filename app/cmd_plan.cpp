@@ -31,6 +31,7 @@ struct PlanArgs {
   std::string size = kDefaultSize;
   std::optional<double> fixed_s2;
   double step = 0.05;
+  int max_grid = PlannerOptions{}.max_grid_points;
   bool half_rate_weights = false;
   bool json = false;
   std::string sweep;
@@ -107,6 +108,10 @@ std::string sweep_svg(const std::vector<SweepRow>& rows) {
 }
 
 void run_plan(const PlanArgs& a) {
+  if (a.max_grid < 1 || a.max_grid > 1000000) {
+    throw Error("--max-grid: expected 1..1000000 candidate radii, got " +
+                std::to_string(a.max_grid));
+  }
   if (!a.sweep.empty()) {
     const std::string ext = std::filesystem::path(a.sweep).extension().string();
     if (ext != ".csv" && ext != ".svg") {
@@ -118,7 +123,7 @@ void run_plan(const PlanArgs& a) {
     Progress progress("plan --sweep", "fields of view", 23, !a.json);
     for (int i = 0; i <= 22; ++i) {
       const double fov = 10.0 + 5.0 * i;
-      for (SweepRow& r : fov_sweep(fov, fov, 5.0, a.step)) rows.push_back(std::move(r));
+      for (SweepRow& r : fov_sweep(fov, fov, 5.0, a.step, a.max_grid)) rows.push_back(std::move(r));
       progress.step(format_number(fov) + " deg");
     }
     write_file_atomic(a.sweep, ext == ".csv" ? sweep_csv(rows) : sweep_svg(rows));
@@ -155,6 +160,7 @@ void run_plan(const PlanArgs& a) {
   opt.layers = a.layers;
   opt.grid_step_deg = a.step;
   opt.fixed_s2 = a.fixed_s2;
+  opt.max_grid_points = a.max_grid;
   if (a.half_rate_weights) {
     opt.weights.assign(a.layers, 0.5);
     opt.weights[0] = 1.0;
@@ -242,6 +248,9 @@ void register_plan(CLI::App& app) {
   sub->add_option("--fixed-s2", a->fixed_s2,
                   "Fix the second layer's sampling factor (the paper's 3* uses 2)");
   sub->add_option("--step", a->step, "Grid step of the radius search in degrees")
+      ->capture_default_str();
+  sub->add_option("--max-grid", a->max_grid,
+                  "Most candidate radii (e* / --step) searched; the time grows with the square")
       ->capture_default_str();
   sub->add_flag("--half-rate-weights", a->half_rate_weights,
                 "Optimise with weights 1, 1/2, 1/2, ... (outer layers at half rate)");

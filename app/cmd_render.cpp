@@ -13,6 +13,7 @@
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "output_dir.hpp"
 #include "process_stats.hpp"
 #include "progress.hpp"
 #include "session.hpp"
@@ -56,11 +57,8 @@ void run_render(const RenderArgs& a) {
     throw CLI::RequiredError("--out, --video or --no-write");
   if (reference > 1 && a.out.empty())
     throw Error("--reference: the reference frames are PNG files; give --out DIR too");
-  if (!a.out.empty() && !a.no_write) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.out, ec);
-    if (ec) throw Error("--out: cannot create the folder " + a.out + ": " + ec.message());
-  }
+  std::optional<OutputDirLock> out_lock;
+  if (!a.out.empty() && !a.no_write) out_lock.emplace(a.out, "--out");
   // Opened before rendering, so that a bad path fails at once.
   std::unique_ptr<VideoWriter> video;
   if (!a.video.empty()) {
@@ -82,10 +80,13 @@ void run_render(const RenderArgs& a) {
     const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
     Image native_image;
     if (native) {
-      renderer.render(*native, k, gaze);
+      session.watchdog().run("frame " + std::to_string(k) + " (native)",
+                             [&] { return renderer.render(*native, k, gaze); });
       native_image = renderer.read_output();
     }
-    const FrameStats s = renderer.render(*technique, k, gaze);
+    const std::string frame = "frame " + std::to_string(k) + " (" + a.technique + ")";
+    const FrameStats s =
+        session.watchdog().run(frame, [&] { return renderer.render(*technique, k, gaze); });
     shaded += s.shaded_pixels;
     native_pixels += s.native_pixels;
     if (a.stats_every > 0 && (k % a.stats_every == 0 || k + 1 == a.frames)) {
@@ -97,9 +98,15 @@ void run_render(const RenderArgs& a) {
                    format_number(s.shaded_pixels, 0).c_str());
     char name[64];
     std::snprintf(name, sizeof name, "frame-%04d.png", k);
+    const auto reference_image = [&] {
+      return session.watchdog().run(
+          "frame " + std::to_string(k) + " of the ssaa:" + std::to_string(reference) + " reference",
+          [&] { return supersampled->render(renderer.frame_input(k)); },
+          double(reference) * reference);
+    };
     if (a.no_write && !video) {
       // Read back as a written run would (the readback is part of the frame's cost).
-      if (supersampled) (void)supersampled->render(renderer.frame_input(k));
+      if (supersampled) (void)reference_image();
       progress.step(name);
       continue;
     }
@@ -115,8 +122,7 @@ void run_render(const RenderArgs& a) {
     if (supersampled && !a.no_write) {
       char ref[64];
       std::snprintf(ref, sizeof ref, "reference-%04d.png", k);
-      write_png((std::filesystem::path(a.out) / ref).string(),
-                supersampled->render(renderer.frame_input(k)));
+      write_png((std::filesystem::path(a.out) / ref).string(), reference_image());
     }
     progress.step(name);
   }

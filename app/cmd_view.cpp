@@ -89,9 +89,13 @@ void run_view(const ViewArgs& a) {
     const GazeState gaze = session.gaze().at(t);
     FrameInput input = renderer.frame_input(frame);
     input.time_s = o.start_time + t;  // the viewer runs on the wall clock
-    timer.start();
-    const FrameStats s = renderer.render(*technique, input, gaze);
-    const double ms = timer.stop();
+    FrameStats s;
+    const double ms =
+        session.watchdog().run("frame " + std::to_string(frame) + " (" + names[current] + ")", [&] {
+          timer.start();
+          s = renderer.render(*technique, input, gaze);
+          return timer.stop();
+        });
     shown_ms = shown_ms == 0 ? ms : 0.9 * shown_ms + 0.1 * ms;
     session.present();
     char title[256];

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
@@ -21,9 +22,17 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the message; --help and --version exit 0, every usage
+    // error (unknown option, missing value, a value of the wrong type) 2.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const foveate::Error& e) {
     std::fprintf(stderr, "foveate: error: %s\n", e.what());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The file system refused (a read-only mount, a full disk, /proc): the
+    // user's environment, not a bug.
+    std::fprintf(stderr, "foveate: error: %s: %s\n",
+                 e.path1().empty() ? "file system" : e.path1().c_str(), e.code().message().c_str());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "foveate: internal error: %s\n", e.what());

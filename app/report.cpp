@@ -11,6 +11,7 @@
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/core/stats.hpp"
+#include "output_dir.hpp"
 #include "report_common.hpp"
 
 namespace foveate::app {
@@ -159,7 +160,7 @@ nlohmann::json bench_json(const BenchResult& b) { return to_json(b); }
 
 void write_bench_outputs(const BenchResult& b) {
   namespace fs = std::filesystem;
-  fs::create_directories(b.options.out);
+  make_output_dir(b.options.out, "--out");
   const fs::path dir(b.options.out);
   write_file_atomic((dir / "results.json").string(), bench_json(b).dump(2) + "\n");
   write_file_atomic((dir / "results.csv").string(), csv(b));

@@ -113,6 +113,13 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required) {
       ->capture_default_str();
   sub->add_option("--time", a.time, "Scene time of the first frame in seconds")
       ->capture_default_str();
+  sub->add_flag("--strict", a.strict,
+                "A gaze trace (--gaze trace:FILE) row that cannot be read is an error (default: "
+                "skipped with a warning naming its line)");
+  sub->add_option("--frame-timeout", a.frame_timeout,
+                  "Stop with an error when a frame takes longer than this many seconds "
+                  "(0 = no limit; a GL draw cannot be interrupted, so the process exits)")
+      ->capture_default_str();
 }
 
 SessionOptions to_session_options(const SessionArgs& a) {
@@ -130,11 +137,18 @@ SessionOptions to_session_options(const SessionArgs& a) {
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
   o.acuity = acuity_from_options(a.quality, a.slope);
-  if (!(a.fps > 0.0 && a.fps <= 10000.0))
-    throw Error("--fps: expected a rate in (0, 10000] frames per second");
+  if (!(a.fps > 0.0 && a.fps <= 10000.0)) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", a.fps);
+    throw Error(
+        std::string("--fps: expected a rate above 0 and at most 10000 frames per second, got ") +
+        got);
+  }
   if (!std::isfinite(a.time)) throw Error("--time: must be finite");
   o.fps = a.fps;
   o.start_time = a.time;
+  o.strict_traces = a.strict;
+  o.frame_timeout_s = check_frame_timeout(a.frame_timeout);
   return o;
 }
 
@@ -165,8 +179,13 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   ro.mouse_px = o.mouse_px;
   ro.mouse_down = o.mouse_down;
   renderer_ = with_flag("--size", [&] { return std::make_unique<Renderer>(*scene_, ro); });
+  watchdog_ = std::make_unique<FrameWatchdog>(o.frame_timeout_s, scene_->info().name);
   gaze::GazeContext ctx;
   ctx.display = display_;
+  ctx.strict_traces = o.strict_traces;
+  ctx.warn = [](const std::string& w) {
+    std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
+  };
   ctx.mouse = std::move(mouse);
   Scene* scene = scene_.get();
   const double w = o.size.width, h = o.size.height;

@@ -18,6 +18,7 @@
 #include "foveate/gpu/context.hpp"
 #include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
+#include "watchdog.hpp"
 
 namespace foveate::app {
 
@@ -47,6 +48,10 @@ struct SessionOptions {
   bool mouse_down = false;
   /// Open a window (GLFW) instead of a headless context; the output is shown in it.
   bool window = false;
+  /// trace:FILE gaze: a row that cannot be read is an error (--strict).
+  bool strict_traces = false;
+  /// A frame running longer than this stops the run (--frame-timeout; 0 = off).
+  double frame_timeout_s = kDefaultFrameTimeoutS;
 };
 
 /// The options every rendering command has, as typed on the command line.
@@ -64,9 +69,12 @@ struct SessionArgs {
   std::string model_memory_limit;
   double fps = 60.0;
   double time = 0.0;
+  bool strict = false;
+  double frame_timeout = kDefaultFrameTimeoutS;
 };
 /// Registers --scene --size --display --quality --slope --param --gaze
-/// --camera-path --channel --up --model-memory-limit --fps --time on `sub`. `scene_required` makes
+/// --camera-path --channel --up --model-memory-limit --fps --time --strict --frame-timeout on
+/// `sub`. `scene_required` makes
 /// --scene mandatory (render).
 void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false);
 /// Checks the values and names the flag of any bad one.
@@ -104,6 +112,8 @@ class Session {
   [[nodiscard]] const SessionOptions& options() const { return options_; }
   [[nodiscard]] Renderer& renderer() { return *renderer_; }
   [[nodiscard]] gaze::GazeTracker& gaze() { return *gaze_; }
+  /// Every frame is drawn through it (--frame-timeout).
+  [[nodiscard]] FrameWatchdog& watchdog() { return *watchdog_; }
   /// A technique for this session's display (`acuity` overrides the session's),
   /// refused with a clear error when it cannot render this scene.
   std::unique_ptr<Technique> make(const std::string& technique, const ParamArgs& params,
@@ -123,6 +133,7 @@ class Session {
   Display display_;
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<gaze::GazeTracker> gaze_;
+  std::unique_ptr<FrameWatchdog> watchdog_;
 };
 
 }  // namespace foveate::app

@@ -155,7 +155,7 @@ Display Display::load(const std::string& name_or_path) {
     throw Error("display '" + name_or_path + "': not a preset (" + names +
                 ") nor an existing file");
   }
-  Display d = from_json(read_json_file(name_or_path), name_or_path);
+  Display d = from_json(read_json_file(name_or_path, "display JSON"), name_or_path);
   if (d.name.empty()) d.name = std::filesystem::path(name_or_path).stem().string();
   return d;
 }

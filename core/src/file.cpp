@@ -1,27 +1,105 @@
 #include "foveate/core/file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "foveate/core/error.hpp"
 
 namespace foveate {
 
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw Error(path + ": read error");
-  return s.str();
+namespace {
+
+/// What a file that is not a regular file is, for messages.
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a named pipe (FIFO)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+std::string not_regular(const std::string& path, const std::string& what, mode_t mode) {
+  return path + ": the " + what + " is " + kind_of(mode) + ", not a regular file";
+}
+
+std::string mib(std::uint64_t bytes) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+struct Fd {
+  int fd = -1;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+void require_regular_file(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    throw Error(path + ": cannot open the " + what + ": " + std::strerror(errno));
+  }
+  if (!S_ISREG(st.st_mode)) throw Error(not_regular(path, what, st.st_mode));
+}
+
+std::string read_file(const std::string& path, const std::string& what, std::uint64_t max_bytes,
+                      const std::string& how_to_raise) {
+  // Refused before the open where possible; the open itself does not block
+  // (O_NONBLOCK), and the opened file is checked again (it may have changed).
+  require_regular_file(path, what);
+  Fd f;
+  f.fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (f.fd < 0) throw Error(path + ": cannot open the " + what + ": " + std::strerror(errno));
+  struct stat st {};
+  if (::fstat(f.fd, &st) != 0) throw Error(path + ": cannot read: " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw Error(not_regular(path, what, st.st_mode));
+  const auto size = static_cast<std::uint64_t>(st.st_size);
+  if (size > max_bytes) {
+    throw Error(path + ": the " + what + " is " + mib(size) + ", over the limit of " +
+                mib(max_bytes) + (how_to_raise.empty() ? "" : " (" + how_to_raise + ")"));
+  }
+  const int flags = ::fcntl(f.fd, F_GETFL);
+  if (flags >= 0) ::fcntl(f.fd, F_SETFL, flags & ~O_NONBLOCK);
+  std::string out;
+  out.reserve(static_cast<size_t>(size));
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(f.fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error(path + ": read error: " + std::strerror(errno));
+    if (n == 0) break;
+    out.append(buf, static_cast<size_t>(n));
+    if (out.size() > max_bytes) {  // grew while being read
+      throw Error(path + ": the " + what + " grew past the limit of " + mib(max_bytes) +
+                  " while being read" + (how_to_raise.empty() ? "" : " (" + how_to_raise + ")"));
+    }
+  }
+  return out;
+}
+
+std::uint64_t limit_from_env_mib(const char* name, std::uint64_t fallback_mib) {
+  const char* v = std::getenv(name);
+  if (!v || !*v) return fallback_mib * 1024 * 1024;
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long x = std::strtoull(v, &end, 10);
+  if (*end != '\0' || errno != 0 || x < 1 || x > (1ull << 30) || v[0] == '-') {
+    throw Error(std::string(name) + ": expected a size in MiB (1.." + std::to_string(1ull << 30) +
+                "), got '" + v + "'");
+  }
+  return static_cast<std::uint64_t>(x) * 1024 * 1024;
 }
 
 void write_file_atomic(const std::string& path, std::string_view contents) {

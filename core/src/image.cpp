@@ -13,7 +13,7 @@
 namespace foveate {
 
 Image read_image(const std::string& path) {
-  const std::string bytes = read_file(path);
+  const std::string bytes = read_file(path, "image");
   if (bytes.empty()) throw Error(path + ": the file is empty");
   int w = 0, h = 0, n = 0;
   unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),

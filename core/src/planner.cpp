@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -69,7 +70,21 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   g.e_star = display.half_fov_deg();
   auto s_after = [&](double e) { return sampling_factor_at(e, acuity, display); };
 
-  // Candidate radii: the grid strictly inside (0, e*).
+  // Candidate radii: the grid strictly inside (0, e*), bounded in number.
+  const double points = std::floor(g.e_star / opt.grid_step_deg);
+  if (!(points <= static_cast<double>(opt.max_grid_points))) {
+    // The smallest step within the limit, rounded up to two significant digits.
+    const double least = g.e_star / opt.max_grid_points;
+    const double unit = std::pow(10.0, std::floor(std::log10(least)) - 1.0);
+    char msg[400];
+    std::snprintf(msg, sizeof msg,
+                  "--step %g deg: %.0f candidate radii up to e* = %.2f deg, over the limit of "
+                  "%d (the search grows with their square); use a step of at least %.2g deg, or "
+                  "raise the limit (foveate plan --max-grid)",
+                  opt.grid_step_deg, points, g.e_star, opt.max_grid_points,
+                  std::ceil(least / unit) * unit);
+    throw Error(msg);
+  }
   std::vector<double> grid;
   for (int k = 1;; ++k) {
     const double e = k * opt.grid_step_deg;
@@ -194,7 +209,8 @@ const std::vector<SweepVariant>& sweep_variants() {
   return v;
 }
 
-std::vector<SweepRow> fov_sweep(double from, double to, double step, double grid_step) {
+std::vector<SweepRow> fov_sweep(double from, double to, double step, double grid_step,
+                                int max_grid_points) {
   if (!(from > 0.0) || !(to < 179.0) || !(from <= to) || !(step > 0.0)) {
     throw Error("sweep: need 0 < from <= to < 179 and step > 0");
   }
@@ -216,6 +232,7 @@ std::vector<SweepRow> fov_sweep(double from, double to, double step, double grid
       o.layers = v.layers;
       o.fixed_s2 = v.fixed_s2;
       o.grid_step_deg = grid_step;
+      o.max_grid_points = max_grid_points;
       const LayerPlan pa = plan_layers(d, qa, o), pb = plan_layers(d, qb, o);
       row.speedup_a.push_back(pa.pixel_ratio());
       row.speedup_b.push_back(pb.pixel_ratio());

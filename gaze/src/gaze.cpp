@@ -176,7 +176,12 @@ std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const Gaze
     TraceOptions o;
     o.width_px = ctx.display.width_px;
     o.height_px = ctx.display.height_px;
-    return std::make_unique<TraceSource>(load_trace(arg, o), arg);
+    o.strict = ctx.strict_traces;
+    Trace trace = load_trace(arg, o);
+    if (ctx.warn) {
+      for (const std::string& w : trace.warnings) ctx.warn(w);
+    }
+    return std::make_unique<TraceSource>(std::move(trace), arg);
   }
   if (kind == "synthetic") {
     SyntheticOptions o;

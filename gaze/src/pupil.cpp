@@ -1,6 +1,7 @@
 #include "foveate/gaze/pupil.hpp"
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -124,6 +125,17 @@ std::string PupilCounters::summary() const {
 
 // ------------------------------------------------------------ the receiver
 
+namespace {
+/// An answer quoted in a message: at most 40 bytes, control bytes as '?'.
+std::string printable(const std::string& s) {
+  std::string out = s.substr(0, 40);
+  for (char& c : out) {
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  }
+  return s.size() > 40 ? out + "..." : out;
+}
+}  // namespace
+
 struct PupilSource::Impl {
   PupilOptions o;
   std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
@@ -174,26 +186,35 @@ struct PupilSource::Impl {
     }
   }
 
-  void fail_request() {
+  void fail_request(std::string why) {
     std::lock_guard<std::mutex> lock(mu);
     ++counters.failed_requests;
     counters.connected = false;
+    counters.last_failure = std::move(why);
   }
 
   /// Asks SUB_PORT and t; (re)connects the SUB socket when the port changed.
   bool handshake() {
     const std::optional<std::string> port_text = request("SUB_PORT");
-    if (!port_text) return fail_request(), false;
+    if (!port_text) return fail_request("no answer to SUB_PORT"), false;
     char* end = nullptr;
+    errno = 0;
     const long port = std::strtol(port_text->c_str(), &end, 10);
-    if (port_text->empty() || *end != '\0' || port < 1 || port > 65535)
-      return fail_request(), false;
+    if (port_text->empty() || *end != '\0' || errno != 0 || port < 1 || port > 65535) {
+      return fail_request("the answer to SUB_PORT, '" + printable(*port_text) +
+                          "', is not a valid port (1..65535)"),
+             false;
+    }
     const double before = now();
     const std::optional<std::string> t_text = request("t");
     const double after = now();
-    if (!t_text) return fail_request(), false;
+    if (!t_text) return fail_request("no answer to t (the tracker's clock)"), false;
     const double t = std::strtod(t_text->c_str(), &end);
-    if (t_text->empty() || *end != '\0' || !std::isfinite(t)) return fail_request(), false;
+    if (t_text->empty() || *end != '\0' || !std::isfinite(t)) {
+      return fail_request("the answer to t, '" + printable(*t_text) +
+                          "', is not a time in seconds"),
+             false;
+    }
     offset = t - 0.5 * (before + after);
     validator.reset_clock();  // a restarted tracker starts a new clock
     // A fresh SUB socket each time: after silence, a dropped connection (an

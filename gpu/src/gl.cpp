@@ -240,4 +240,13 @@ std::string gl_enum_name(GLenum e) {
   }
 }
 
+std::vector<int> supported_sample_counts(GLenum target, GLenum internal_format) {
+  GLint n = 0;
+  glGetInternalformativ(target, internal_format, GL_NUM_SAMPLE_COUNTS, 1, &n);
+  if (n <= 0) return {};
+  std::vector<GLint> counts(static_cast<size_t>(n));
+  glGetInternalformativ(target, internal_format, GL_SAMPLES, n, counts.data());
+  return {counts.begin(), counts.end()};
+}
+
 }  // namespace foveate::gpu

@@ -88,7 +88,7 @@ CameraPath CameraPath::from_json(const nlohmann::json& j, const std::string& whe
 }
 
 CameraPath CameraPath::load(const std::string& file) {
-  return from_json(read_json_file(file), file);
+  return from_json(read_json_file(file, "camera path"), file);
 }
 
 CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double period,
@@ -104,8 +104,19 @@ CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double 
   return p;
 }
 
+glm::dvec3 camera_up(const glm::dvec3& forward) {
+  const glm::dvec3 f = glm::normalize(forward);
+  // World up is +y; looking (almost) straight down or up it is parallel to
+  // the view, so the screen's top points along -z (down) or +z (up): the
+  // camera of the default view (looking along -z) tilted down or up.
+  if (glm::length(glm::cross(f, glm::dvec3(0, 1, 0))) < 1e-6) {
+    return glm::dvec3(0, 0, f.y < 0 ? -1 : 1);
+  }
+  return glm::dvec3(0, 1, 0);
+}
+
 glm::dmat4 view_matrix(const CameraPose& pose) {
-  return glm::lookAt(pose.position, pose.target, glm::dvec3(0, 1, 0));
+  return glm::lookAt(pose.position, pose.target, camera_up(pose.target - pose.position));
 }
 
 glm::dmat4 projection_for_rect(const CameraPose& pose, int width, int height, double x0, double y0,

@@ -311,3 +311,19 @@ std::vector<Vec2d> MeshSceneBase::object_positions() const {
 }
 
 }  // namespace foveate::detail
+
+namespace foveate {
+
+std::vector<int> gbuffer_sample_counts() {
+  std::vector<int> out = gpu::supported_sample_counts(GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA8);
+  const std::pair<GLenum, GLenum> others[] = {{GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA16F},
+                                              {GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA32F},
+                                              {GL_RENDERBUFFER, GL_DEPTH24_STENCIL8}};
+  for (const auto& [target, format] : others) {
+    const std::vector<int> ok = gpu::supported_sample_counts(target, format);
+    std::erase_if(out, [&](int n) { return std::find(ok.begin(), ok.end(), n) == ok.end(); });
+  }
+  return out;
+}
+
+}  // namespace foveate

@@ -20,6 +20,7 @@
 //    inner layers are rendered beyond their planned radius e_i by the blend
 //    band, and the blend runs from e_i outwards. The planner weighs the inner
 //    layers' pixels by what that band costs, so the radii are re-planned for it.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -27,6 +28,7 @@
 #include "../common/kit.hpp"
 #include "../common/regions.hpp"
 #include "../common/registry.hpp"
+#include "foveate/core/error.hpp"
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/profiler.hpp"
 
@@ -67,6 +69,21 @@ class Layered final : public Technique {
     po.weights.assign(static_cast<size_t>(po.layers), (1 + transition_) * (1 + transition_));
     po.weights.back() = 1.0;
     plan_ = plan_layers(display_, c.acuity, po);
+    if (msaa_ > 1) check_msaa(msaa_);
+  }
+
+  /// The declared range (1..8) is what the paper's hardware had; the G-buffer
+  /// can take only what this GL implementation supports (GL_SAMPLES of its
+  /// formats; a count between two supported ones is rounded up by GL), checked
+  /// here rather than failing as an incomplete framebuffer.
+  static void check_msaa(int samples) {
+    const std::vector<int> ok = gbuffer_sample_counts();
+    const int most = ok.empty() ? 1 : *std::max_element(ok.begin(), ok.end());
+    if (samples <= most) return;
+    const auto* r = glGetString(GL_RENDERER);
+    throw Error("layered parameter msaa=" + std::to_string(samples) + ": " +
+                (r ? reinterpret_cast<const char*>(r) : "this GL implementation") +
+                " supports G-buffer MSAA of at most " + std::to_string(most) + " samples");
   }
 
   void reset() override {
@@ -430,7 +447,7 @@ TechniqueInfo layered_info() {
             "", ParamType::Boolean, 0, 1, 1),
       param("msaa",
             "MSAA samples of mesh scenes' layers (1 = off; 4 as in the paper; native has none, so "
-            "off by default)",
+            "off by default; at most what the GL implementation supports, checked at run time)",
             "samples", ParamType::Integer, 1, 8, 1),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };

@@ -208,7 +208,12 @@ class LogPolar final : public Technique {
       p.set("u_lp_alpha", float(alpha_));
       p.set("u_lp_buffer", float(bw), float(bh));
     };
-    const double margin = 0.02 * std::hypot(W, H);
+    // Texels beyond the screen by up to one buffer cell are shaded too (at the
+    // nearest pixel), so that a bilinear read at the screen's edge has both of
+    // its neighbours: on a tiny or very flat screen (16x2) a cell of the angle
+    // axis is wider than the screen, and leaving those texels out showed black.
+    const double angle_cell = 2.0 * std::numbers::pi * far / bh;
+    const double margin = std::max(0.02 * std::hypot(W, H), angle_cell);
     const double shaded = kit_.shade(scene, native, "logpolar/map_logpolar.glsl", buffer_,
                                      [&](const gpu::Program& p, gpu::Samplers&) {
                                        set_mapping(p);

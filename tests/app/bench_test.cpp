@@ -71,7 +71,11 @@ TEST(Bench, SweepsApplyOnlyWhereTheKeyIsDeclared) {
   EXPECT_FALSE(one.applies_to("inset"));
   // A step too small to change the value gives one value, not an endless list.
   EXPECT_EQ(Sweep::parse("slope=1e16:1e16:1").values.size(), 1u);
-  EXPECT_NE(error_of([] { Sweep::parse("slope=0:1:1e-9"); }).find("at most 50"), std::string::npos);
+  EXPECT_EQ(error_of([] { Sweep::parse("slope=0:1:1e-9"); }),
+            "--sweep slope=0:1:1e-9: 1000000000 values, over the limit of 50; use a larger STEP");
+  EXPECT_EQ(error_of([] { Sweep::parse("slope=1e16:2e16:1"); }),
+            "--sweep slope=1e16:2e16:1: 10000000000000000 values, over the limit of 50; use a "
+            "larger STEP");
   EXPECT_NE(error_of([] { Sweep::parse("nope=1:2:1"); }).find("no technique has"),
             std::string::npos);
   EXPECT_NE(error_of([] { Sweep::parse("slope=1:2"); }).find("KEY=FROM:TO:STEP"),

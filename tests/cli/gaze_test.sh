@@ -58,12 +58,31 @@ check "stats: latency" '[[ "$out" == *"latency: median 12.0 ms"* && "$out" == *"
 check "stats: lost samples" '[[ "$out" == *"lost samples (invalid or confidence < 0.60): 2"* ]]'
 
 # Bad files: FILE:LINE and a non-zero exit, never a crash.
-printf 'time_s,x,y\n0,0.5,0.5\n0.1,abc,0.5\n' > "$tmp/bad.csv"
-err=$("$FOVEATE" gaze stats "$tmp/bad.csv" 2>&1); rc=$?
-check "bad number: FILE:LINE" '[[ $rc -eq 1 && "$err" == *"bad.csv:3: x: '"'"'abc'"'"' is not a number"* ]]'
+# A row that cannot be read is skipped with a warning naming FILE:LINE;
+# --strict makes it an error.
+printf 'time_s,x,y\n0,0.5,0.5\n0.1,abc,0.5\n0.2,0.5,0.5\n' > "$tmp/bad.csv"
+out=$("$FOVEATE" gaze stats "$tmp/bad.csv" 2>"$tmp/warn.txt"); rc=$?
+check "bad number: skipped, warning with FILE:LINE" '[[ $rc -eq 0 && "$(cat "$tmp/warn.txt")" == *"warning: $tmp/bad.csv:3: x: '"'"'abc'"'"' is not a number; row skipped"* && "$out" == *"2 samples"* && "$out" == *"could not be read (skipped): 1"* ]]'
+err=$("$FOVEATE" gaze stats --strict "$tmp/bad.csv" 2>&1); rc=$?
+check "bad number with --strict: FILE:LINE, exit 1" '[[ $rc -eq 1 && "$err" == *"bad.csv:3: x: '"'"'abc'"'"' is not a number; rejected by --strict"* ]]'
+json=$("$FOVEATE" gaze stats --json "$tmp/bad.csv" 2>/dev/null)
+check "stats --json counts skipped rows" 'python3 -c "import json,sys; assert json.loads(sys.argv[1])[\"skipped_rows\"]==1" "$json"'
 printf 'time_s,x,y\n0,0.5\n' > "$tmp/short.csv"
 err=$("$FOVEATE" gaze stats "$tmp/short.csv" 2>&1); rc=$?
-check "short line: FILE:LINE" '[[ $rc -eq 1 && "$err" == *"short.csv:2: expected 3 fields"* ]]'
+check "short line and nothing else: FILE:LINE, exit 1" '[[ $rc -eq 1 && "$err" == *"no usable gaze sample"* && "$err" == *"short.csv:2: expected 3 fields"* ]]'
+# A recorder killed mid-write: the last line is cut off (no newline).
+printf 'time_s,x,y,confidence,valid\n0,0.5,0.5,1,1\n0.1,0.5,0.5,1,1\n0.2,0.5' > "$tmp/cut.csv"
+out=$("$FOVEATE" gaze stats "$tmp/cut.csv" 2>"$tmp/warn.txt"); rc=$?
+check "cut-off last line: dropped with a warning naming it" '[[ $rc -eq 0 && "$out" == *"2 samples"* && "$(cat "$tmp/warn.txt")" == *"cut.csv:4: expected 5 fields"*"the last line is cut off"*"row skipped"* ]]'
+err=$("$FOVEATE" gaze stats --strict "$tmp/cut.csv" 2>&1); rc=$?
+check "cut-off last line with --strict: exit 1" '[[ $rc -eq 1 && "$err" == *"cut.csv:4:"*"cut off"*"--strict"* ]]'
+err=$("$FOVEATE" render --scene cheap --size 32x18 --gaze "trace:$tmp/cut.csv" --out "$tmp/rc" 2>&1); rc=$?
+check "render with a cut-off trace: runs, warns" '[[ $rc -eq 0 && "$err" == *"warning: $tmp/cut.csv:4:"* ]]'
+err=$("$FOVEATE" render --scene cheap --size 32x18 --gaze "trace:$tmp/cut.csv" --strict --out "$tmp/rc" 2>&1); rc=$?
+check "render --strict with a cut-off trace: exit 1" '[[ $rc -eq 1 && "$err" == *"--gaze: $tmp/cut.csv:4:"*"--strict"* ]]'
+{ echo "time_s,x,y"; for i in $(seq 1 30); do echo "$i,bad,0.5"; done; echo "31,0.5,0.5"; } > "$tmp/many.csv"
+"$FOVEATE" gaze stats "$tmp/many.csv" > /dev/null 2>"$tmp/warn.txt"
+check "many bad rows: the first ten named, the rest counted" '[[ $(grep -c "row skipped" "$tmp/warn.txt") -eq 10 && "$(cat "$tmp/warn.txt")" == *"20 more rows skipped"* ]]'
 printf 'when,where\n1,2\n' > "$tmp/hdr.csv"
 err=$("$FOVEATE" gaze stats "$tmp/hdr.csv" 2>&1); rc=$?
 check "bad header: FILE:LINE" '[[ $rc -eq 1 && "$err" == *"hdr.csv:1: the header needs"* ]]'

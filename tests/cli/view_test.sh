@@ -13,4 +13,7 @@ if grep -q "switch technique" "$tmp/out.txt"; then echo "ok: view prints its key
 # No display at all: a clear error, not a crash.
 err=$(DISPLAY= WAYLAND_DISPLAY= "$FOVEATE" view --scene cheap --frames 1 2>&1); rc=$?
 if [[ $rc -ne 0 && "$err" == *"window"* ]]; then echo "ok: no display gives a clear error"; else echo "FAIL: no display (exit $rc): $err"; fail=1; fi
+# view refuses what render refuses: lodmask on a scene without meshes.
+err=$(xvfb-run -a -s "-screen 0 1024x768x24" "$FOVEATE" view --scene cheap --size 64x36 --technique lodmask --frames 1 2>&1); rc=$?
+if [[ $rc -eq 1 && "$err" == *"technique lodmask needs a scene with mesh"* && "$err" == *"has no meshes"* ]]; then echo "ok: view refuses lodmask on a scene without meshes"; else echo "FAIL: view lodmask without meshes (exit $rc): $err"; fail=1; fi
 exit $fail

@@ -67,7 +67,8 @@ void FakePupil::serve() {
     const std::string what = req.to_string();
     std::string reply = "unknown command";
     if (what == "SUB_PORT") {
-      reply = std::to_string(pub_port_);
+      std::lock_guard<std::mutex> lock(answer_mu_);
+      reply = sub_port_answer_.empty() ? std::to_string(pub_port_) : sub_port_answer_;
     } else if (what == "t") {
       char buf[64];
       std::snprintf(buf, sizeof buf, "%.6f", clock());

@@ -3,6 +3,7 @@
 // the control port answering SUB_PORT and t, and a PUB socket publishing
 // [topic, msgpack] frames. Bound to 127.0.0.1 on ephemeral ports.
 #include <atomic>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -36,6 +37,13 @@ class FakePupil {
 
   std::atomic<int> requests{0};
 
+  /// Answers SUB_PORT with `answer` instead of the publisher's port (a
+  /// misbehaving tracker); empty restores the real port.
+  void answer_sub_port_with(std::string answer) {
+    std::lock_guard<std::mutex> lock(answer_mu_);
+    sub_port_answer_ = std::move(answer);
+  }
+
  private:
   void serve();
   zmq::context_t ctx_{1};
@@ -45,6 +53,8 @@ class FakePupil {
   std::atomic<double> offset_{0.0};
   int control_port_ = 0;
   int pub_port_ = 0;
+  std::mutex answer_mu_;
+  std::string sub_port_answer_;
 };
 
 /// A port on 127.0.0.1 with nothing listening (bound, then released).

@@ -1,4 +1,4 @@
-// foveate_fake_pupil SECONDS: a local Pupil Capture stand-in for command-line
+// foveate_fake_pupil SECONDS [SUB_PORT_ANSWER]: a local Pupil Capture stand-in for command-line
 // tests. Prints its control port, then publishes gaze at 200 Hz (a circle,
 // with one malformed frame a second) on 127.0.0.1 for SECONDS, then exits.
 #include <chrono>
@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   foveate::gaze::testing::FakePupil fake(500.0);
+  if (argc > 2) fake.answer_sub_port_with(argv[2]);  // a misbehaving tracker
   std::printf("%d\n", fake.control_port());
   std::fflush(stdout);
   const auto start = std::chrono::steady_clock::now();

@@ -257,5 +257,26 @@ TEST(PupilLive, NoTrackerMeansInvalidGazeAndABoundedShutdown) {
   EXPECT_LT(took, 5.0);  // every request and receive has a timeout
 }
 
+TEST(PupilLive, AnInvalidSubPortAnswerIsNamedNotConnected) {
+  FakePupil fake;
+  fake.answer_sub_port_with("99999999");
+  PupilOptions o;
+  o.port = fake.control_port();
+  o.request_timeout_ms = 200;
+  PupilSource src(o);
+  EXPECT_FALSE(src.wait_connected(0.5));
+  ASSERT_TRUE(eventually([&] { return !src.counters().last_failure.empty(); }, {}, 2.0));
+  EXPECT_EQ(src.counters().last_failure,
+            "the answer to SUB_PORT, '99999999', is not a valid port (1..65535)");
+  // A tracker that does not answer at all says so instead.
+  PupilOptions silent;
+  silent.port = testing::unused_port();
+  silent.request_timeout_ms = 200;
+  PupilSource none(silent);
+  EXPECT_FALSE(none.wait_connected(0.5));
+  ASSERT_TRUE(eventually([&] { return !none.counters().last_failure.empty(); }, {}, 2.0));
+  EXPECT_EQ(none.counters().last_failure, "no answer to SUB_PORT");
+}
+
 }  // namespace
 }  // namespace foveate::gaze

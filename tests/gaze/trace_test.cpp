@@ -102,20 +102,29 @@ TEST(TraceCsv, BadSamplesAreDroppedAndCounted) {
 }
 
 TEST(TraceCsv, SyntaxErrorsNameFileAndLine) {
-  EXPECT_EQ(error_of([] { parse_trace_csv("time_s,x,y\n0,0.5,0.5\n0.1,abc,0.5\n", "f.csv"); }),
-            "f.csv:3: x: 'abc' is not a number");
-  EXPECT_EQ(error_of([] { parse_trace_csv("time_s,x,y\n\n0,0.5\n", "f.csv"); }),
-            "f.csv:3: expected 3 fields as in the header (line 1), got 2");
+  // A row that cannot be read: with strict, an error naming FILE:LINE.
+  TraceOptions strict;
+  strict.strict = true;
+  auto strict_error = [&](const std::string& text) {
+    return error_of([&] { parse_trace_csv(text, "f.csv", strict); });
+  };
+  EXPECT_EQ(strict_error("time_s,x,y\n0,0.5,0.5\n0.1,abc,0.5\n"),
+            "f.csv:3: x: 'abc' is not a number; rejected by --strict");
+  EXPECT_EQ(strict_error("time_s,x,y\n\n0,0.5\n"),
+            "f.csv:3: expected 3 fields as in the header (line 1), got 2; rejected by --strict");
+  EXPECT_EQ(strict_error("time_s,x,y,valid\n0,0.5,0.5,maybe\n"),
+            "f.csv:2: valid: expected 1/0 or true/false, got 'maybe'; rejected by --strict");
+  EXPECT_EQ(strict_error("time_s,x,y\n0,\"0.5,0.5\n"),
+            "f.csv:2: unterminated quoted field; rejected by --strict");
+  EXPECT_EQ(strict_error("time_s,x,y\n0,0.5,0.5\n0.1,0.5"),
+            "f.csv:3: expected 3 fields as in the header (line 1), got 2 (the last line is cut "
+            "off: no newline at its end); rejected by --strict");
   EXPECT_NE(error_of([] {
               parse_trace_csv("a,b,c\n1,2,3\n", "f.csv");
             }).find("f.csv:1: the header needs"),
             std::string::npos);
   EXPECT_EQ(error_of([] { parse_trace_csv("", "f.csv"); }),
             "f.csv: empty file: expected a header line and samples");
-  EXPECT_EQ(error_of([] { parse_trace_csv("time_s,x,y,valid\n0,0.5,0.5,maybe\n", "f.csv"); }),
-            "f.csv:2: valid: expected 1/0 or true/false, got 'maybe'");
-  EXPECT_EQ(error_of([] { parse_trace_csv("time_s,x,y\n0,\"0.5,0.5\n", "f.csv"); }),
-            "f.csv:2: unterminated quoted field");
   EXPECT_NE(error_of([] {
               parse_trace_csv("# screen_px: big\ntime_s,x,y\n", "f.csv");
             }).find("f.csv:1: screen_px"),
@@ -124,6 +133,25 @@ TEST(TraceCsv, SyntaxErrorsNameFileAndLine) {
   EXPECT_EQ(error_of([] { parse_trace_csv("time_s,x,y\n0,960,540\n1,100,100\n", "f.csv"); }),
             "f.csv: no usable gaze sample (2 dropped (2 out-of-range)); if the positions are "
             "pixels, name the columns x_px,y_px or choose pixel units");
+}
+
+TEST(TraceCsv, UnreadableRowsAreSkippedAndNamed) {
+  // Without strict the row is skipped, the rest read, and the line named.
+  const Trace t =
+      parse_trace_csv("time_s,x,y\n0,0.5,0.5\n0.1,abc,0.5\n0.2,0.5,0.5\n0.3,0.5", "f.csv");
+  EXPECT_EQ(t.samples.size(), 2u);
+  EXPECT_EQ(t.skipped_rows, 2u);
+  ASSERT_EQ(t.warnings.size(), 2u);
+  EXPECT_EQ(t.warnings[0], "f.csv:3: x: 'abc' is not a number; row skipped");
+  EXPECT_EQ(t.warnings[1],
+            "f.csv:5: expected 3 fields as in the header (line 1), got 2 (the last line is cut "
+            "off: no newline at its end); row skipped");
+  // A complete last line without a newline is read.
+  EXPECT_EQ(parse_trace_csv("time_s,x,y\n0,0.5,0.5\n0.1,0.5,0.5", "f.csv").samples.size(), 2u);
+  // Nothing readable at all: the error names the first row.
+  EXPECT_EQ(error_of([] { parse_trace_csv("time_s,x,y\n0,0.5\n", "f.csv"); }),
+            "f.csv: no usable gaze sample (none dropped; 1 row(s) could not be read, the first: "
+            "f.csv:2: expected 3 fields as in the header (line 1), got 2; row skipped)");
 }
 
 TEST(TraceJson, ArrayAndObjectSamples) {

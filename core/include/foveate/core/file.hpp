@@ -2,12 +2,28 @@
 // File helpers: whole-file reads with clear errors, and atomic writes (a
 // temporary file in the same directory, then rename) so that no output is
 // ever left half-written.
+#include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace foveate {
 
-std::string read_file(const std::string& path);
+/// Throws foveate::Error naming `path` and `what` ("gaze trace", "display
+/// JSON", ...) unless `path` is a regular file (symbolic links followed):
+/// named pipes, devices, sockets and directories are refused before anything
+/// opens them, so nothing blocks on a FIFO or reads a device forever.
+void require_regular_file(const std::string& path, const std::string& what);
+
+/// The whole file. Only regular files are read (checked on the opened file,
+/// which is opened without blocking, so a FIFO cannot hang the open). A file
+/// over `max_bytes` is refused with an error naming the limit and
+/// `how_to_raise` (e.g. "set FOVEATE_MAX_TRACE_MB") before it is read.
+std::string read_file(const std::string& path, const std::string& what = "file",
+                      std::uint64_t max_bytes = UINT64_MAX, const std::string& how_to_raise = {});
 void write_file_atomic(const std::string& path, std::string_view contents);
+
+/// A limit in MiB from the environment variable `name` (a positive integer),
+/// or `fallback_mib` when it is unset; a bad value is an error naming it.
+std::uint64_t limit_from_env_mib(const char* name, std::uint64_t fallback_mib);
 
 }  // namespace foveate

@@ -32,7 +32,8 @@ class JsonReader {
 
 /// Parses JSON text; errors say `where` and the byte position.
 nlohmann::json parse_json(const std::string& text, const std::string& where);
-/// Reads and parses a JSON file; errors name the file.
-nlohmann::json read_json_file(const std::string& path);
+/// Reads and parses a JSON file; errors name the file. `what` says what the
+/// file is for ("display JSON"); anything but a regular file is refused.
+nlohmann::json read_json_file(const std::string& path, const std::string& what = "JSON file");
 
 }  // namespace foveate

@@ -21,6 +21,10 @@ struct PlannerOptions {
   double grid_step_deg = 0.05;     ///< discretisation of the radii
   std::vector<double> weights;     ///< w_i of eq. 5; empty = all 1
   std::optional<double> fixed_s2;  ///< the paper's "3*": s_2 fixed (e.g. 2)
+  /// Most candidate radii (e* / grid_step_deg) searched; the search takes
+  /// O(layers * G^2) time, so a finer step is refused with an error naming the
+  /// limit (foveate plan --max-grid raises it).
+  int max_grid_points = 10000;
 };
 
 struct Layer {
@@ -80,6 +84,7 @@ const std::vector<SweepVariant>& sweep_variants();
 
 /// The data behind Figures 12 and 13 of Guenter et al.
 std::vector<SweepRow> fov_sweep(double fov_from_deg = 10.0, double fov_to_deg = 120.0,
-                                double fov_step_deg = 5.0, double grid_step_deg = 0.05);
+                                double fov_step_deg = 5.0, double grid_step_deg = 0.05,
+                                int max_grid_points = PlannerOptions{}.max_grid_points);
 
 }  // namespace foveate

@@ -48,6 +48,10 @@ struct GazeContext {
   /// Normalized screen positions of scene objects at time t, nearest first;
   /// empty function (or empty result) when the scene has none.
   std::function<std::vector<Vec2d>(double t_s)> objects;
+  /// trace:FILE: a row that cannot be read is an error (TraceOptions::strict).
+  bool strict_traces = false;
+  /// Receives warnings (rows of a trace skipped, "FILE:LINE: why"); none shown when empty.
+  std::function<void(const std::string&)> warn;
 };
 
 /// Parses a gaze spec and creates the source:

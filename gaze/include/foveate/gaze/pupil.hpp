@@ -44,6 +44,9 @@ struct PupilCounters {
   std::uint64_t overflow = 0;         ///< samples lost because drain() was not called
   DropCounts dropped;                 ///< from the shared SampleValidator
   bool connected = false;             ///< a handshake succeeded and the publisher is not silent
+  /// Why the last handshake failed ("no answer to SUB_PORT", "the answer to
+  /// SUB_PORT, '99999999', is not a valid port (1..65535)"); empty when none did.
+  std::string last_failure;
   [[nodiscard]] std::string summary() const;
 };
 

@@ -12,6 +12,7 @@
 // with _s or _ms), x / y (normalized) or x_px / y_px (pixels); confidence,
 // valid and latency_ms are optional; other columns are ignored. Units that the
 // header does not say come from TraceOptions (default seconds, normalized).
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,7 +31,13 @@ struct TraceOptions {
   int width_px = 1920;
   int height_px = 1080;
   double margin = 0.25;  ///< SampleValidator margin
+  /// A row that cannot be read (too few fields, not a number, a last line cut
+  /// off mid-write) is an error; otherwise it is skipped with a warning.
+  bool strict = false;
 };
+
+/// The largest trace file read, in MiB; FOVEATE_MAX_TRACE_MB raises it.
+inline constexpr std::uint64_t kMaxTraceMiB = 512;
 
 struct Trace {
   std::vector<GazeSample> samples;  ///< accepted samples, strictly increasing times, first at 0
@@ -38,6 +45,10 @@ struct Trace {
   DropCounts dropped;               ///< samples dropped while reading
   double time_origin_s = 0.0;       ///< the original timestamp of the first sample (seconds)
   std::string format;               ///< "csv", "pupil-csv" or "json"
+  /// Rows skipped because they could not be read ("FILE:LINE: why"; the first
+  /// few, then a count of the rest), for the caller to show.
+  std::vector<std::string> warnings;
+  std::uint64_t skipped_rows = 0;  ///< rows skipped (all of them, not only those in warnings)
 
   [[nodiscard]] double duration_s() const {
     return samples.empty() ? 0.0 : samples.back().time_s - samples.front().time_s;
@@ -47,7 +58,9 @@ struct Trace {
 /// Reads a trace file; the format is detected from the extension (.json) and
 /// the CSV header (Pupil's gaze_timestamp / norm_pos_x columns). Errors read
 /// "FILE:LINE: what is wrong"; bad samples are dropped and counted, never fatal,
-/// but a file with no usable sample is an error.
+/// but a file with no usable sample is an error. A CSV row that cannot be read
+/// is skipped and named in Trace::warnings (an error with options.strict); the
+/// file must be a regular file of at most kMaxTraceMiB (FOVEATE_MAX_TRACE_MB).
 Trace load_trace(const std::string& path, const TraceOptions& options = {});
 /// The same from text; `where` names the source in messages.
 Trace parse_trace_csv(const std::string& text, const std::string& where,

@@ -6,6 +6,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace foveate::gpu {
 
@@ -149,5 +150,10 @@ GlObjectCounts live_gl_objects();
 
 /// Human-readable name of a GL error or enum, for messages.
 std::string gl_enum_name(GLenum e);
+
+/// The sample counts above 1 the implementation supports for `internal_format`
+/// as `target` (GL_TEXTURE_2D_MULTISAMPLE or GL_RENDERBUFFER), highest first
+/// (glGetInternalformativ GL_SAMPLES). Needs a current context.
+std::vector<int> supported_sample_counts(GLenum target, GLenum internal_format);
 
 }  // namespace foveate::gpu

@@ -42,6 +42,9 @@ struct CameraPath {
 /// off-centre sub-frustum of the screen rectangle [x0,x1]x[y0,y1] of a full
 /// frame width x height (pixels, origin bottom-left).
 glm::dmat4 view_matrix(const CameraPose& pose);
+/// The up vector the view uses for a viewing direction: +y, or -z / +z when
+/// looking straight down / up (where +y would be parallel to the view).
+glm::dvec3 camera_up(const glm::dvec3& forward);
 glm::dmat4 projection_for_rect(const CameraPose& pose, int width, int height, double x0, double y0,
                                double x1, double y1, double z_near, double z_far);
 

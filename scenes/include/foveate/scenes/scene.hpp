@@ -147,6 +147,11 @@ struct SceneOptions {
   std::uint64_t model_memory_limit = 0;
 };
 
+/// The MSAA sample counts (above 1) a mesh scene's G-buffer can have on the
+/// current GL implementation, highest first: those every attachment's format
+/// supports. Needs a current context.
+std::vector<int> gbuffer_sample_counts();
+
 /// A built-in scene by name, or a file: .glsl/.frag (Shadertoy) or a mesh file
 /// assimp reads. Needs a current GL context. Throws foveate::Error with the
 /// file and the reason for bad input.
