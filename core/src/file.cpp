@@ -1,5 +1,6 @@
 #include "foveate/core/file.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -22,6 +23,28 @@ std::string read_file(const std::string& path) {
   s << in.rdbuf();
   if (in.bad()) throw Error(path + ": read error");
   return s.str();
+}
+
+void require_regular_file(const std::string& path, std::string_view what) {
+  const std::string name = std::string(what) + " '" + path + "'";
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    throw Error(name + ": " + (errno == ENOENT ? "no such file" : std::strerror(errno)));
+  }
+  const char* kind = nullptr;
+  if (S_ISDIR(st.st_mode))
+    kind = "a directory";
+  else if (S_ISFIFO(st.st_mode))
+    kind = "a named pipe (FIFO)";
+  else if (S_ISCHR(st.st_mode))
+    kind = "a character device";
+  else if (S_ISBLK(st.st_mode))
+    kind = "a block device";
+  else if (S_ISSOCK(st.st_mode))
+    kind = "a socket";
+  else if (!S_ISREG(st.st_mode))
+    kind = "a special file";
+  if (kind) throw Error(name + ": is " + std::string(kind) + ", not a regular file");
 }
 
 void write_file_atomic(const std::string& path, std::string_view contents) {
