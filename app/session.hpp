@@ -32,10 +32,15 @@ void validate_params(const ParamArgs& p, const std::vector<std::string>& techniq
 /// The overrides for one technique (only keys it knows when given without prefix).
 std::map<std::string, double> params_for(const ParamArgs& p, const std::string& technique);
 
+/// iDate of render and bench unless --date says otherwise: runs stay
+/// deterministic (a clock shader shows midnight plus the scene time).
+inline constexpr const char* kFixedDate = "2026-01-01T00:00:00";
+
 struct SessionOptions {
   std::string scene = "raymarch";
   std::vector<std::string> channels;
   std::string camera_path;
+  ShadertoyDate date;  ///< iDate of Shadertoy scenes
   Size size{640, 360};
   std::string display = "desktop-1080p";
   AcuityModel acuity;
@@ -60,13 +65,17 @@ struct SessionArgs {
   std::vector<std::string> channels;
   double fps = 60.0;
   double time = 0.0;
+  std::string date;  ///< --date; empty = the command's default
 };
 /// Registers --scene --size --display --quality --slope --param --gaze
-/// --camera-path --channel --fps --time on `sub`. `scene_required` makes
-/// --scene mandatory (render).
-void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false);
-/// Checks the values and names the flag of any bad one.
-SessionOptions to_session_options(const SessionArgs& args);
+/// --camera-path --channel --fps --time --date on `sub`. `scene_required`
+/// makes --scene mandatory (render). `default_date` is what --date means
+/// when not given ("now" in view; a fixed date elsewhere, for determinism).
+void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false,
+                         const char* default_date = kFixedDate);
+/// Checks the values and names the flag of any bad one; an empty --date
+/// gives `default_date`.
+SessionOptions to_session_options(const SessionArgs& args, const char* default_date = kFixedDate);
 
 /// Runs `fn`, prefixing any foveate::Error it throws with `flag` ("--gaze: ...").
 template <class Fn>

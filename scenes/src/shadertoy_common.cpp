@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -82,7 +83,6 @@ static void civil_from_days(long long z, long long& y, int& m, int& d) {
   m = static_cast<int>(mp < 10 ? mp + 3 : mp - 9);
   y = yoe + era * 400 + (m <= 2);
 }
-
 
 void warn_once(const std::string& message) {
   static std::mutex mutex;
@@ -189,9 +189,21 @@ Image read_channel_image(const std::string& path, const std::string& what) {
   const std::string bytes = read_file(path);
   if (bytes.empty()) throw Error(what + " image '" + path + "': the file is empty");
   int w = 0, h = 0, n = 0;
-  if (bytes.size() > static_cast<size_t>(INT32_MAX) ||
-      !stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                             static_cast<int>(bytes.size()), &w, &h, &n)) {
+  const auto byte = [&](size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  if (bytes.size() >= 24 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 &&
+      bytes.compare(12, 4, "IHDR") == 0) {
+    // PNG: the size is in the header chunk (stb's own header check refuses
+    // large images without saying their size).
+    const auto be32 = [&](size_t i) {
+      return (std::uint32_t(byte(i)) << 24) | (std::uint32_t(byte(i + 1)) << 16) |
+             (std::uint32_t(byte(i + 2)) << 8) | std::uint32_t(byte(i + 3));
+    };
+    const std::uint32_t pw = be32(16), ph = be32(20);
+    w = static_cast<int>(std::min<std::uint32_t>(pw, INT32_MAX));
+    h = static_cast<int>(std::min<std::uint32_t>(ph, INT32_MAX));
+  } else if (bytes.size() > static_cast<size_t>(INT32_MAX) ||
+             !stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                    static_cast<int>(bytes.size()), &w, &h, &n)) {
     throw Error(what + " image '" + path + "': not a readable image (" +
                 (stbi_failure_reason() ? stbi_failure_reason() : "unknown format") + ")");
   }
@@ -210,9 +222,9 @@ Image read_channel_image(const std::string& path, const std::string& what) {
 }
 
 void allow_missing_shadertoy_inputs(const gpu::Program& p) {
-  p.allow_missing({"iResolution", "iTime", "iTimeDelta", "iFrameRate", "iFrame", "iMouse", "iDate",
-                   "iSampleRate", "iChannel0", "iChannel1", "iChannel2", "iChannel3",
-                   "iChannelTime[0]", "iChannelResolution[0]", "iChannelResolution[1]",
+  p.allow_missing({"iResolution", "iTime", "iGlobalTime", "iTimeDelta", "iFrameRate", "iFrame",
+                   "iMouse", "iDate", "iSampleRate", "iChannel0", "iChannel1", "iChannel2",
+                   "iChannel3", "iChannelTime[0]", "iChannelResolution[0]", "iChannelResolution[1]",
                    "iChannelResolution[2]", "iChannelResolution[3]"});
 }
 
@@ -220,6 +232,7 @@ void set_shadertoy_inputs(const gpu::Program& p, const FrameInput& f, const Shad
                           const float channel_size[4][2]) {
   p.set("iResolution", float(f.width), float(f.height), 1.0f);
   p.set("iTime", float(f.time_s));
+  p.set("iGlobalTime", float(f.time_s));  // where the shader declares it itself
   p.set("iTimeDelta", float(f.delta_s));
   p.set("iFrameRate", float(f.delta_s > 0 ? 1.0 / f.delta_s : 60.0));
   p.set("iFrame", f.frame);
@@ -301,7 +314,8 @@ std::array<float, 4> shadertoy_idate(const ShadertoyDate& date, double time_s) {
   if (!std::isfinite(sec)) sec = 0.0;
   const double whole_days = std::clamp(std::floor(sec / 86400.0), -1e8, 1e8);
   sec -= whole_days * 86400.0;
-  detail::civil_from_days(detail::days_from_civil(y, m, d) + static_cast<long long>(whole_days), y, m, d);
+  detail::civil_from_days(detail::days_from_civil(y, m, d) + static_cast<long long>(whole_days), y,
+                          m, d);
   return {float(y), float(m - 1), float(d), float(sec)};
 }
 

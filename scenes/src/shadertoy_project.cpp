@@ -50,7 +50,6 @@ std::unique_ptr<Scene> make_shadertoy_project(const std::string& path, const Sce
   }
   JsonReader top(j, path);
   const nlohmann::json* passes = top.get("passes");
-  top.finish();
   if (!passes) {
     throw Error(path +
                 ": not a Shadertoy project: no \"passes\" (a list of {\"name\", \"file\", "
@@ -58,6 +57,7 @@ std::unique_ptr<Scene> make_shadertoy_project(const std::string& path, const Sce
   }
   if (!passes->is_array() || passes->empty())
     throw Error(path + ": passes: expected a non-empty list of passes");
+  top.finish();
 
   const fs::path dir = fs::path(path).parent_path();
   ShadertoyProject p;
