@@ -72,6 +72,18 @@ class ShadertoyScene final : public Scene {
     const gpu::ShaderCompiler c({embedded::scenes_shaders()});
     pieces_ = pass_pieces(c, p_.common, p_.image);
     pieces_.push_back({"shadertoy_adapter.glsl", {}});
+    // The user's macros end with the user's code: what a technique appends
+    // (its main, gpu's colour helpers) must not be rewritten by them.
+    std::string undef;
+    for (const UserPass* part : {p_.common ? &*p_.common : nullptr, &p_.image.code}) {
+      if (!part) continue;
+      for (const std::string& m : part->source.macros) {
+        // Reserved names cannot be undefined (nor defined: the compiler says so).
+        if (m.rfind("GL_", 0) != 0 && m.find("__") == std::string::npos)
+          undef += "#undef " + m + "\n";
+      }
+    }
+    if (!undef.empty()) pieces_.push_back({"shadertoy_undef.glsl (generated)", undef});
     // A shader that reads the clock, the frame number or the date changes
     // from frame to frame whatever the camera does; so does one with buffers.
     animated_ = p_.image.code.source.animated || !p_.buffers.empty() ||

@@ -5,6 +5,7 @@
 #include "foveate/scenes/shadertoy_source.hpp"
 
 #include <algorithm>
+#include <unordered_set>
 
 namespace foveate {
 
@@ -143,6 +144,17 @@ void add_once(std::vector<std::string>& v, std::string_view s) {
   if (std::find(v.begin(), v.end(), s) == v.end()) v.emplace_back(s);
 }
 
+// Records a macro name once; a set of the names seen keeps this linear.
+class MacroSet {
+ public:
+  void add(std::vector<std::string>& out, std::string_view name) {
+    if (seen_.insert(std::string(name)).second) out.emplace_back(name);
+  }
+
+ private:
+  std::unordered_set<std::string> seen_;
+};
+
 }  // namespace
 
 bool ShadertoySource::defines(std::string_view name) const {
@@ -162,6 +174,7 @@ ShadertoySource analyse_shadertoy_source(std::string_view text) {
   std::array<bool, kShadertoyLegacyNames.size()> legacy{};
   Lexer lex(text);
   Token t;
+  MacroSet macro_set;
   // A small window of previous tokens (code only, not directives) and the
   // state of the few constructs looked for.
   std::string_view prev1, prev2;  // the two code tokens before this one
@@ -187,6 +200,7 @@ ShadertoySource analyse_shadertoy_source(std::string_view text) {
       if (dir_index == 1) dir_define = w == "define";
     }
     const bool after_define = t.directive && dir_define && dir_index == 2;
+    if (after_define && ident) macro_set.add(r.macros, w);
     if (ident) {
       if (w.size() == 9 && w.substr(0, 8) == "iChannel" && w[8] >= '0' && w[8] <= '3') {
         r.channels[static_cast<size_t>(w[8] - '0')] = true;

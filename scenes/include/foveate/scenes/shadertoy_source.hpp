@@ -45,6 +45,9 @@ struct ShadertoySource {
   /// Names the shader defines itself: `#define NAME`, or NAME declared after
   /// a type (a function, a variable, a uniform).
   std::vector<std::string> user_defined;
+  /// Every macro it defines (`#define NAME`), each once, in order: undefined
+  /// after the user's code so that code appended after it is not rewritten.
+  std::vector<std::string> macros;
   /// Its own top-level uniform declarations.
   std::vector<ShadertoyUniform> uniforms;
   /// Reads the clock, the frame number or the date (iTime, iGlobalTime,
