@@ -84,6 +84,33 @@ static void civil_from_days(long long z, long long& y, int& m, int& d) {
   y = yoe + era * 400 + (m <= 2);
 }
 
+// `#iChannel0 "file"` lines (the VS Code Shadertoy extension names a
+// pass's channels so) are not GLSL: blanked (line numbers kept), with a
+// warning; channels come from --channel, NAME.json or a project.
+static void blank_channel_directives(UserPass& p) {
+  size_t pos = 0;
+  int line = 1;
+  while (pos < p.text.size()) {
+    size_t eol = p.text.find('\n', pos);
+    if (eol == std::string::npos) eol = p.text.size();
+    size_t i = pos;
+    while (i < eol && (p.text[i] == ' ' || p.text[i] == '\t')) ++i;
+    if (i < eol && p.text[i] == '#') {
+      ++i;
+      while (i < eol && (p.text[i] == ' ' || p.text[i] == '\t')) ++i;
+      if (p.text.compare(i, 8, "iChannel") == 0) {
+        warn_once(p.path + ":" + std::to_string(line) +
+                  ": ignoring the '#iChannel' directive (a VS Code Shadertoy extension's); bind "
+                  "channels with --channel, a NAME.json beside the shader or a project");
+        std::fill(p.text.begin() + static_cast<std::ptrdiff_t>(pos),
+                  p.text.begin() + static_cast<std::ptrdiff_t>(eol), ' ');
+      }
+    }
+    pos = eol + 1;
+    ++line;
+  }
+}
+
 void warn_once(const std::string& message) {
   static std::mutex mutex;
   static std::set<std::string> said;
@@ -109,6 +136,7 @@ UserPass read_user_pass(const std::string& path, const std::string& what, bool n
   }
   p.source = analyse_shadertoy_source(p.text);
   if (p.source.bom) p.text.erase(0, 3);
+  blank_channel_directives(p);
   if (p.text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw Error(path + ": the shader file is empty");
   if (p.text.find('\0') != std::string::npos) throw Error(path + ": not a text file");

@@ -41,6 +41,11 @@ for t in native "layered --param msaa=1" logpolar checkerboard inset; do
   near "short macro names do not leak into $t" "$(px "$tmp/sm/frame-0000.png" 32,18)" "255 127 0 255"
 done
 
+render --scene "$data/vscode_channel.glsl" --channel "$data/quadrants.png" --out "$tmp/vs" > /dev/null 2> "$tmp/vs.err" || bad "#iChannel directive: $(cat "$tmp/vs.err")"
+grep -q "vscode_channel.glsl:4: ignoring the '#iChannel' directive" "$tmp/vs.err" && ok "a '#iChannel' line is ignored with a warning naming file and line" || bad "#iChannel warning: $(cat "$tmp/vs.err")"
+near "... and the channel comes from --channel" "$(px "$tmp/vs/frame-0000.png" 8,4)" "255 0 0 255"
+near "... and the rest of the shader runs" "$(px "$tmp/vs/frame-0000.png" 48,4)" "0 0 255 255"
+
 # 2. Compile errors against the user's file and line.
 expect_error "syntax error: file and line" 1 "syntax_error.glsl:4:" render --scene "$data/syntax_error.glsl" --out "$tmp/x"
 expect_error "undeclared name: the user's file and line" 1 "semantic_error.glsl:3:19: error: \`undeclared_thing' undeclared" render --scene "$data/semantic_error.glsl" --out "$tmp/x"
