@@ -14,7 +14,7 @@ foveate=${2:-$root/build/debug/app/foveate}
 limit=${3:-60}
 tex="$root/tests/data/shadertoy/quadrants.png"
 out=$(mktemp -d); trap 'rm -rf "$out"' EXIT
-ok=0; failed=0
+ok=0; failed=0; uniform=0
 declare -A reasons
 shopt -s nullglob
 for f in "$dir"/*.glsl "$dir"/*.frag; do
@@ -25,7 +25,17 @@ for f in "$dir"/*.glsl "$dir"/*.frag; do
           --out "$out/frames" 2>&1 >/dev/null)
   rc=$?
   if [[ $rc -eq 0 && -s "$out/frames/frame-0001.png" ]]; then
-    ok=$((ok + 1)); echo "ok      $name"
+    ok=$((ok + 1))
+    # A frame of one colour is worth a look (it may be right: a shader that
+    # waits for input, or one that fills the screen).
+    colours=$(python3 -c "
+import sys; sys.path.insert(0, sys.argv[1])
+from pngpixel import read_png
+w, h, bpp, rows = read_png(sys.argv[2])
+print(len({bytes(r[i:i + bpp]) for r in rows for i in range(0, w * bpp, bpp)}))" \
+      "$root/tests/cli" "$out/frames/frame-0001.png" 2>/dev/null || echo "?")
+    if [[ "$colours" == 1 ]]; then uniform=$((uniform + 1)); echo "ok      $name (one colour)"
+    else echo "ok      $name"; fi
   else
     failed=$((failed + 1))
     if [[ $rc -eq 124 ]]; then reason="timeout after ${limit} s"
@@ -42,5 +52,5 @@ for f in "$dir"/*.glsl "$dir"/*.frag; do
   rm -rf "$out/frames"
 done
 echo
-echo "rendered: $ok, failed: $failed, of $((ok + failed))"
+echo "rendered: $ok ($uniform of one colour), failed: $failed, of $((ok + failed))"
 for r in "${!reasons[@]}"; do echo "  ${reasons[$r]}x $r"; done | sort -rn
