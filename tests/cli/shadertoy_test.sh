@@ -36,6 +36,8 @@ near "textureCube on a 2D channel reads it as a panorama" "$(px "$tmp/l/frame-00
 render --scene "$data/own_legacy.glsl" --time 1 --channel "$data/quadrants.png" --out "$tmp/o" > /dev/null || bad "own legacy definitions render"
 near "a shader's own texture2D macro, textureCube and iGlobalTime uniform" "$(px "$tmp/o/frame-0000.png" 8,4)" "64 127 191 255"
 
+render --scene "$data/own_uniforms.glsl" --time 1 --channel "$data/quadrants.png" --out "$tmp/ou" > /dev/null || bad "a shader declaring Shadertoy's uniforms renders"
+near "a shader's own declarations of Shadertoy's uniforms are set" "$(px "$tmp/ou/frame-0000.png" 8,4)" "127 127 127 255"
 for t in native "layered --param msaa=1" logpolar checkerboard inset; do
   render --scene "$data/short_macros.glsl" --technique $t --out "$tmp/sm" > /dev/null 2>&1 || bad "short macro names with $t"
   near "short macro names do not leak into $t" "$(px "$tmp/sm/frame-0000.png" 32,18)" "255 127 0 255"
