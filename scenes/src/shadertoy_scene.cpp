@@ -7,6 +7,7 @@
 
 #include "factories.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/file.hpp"
 #include "foveate/core/json_read.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
@@ -285,6 +286,7 @@ void load_channels(const std::string& shader_path, const SceneOptions& o, Shader
     fs::path side = fs::path(shader_path).replace_extension(".json");
     std::error_code ec;
     if (fs::exists(side, ec)) {
+      require_regular_file(side.string(), "channels file");
       const nlohmann::json j = read_json_file(side.string());
       JsonReader r(j, side.string());
       files.assign(4, "");

@@ -92,6 +92,10 @@ expect_error "a shader over the size limit" 1 "over the limit of 1.0 MiB" render
 mkfifo "$tmp/pipe.glsl" "$tmp/pipe.png"
 expect_error "a FIFO as the shader is refused, not opened" 1 "shader '$tmp/pipe.glsl': is a named pipe (FIFO), not a regular file" render --scene "$tmp/pipe.glsl" --out "$tmp/x"
 expect_error "a FIFO as a channel is refused, not opened" 1 "iChannel0 image '$tmp/pipe.png': is a named pipe" render --scene "$data/channels.glsl" --channel "$tmp/pipe.png" --out "$tmp/x"
+cp "$data/channels.glsl" "$tmp/side.glsl"; mkfifo "$tmp/side.json"
+expect_error "a FIFO as the channels file beside a shader is refused" 1 "channels file '$tmp/side.json': is a named pipe" render --scene "$tmp/side.glsl" --out "$tmp/x"
+mkfifo "$tmp/project.json"
+expect_error "a FIFO as a project is refused" 1 "Shadertoy project '$tmp/project.json': is a named pipe" render --scene "$tmp/project.json" --out "$tmp/x"
 mkdir "$tmp/dir.glsl"
 expect_error "a directory as the shader" 1 "is a directory, not a regular file" render --scene "$tmp/dir.glsl" --out "$tmp/x"
 # A PNG whose header says 20000x20000 (no pixel data): refused from the header.
