@@ -63,7 +63,8 @@ TEST_F(Multipass, EveryImageChannelAndBufferIsBound) {
   auto native = technique("native");
   r.render(*native, 0, GazeState{});
   // The left eighth shows quadrants.png (top-left red).
-  const std::uint8_t* px = r.read_output().at(2, 2);
+  const Image img = r.read_output();
+  const std::uint8_t* px = img.at(2, 2);
   EXPECT_EQ(px[0], 255);
   EXPECT_EQ(px[1], 0);
   EXPECT_EQ(px[2], 0);
