@@ -30,7 +30,7 @@ struct ViewArgs {
 
 void run_view(const ViewArgs& a) {
   if (a.frames < 0) throw Error("--frames: must be >= 0 (0 = until the window closes)");
-  SessionOptions o = to_session_options(a.session);
+  SessionOptions o = to_session_options(a.session, "now");
   o.window = true;
   with_flag("--technique", [&] { return technique_info(a.technique); });
   const ParamArgs params = parse_params(a.session.params);
@@ -116,7 +116,7 @@ void run_view(const ViewArgs& a) {
 void register_view(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
   CLI::App* sub = app.add_subcommand("view", "Interactive window: the gaze follows the mouse");
-  add_session_options(sub, a->session);
+  add_session_options(sub, a->session, false, "now");
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();
   sub->add_flag(
       "--overlay,!--no-overlay", a->overlay,

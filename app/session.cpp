@@ -77,7 +77,8 @@ std::map<std::string, double> params_for(const ParamArgs& p, const std::string& 
   return out;
 }
 
-void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required) {
+void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required,
+                         const char* default_date) {
   auto* scene = sub->add_option(
       "--scene", a.scene,
       "Built-in scene name (see 'foveate scenes'), Shadertoy .glsl file or mesh file");
@@ -120,10 +121,20 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required) {
                   "Stop with an error when a frame takes longer than this many seconds "
                   "(0 = no limit; a GL draw cannot be interrupted, so the process exits)")
       ->capture_default_str();
+  sub->add_option("--date", a.date,
+                  std::string("Shadertoy iDate: now (the real clock), YYYY-MM-DD or "
+                              "YYYY-MM-DDTHH:MM[:SS] (a fixed start that the scene time advances); "
+                              "default ") +
+                      (std::string_view(default_date) == "now"
+                           ? "now"
+                           : std::string(default_date) + " (fixed, for reproducible frames)"));
 }
 
-SessionOptions to_session_options(const SessionArgs& a) {
+SessionOptions to_session_options(const SessionArgs& a, const char* default_date) {
   SessionOptions o;
+  o.date = with_flag("--date", [&] {
+    return parse_shadertoy_date(a.date.empty() ? std::string(default_date) : a.date);
+  });
   o.scene = a.scene;
   o.channels = a.channels;
   o.camera_path = a.camera_path;
@@ -170,6 +181,7 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   so.camera_path = o.camera_path;
   so.up = o.up;
   so.model_memory_limit = o.model_memory_limit;
+  so.date = o.date;
   scene_ = load_scene(o.scene, so);
   RendererOptions ro;
   ro.width = o.size.width;
@@ -232,6 +244,7 @@ std::unique_ptr<Reference> Session::make_reference(int factor) const {
   so.camera_path = options_.camera_path;
   so.up = options_.up;
   so.model_memory_limit = options_.model_memory_limit;
+  so.date = options_.date;
   r->scene = load_scene(options_.scene, so);
   r->supersampled = with_flag(
       "--reference", [&] { return std::make_unique<SupersampledReference>(display_, factor); });

@@ -33,12 +33,17 @@ void validate_params(const ParamArgs& p, const std::vector<std::string>& techniq
 /// The overrides for one technique (only keys it knows when given without prefix).
 std::map<std::string, double> params_for(const ParamArgs& p, const std::string& technique);
 
+/// iDate of render and bench unless --date says otherwise: runs stay
+/// deterministic (a clock shader shows midnight plus the scene time).
+inline constexpr const char* kFixedDate = "2026-01-01T00:00:00";
+
 struct SessionOptions {
   std::string scene = "raymarch";
   std::vector<std::string> channels;
   std::string camera_path;
   std::string up;                        ///< mesh files: "y", "z" or "" (the file's)
   std::uint64_t model_memory_limit = 0;  ///< mesh files: bytes; 0 = the default
+  ShadertoyDate date;                    ///< iDate of Shadertoy scenes
   Size size{1920, 1080};
   std::string display = "desktop-1080p";
   AcuityModel acuity;
@@ -71,14 +76,17 @@ struct SessionArgs {
   double time = 0.0;
   bool strict = false;
   double frame_timeout = kDefaultFrameTimeoutS;
+  std::string date;  ///< --date; empty = the command's default
 };
 /// Registers --scene --size --display --quality --slope --param --gaze
-/// --camera-path --channel --up --model-memory-limit --fps --time --strict --frame-timeout on
-/// `sub`. `scene_required` makes
-/// --scene mandatory (render).
-void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false);
-/// Checks the values and names the flag of any bad one.
-SessionOptions to_session_options(const SessionArgs& args);
+/// --camera-path --channel --up --model-memory-limit --fps --time --strict --frame-timeout --date
+/// on `sub`. `scene_required` makes --scene mandatory (render). `default_date` is what --date
+/// means when not given ("now" in view; a fixed date elsewhere, for determinism).
+void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false,
+                         const char* default_date = kFixedDate);
+/// Checks the values and names the flag of any bad one; an empty --date
+/// gives `default_date`.
+SessionOptions to_session_options(const SessionArgs& args, const char* default_date = kFixedDate);
 
 /// Runs `fn`, prefixing any foveate::Error it throws with `flag` ("--gaze: ...").
 template <class Fn>

@@ -1,8 +1,8 @@
 #include "foveate/gpu/shader.hpp"
 
+#include <algorithm>
 #include <cstring>
-#include <regex>
-#include <sstream>
+#include <string_view>
 
 #include "foveate/core/error.hpp"
 #include "foveate_embedded/gpu_shaders.hpp"
@@ -67,41 +67,91 @@ std::string_view ShaderCompiler::file(std::string_view name) const {
 
 namespace {
 
-// Expands `#include "name"` recursively, numbering each file as a GLSL source
-// string so that the driver's messages can be mapped back.
+bool space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// `#` followed by `word` at the start of `line` (spaces allowed around the
+// `#`); returns the position after the word, or npos. Linear, no regex: user
+// text (a Shadertoy file) goes through here.
+size_t directive(std::string_view line, std::string_view word) {
+  size_t i = 0;
+  while (i < line.size() && space(line[i])) ++i;
+  if (i >= line.size() || line[i] != '#') return std::string_view::npos;
+  ++i;
+  while (i < line.size() && space(line[i])) ++i;
+  if (line.substr(i, word.size()) != word) return std::string_view::npos;
+  i += word.size();
+  if (i < line.size() && !space(line[i]) && line[i] != '"') return std::string_view::npos;
+  return i;
+}
+
+// `#include "name"` alone on its line: the name, or empty.
+std::string include_name(std::string_view line) {
+  size_t i = directive(line, "include");
+  if (i == std::string_view::npos) return {};
+  while (i < line.size() && space(line[i])) ++i;
+  if (i >= line.size() || line[i] != '"') return {};
+  const size_t close = line.find('"', i + 1);
+  if (close == std::string_view::npos || close == i + 1) return {};
+  for (size_t k = close + 1; k < line.size(); ++k) {
+    if (!space(line[k])) return {};
+  }
+  return std::string(line.substr(i + 1, close - i - 1));
+}
+
+// Expands `#include "name"` (nested at most 16 deep), numbering each file as
+// a GLSL source string, and gives every run of lines of one file a range of
+// line numbers of its own (#line G index): drivers disagree on the source
+// number they report (Mesa reports 0 for semantic errors), so the line alone
+// finds the file and the line in it.
 class Assembler {
  public:
-  Assembler(const ShaderCompiler& c, std::vector<std::string>& names) : c_(c), names_(names) {}
+  Assembler(const ShaderCompiler& c, SourceMap& map) : c_(c), map_(map) {}
 
   void add(const std::string& name, std::string_view text, int depth = 0) {
     if (depth > 16) throw Error(name + ": #include nested too deeply (a cycle?)");
-    const int index = static_cast<int>(names_.size());
-    names_.push_back(name);
-    out_ << "#line 1 " << index << '\n';
-    std::istringstream in{std::string(text)};
-    std::string line;
+    const int index = static_cast<int>(map_.names.size());
+    map_.names.push_back(name);
+    begin_segment(index, 1);
     int number = 0;
-    static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
-    static const std::regex version_re(R"(^\s*#\s*version\b.*$)");
-    std::smatch m;
-    while (std::getline(in, line)) {
+    size_t pos = 0;
+    while (pos < text.size()) {
+      size_t eol = text.find('\n', pos);
+      if (eol == std::string_view::npos) eol = text.size();
+      const std::string_view line = text.substr(pos, eol - pos);
+      pos = eol + 1;
       ++number;
-      if (std::regex_match(line, m, include_re)) {
-        add(m[1].str(), c_.file(m[1].str()), depth + 1);
-        out_ << "#line " << number + 1 << ' ' << index << '\n';
-      } else if (std::regex_match(line, version_re)) {
-        out_ << "\n";  // the compiler supplies #version 450 core
+      const std::string inc = include_name(line);
+      if (!inc.empty()) {
+        add(inc, c_.file(inc), depth + 1);
+        begin_segment(index, number + 1);
+      } else if (directive(line, "version") != std::string_view::npos) {
+        emit("");  // the compiler supplies #version 450 core
       } else {
-        out_ << line << '\n';
+        emit(line);
       }
     }
   }
-  std::string str() const { return out_.str(); }
+  std::string str() const { return out_; }
 
  private:
+  void begin_segment(int index, int file_line) {
+    // A gap of one line between ranges keeps them apart even for messages
+    // about the line after the last (unterminated constructs).
+    next_line_ += 1;
+    out_ += "#line " + std::to_string(next_line_) + ' ' + std::to_string(index) + '\n';
+    map_.segments.push_back({index, next_line_, file_line, 0});
+  }
+  void emit(std::string_view line) {
+    out_.append(line);
+    out_ += '\n';
+    ++map_.segments.back().count;
+    ++next_line_;
+  }
+
   const ShaderCompiler& c_;
-  std::vector<std::string>& names_;
-  std::ostringstream out_;
+  SourceMap& map_;
+  std::string out_;
+  int next_line_ = 0;
 };
 
 const char* stage_name(GLenum s) {
@@ -121,28 +171,90 @@ const char* stage_name(GLenum s) {
 
 }  // namespace
 
-std::string map_info_log(const std::string& log, const std::vector<std::string>& names) {
-  static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
-  static const std::regex nvidia(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
-  std::istringstream in(log);
-  std::ostringstream out;
-  std::string line;
-  std::smatch m;
-  auto name = [&](const std::string& idx) {
-    const size_t i = std::stoul(idx);
-    return i < names.size() ? names[i] : "source " + idx;
-  };
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    if (std::regex_match(line, m, mesa)) {
-      out << name(m[1]) << ':' << m[2] << ':' << m[3] << ": " << m[4] << '\n';
-    } else if (std::regex_match(line, m, nvidia)) {
-      out << name(m[1]) << ':' << m[2] << ": " << m[3] << '\n';
-    } else {
-      out << line << '\n';
-    }
+namespace {
+
+// Reads digits at `i`; false if there are none (or too many to be a line).
+bool read_int(std::string_view s, size_t& i, long& v) {
+  const size_t start = i;
+  v = 0;
+  while (i < s.size() && s[i] >= '0' && s[i] <= '9' && i - start < 10) v = v * 10 + (s[i++] - '0');
+  return i > start && !(i < s.size() && s[i] >= '0' && s[i] <= '9');
+}
+
+// "S:L(C): msg" (Mesa) or "S(L) : msg" (NVIDIA), parsed by hand: driver logs
+// quote user text, and a regex over a long line overflowed the stack.
+bool parse_log_line(std::string_view line, long& src, long& ln, long& col, std::string_view& msg) {
+  size_t i = 0;
+  if (!read_int(line, i, src)) return false;
+  col = -1;
+  if (i < line.size() && line[i] == ':') {
+    ++i;
+    if (!read_int(line, i, ln) || i >= line.size() || line[i] != '(') return false;
+    ++i;
+    if (!read_int(line, i, col) || i + 1 >= line.size() || line[i] != ')' || line[i + 1] != ':')
+      return false;
+    i += 2;
+  } else if (i < line.size() && line[i] == '(') {
+    ++i;
+    if (!read_int(line, i, ln) || i >= line.size() || line[i] != ')') return false;
+    ++i;
+    while (i < line.size() && space(line[i])) ++i;
+    if (i >= line.size() || line[i] != ':') return false;
+    ++i;
+  } else {
+    return false;
   }
-  return out.str();
+  while (i < line.size() && space(line[i])) ++i;
+  msg = line.substr(i);
+  return true;
+}
+
+}  // namespace
+
+std::string map_info_log(const std::string& log, const SourceMap& map) {
+  std::string out;
+  size_t pos = 0;
+  while (pos < log.size()) {
+    size_t eol = log.find('\n', pos);
+    if (eol == std::string::npos) eol = log.size();
+    const std::string_view line = std::string_view(log).substr(pos, eol - pos);
+    pos = eol + 1;
+    if (line.empty()) continue;
+    long src = 0, ln = 0, col = -1;
+    std::string_view msg;
+    if (!parse_log_line(line, src, ln, col, msg)) {
+      out.append(line);
+      out += '\n';
+      continue;
+    }
+    std::string name;
+    long file_line = ln;
+    // The segment holding the reported line, whatever the source number says.
+    for (const SourceMap::Segment& s : map.segments) {
+      if (ln >= s.first_line && ln < s.first_line + std::max(s.count, 1)) {
+        name = map.names[static_cast<size_t>(s.index)];
+        file_line = s.file_line + (ln - s.first_line);
+        break;
+      }
+    }
+    if (name.empty()) {
+      name = src >= 0 && static_cast<size_t>(src) < map.names.size()
+                 ? map.names[static_cast<size_t>(src)]
+                 : "source " + std::to_string(src);
+    }
+    out += name + ':' + std::to_string(file_line);
+    if (col >= 0) out += ':' + std::to_string(col);
+    out += ": ";
+    out.append(msg);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string map_info_log(const std::string& log, const std::vector<std::string>& names) {
+  SourceMap map;
+  map.names = names;
+  return map_info_log(log, map);
 }
 
 Program ShaderCompiler::build(const std::vector<StageSource>& stages,
@@ -151,7 +263,7 @@ Program ShaderCompiler::build(const std::vector<StageSource>& stages,
   GLuint program = glCreateProgram();
   Program p(program, what);
   for (const StageSource& st : stages) {
-    std::vector<std::string> names;
+    SourceMap names;
     Assembler a(*this, names);
     for (const auto& piece : st.pieces) {
       a.add(piece.name, piece.text.empty() ? file(piece.name) : std::string_view(piece.text));

@@ -1,3 +1,3 @@
 // Compiles a scene's shading function on its own, to report errors at load.
-out vec4 o_color;
-void main() { o_color = scene_shade(gl_FragCoord.xy); }
+out vec4 foveate_validate_out;
+void main() { foveate_validate_out = scene_shade(gl_FragCoord.xy); }

@@ -44,6 +44,7 @@ std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOp
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".glsl" || ext == ".frag" || ext == ".fs")
     return detail::make_shadertoy_file(name_or_path, options);
+  if (ext == ".json") return detail::make_shadertoy_project(name_or_path, options);
   // Everything else goes to assimp, which names what it cannot read.
   return detail::make_mesh_file(name_or_path, options);
 }

@@ -26,11 +26,11 @@ std::string parse_error(const std::string& text, const std::string& where) {
 // escaped as nlohmann's out_of_range (an "internal error", exit 3, no file named).
 TEST(JsonRead, NumberOverflowIsAnErrorNamingTheInput) {
   EXPECT_EQ(parse_error("{\"width_px\": 1e999}", "lab.json"),
-            "lab.json: invalid JSON: number overflow parsing '1e999' (numbers must fit in a "
-            "double)");
+            "lab.json: the number 1e999 at byte 18 (key width_px) is out of range (beyond the "
+            "largest double, about 1.8e308)");
   EXPECT_EQ(parse_error("[-1e400]", "trace.json"),
-            "trace.json: invalid JSON: number overflow parsing '-1e400' (numbers must fit in a "
-            "double)");
+            "trace.json: the number -1e400 at byte 7 (key [0]) is out of range (beyond the "
+            "largest double, about 1.8e308)");
   // Large but representable numbers still parse.
   EXPECT_DOUBLE_EQ(parse_json("[1e308]", "x")[0].get<double>(), 1e308);
 }
@@ -46,7 +46,8 @@ TEST(JsonRead, DisplayWithOverflowingNumberIsAUserError) {
                              "d.json");
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("d.json: invalid JSON: number overflow"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "d.json: the number 1e999 at byte 18 (key width_px) is out of range"),
               std::string::npos)
         << e.what();
   }

@@ -64,6 +64,41 @@ TEST_F(Gpu, MapsDriverLogs) {
             "a.frag:12: error C1008: undefined\n");
 }
 
+TEST_F(Gpu, MapsDriverLogsByLineWhateverTheSourceNumber) {
+  // a.frag lines 1-3 at 2-4, b.glsl lines 1-5 at 6-10, a.frag from line 4 at 12.
+  gpu::SourceMap map;
+  map.names = {"a.frag", "b.glsl"};
+  map.segments = {{0, 2, 1, 3}, {1, 6, 1, 5}, {0, 12, 4, 10}};
+  // Mesa reports source 0 for semantic errors: the line decides.
+  EXPECT_EQ(gpu::map_info_log("0:8(11): error: `x' undeclared\n", map),
+            "b.glsl:3:11: error: `x' undeclared\n");
+  EXPECT_EQ(gpu::map_info_log("0:13(1): error: y\n", map), "a.frag:5:1: error: y\n");
+  EXPECT_EQ(gpu::map_info_log("1(7) : error C0000: z\n", map), "b.glsl:2: error C0000: z\n");
+  // Lines outside every segment fall back to the source number; other
+  // lines pass through, however long.
+  EXPECT_EQ(gpu::map_info_log("1:99(2): w\n", map), "b.glsl:99:2: w\n");
+  const std::string long_line = "0:8(1): `" + std::string(300000, 'q') + "' undeclared";
+  EXPECT_EQ(gpu::map_info_log(long_line, map).substr(0, 12), "b.glsl:3:1: ");
+  EXPECT_EQ(gpu::map_info_log("warning: something\n", map), "warning: something\n");
+}
+
+TEST_F(Gpu, SemanticErrorInAUserPieceNamesItsLine) {
+  gpu::ShaderCompiler c;
+  try {
+    c.build(
+        {gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+         gpu::StageSource{GL_FRAGMENT_SHADER,
+                          {{"first.glsl", "// one\n// two\nfloat f() { return 1.0; }\n"},
+                           {"user.glsl", "out vec4 o;\nvoid main() {\n  o = vec4(nope);\n}\n"}}}},
+        "test");
+    FAIL() << "expected a compile error";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("user.glsl:3:"), std::string::npos) << m;
+    EXPECT_EQ(m.find("first.glsl"), std::string::npos) << m;
+  }
+}
+
 TEST_F(Gpu, UnknownShaderAndBadTextureSize) {
   gpu::ShaderCompiler c;
   EXPECT_THROW((void)c.file("nope.frag"), Error);

@@ -73,8 +73,25 @@ class ShaderCompiler {
   std::vector<std::span<const embedded::EmbeddedFile>> tables_;
 };
 
+/// Where the lines of an assembled stage came from: the source strings'
+/// names, by index, and runs of consecutive lines of one file (a file is
+/// split into several runs around its #includes).
+struct SourceMap {
+  struct Segment {
+    int index = 0;       ///< into names
+    int first_line = 0;  ///< line number the driver reports for the run's first line
+    int file_line = 0;   ///< that line's number in the file
+    int count = 0;       ///< lines in the run
+  };
+  std::vector<std::string> names;
+  std::vector<Segment> segments;
+};
+
 /// Maps a driver info log (Mesa "0:12(3): error: ..." or NVIDIA "0(12) : error ...")
-/// to "file:line: ..." using the names of the source strings, by index.
+/// to "file:line: ...": by the segment that holds the reported line where
+/// there is one, else by the source number.
+std::string map_info_log(const std::string& log, const SourceMap& map);
+/// The same with source names only (each source string numbered from line 1).
 std::string map_info_log(const std::string& log, const std::vector<std::string>& names);
 
 }  // namespace foveate::gpu

@@ -136,6 +136,22 @@ struct SceneListing {
 };
 std::vector<SceneListing> builtin_scenes();
 
+/// Shadertoy's iDate (year, month from 0, day, seconds since midnight): a
+/// fixed start that the scene clock advances (frame k at time t shows the
+/// start plus t seconds), or the real local clock.
+struct ShadertoyDate {
+  int year = 2026;
+  int month = 1;  ///< 1-12 (iDate.y holds month - 1, as JavaScript's getMonth)
+  int day = 1;
+  double seconds = 0.0;  ///< time of day
+  bool real_clock = false;
+};
+/// "now" (the real clock), "YYYY-MM-DD" or "YYYY-MM-DDTHH:MM[:SS]" (also with
+/// a space for the T); throws foveate::Error naming the text otherwise.
+ShadertoyDate parse_shadertoy_date(const std::string& text);
+/// iDate for a frame at scene time `time_s`.
+std::array<float, 4> shadertoy_idate(const ShadertoyDate& date, double time_s);
+
 struct SceneOptions {
   std::vector<std::string> channels;  ///< iChannel0..3 image files (Shadertoy scenes)
   std::string camera_path;            ///< keyframes JSON; empty = the scene's default
@@ -145,6 +161,8 @@ struct SceneOptions {
   /// Mesh files: refuse a model whose declared size would need more bytes
   /// than this to import; 0 = half the machine's memory.
   std::uint64_t model_memory_limit = 0;
+  /// iDate of Shadertoy scenes; by default 2026-01-01 00:00 (deterministic).
+  ShadertoyDate date;
 };
 
 /// The MSAA sample counts (above 1) a mesh scene's G-buffer can have on the
@@ -152,9 +170,9 @@ struct SceneOptions {
 /// supports. Needs a current context.
 std::vector<int> gbuffer_sample_counts();
 
-/// A built-in scene by name, or a file: .glsl/.frag (Shadertoy) or a mesh file
-/// assimp reads. Needs a current GL context. Throws foveate::Error with the
-/// file and the reason for bad input.
+/// A built-in scene by name, or a file: .glsl/.frag (Shadertoy), .json (a
+/// multipass Shadertoy project, docs/shadertoy.md) or a mesh file assimp reads. Needs a current GL
+/// context. Throws foveate::Error with the file and the reason for bad input.
 std::unique_ptr<Scene> load_scene(const std::string& name_or_path,
                                   const SceneOptions& options = {});
 
