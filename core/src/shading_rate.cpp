@@ -141,6 +141,9 @@ void ShadingRateOptions::validate() const {
     throw Error("latency margin: expected a finite number of degrees >= 0, got " +
                 std::to_string(latency_margin_deg));
   }
+  if (!std::isfinite(fovea_scale) || fovea_scale < 1.0 || fovea_scale > 100.0) {
+    throw Error("fovea scale: expected 1..100, got " + std::to_string(fovea_scale));
+  }
   if (std::find(supported.begin(), supported.end(), ShadingRate{1, 1}) == supported.end()) {
     throw Error("shading rates: must include 1x1 (native shading, which every GPU supports)");
   }
@@ -206,7 +209,8 @@ ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity,
   const double x0 = rect[0], y0 = rect[1], x1 = rect[2], y1 = rect[3];
   // Eccentricity of the tile's point nearest the gaze, less the latency margin.
   const double e =
-      std::max(0.0, min_eccentricity(display, gaze, x0, y0, x1, y1) - options.latency_margin_deg);
+      std::max(0.0, min_eccentricity(display, gaze, x0, y0, x1, y1) / options.fovea_scale -
+                        options.latency_margin_deg);
   const double half_cycle = 0.5 * acuity.mar_deg(e) * kRad;
   // The largest angle of one pixel step along x and along y over the tile.
   const double f = display.eye_distance_px();

@@ -210,6 +210,15 @@ TEST(ShadingRate, LatencyMarginShrinksTheCoarseArea) {
   for (size_t i = 0; i < a.rates.size(); ++i) EXPECT_LE(b.rates[i].pixels(), a.rates[i].pixels());
 }
 
+TEST(ShadingRate, FoveaScaleWidensTheFinerRates) {
+  // A tracker's fallback divides eccentricities by its scale: the 20-degree
+  // tile of the desktop at scale 4 is at 4.95 deg (w = 0.157 deg, 3.4 and 3.2
+  // pixels per sample): 2x2 instead of 4x4.
+  ShadingRateOptions o;
+  o.fovea_scale = 4.0;
+  EXPECT_EQ(tile(preset("desktop-1080p"), {960, 540}, 110, 33, o), (ShadingRate{2, 2}));
+}
+
 TEST(ShadingRate, BottomLeftOriginFlipsTheRows) {
   // 320 x 160 (10 tile rows of 16): the OpenGL grid is the Vulkan one upside down.
   const Display d = preset("desktop-1080p").resized(320, 160);
@@ -255,6 +264,9 @@ TEST(ShadingRate, BadInputIsRefused) {
   fails(o, "latency margin");
   o.latency_margin_deg = std::nan("");
   fails(o, "latency margin");
+  o = {};
+  o.fovea_scale = 0.5;
+  fails(o, "fovea scale");
   o = {};
   o.supported = {{2, 2}};
   fails(o, "1x1");

@@ -78,6 +78,9 @@ const std::array<unsigned, 7>& gl_nv_palette();
 struct ShadingRateOptions {
   int tile_px = 16;                 ///< 8, 16 or 32
   double latency_margin_deg = 0.0;  ///< subtracted from every tile's eccentricity
+  /// >= 1: every tile's eccentricity is divided by it first (a gaze tracker's
+  /// fallback widens every fovea by this factor).
+  double fovea_scale = 1.0;
   std::vector<ShadingRate> supported{kShadingRates.begin(), kShadingRates.end()};
   /// Where the tile grid is anchored and which tile row comes first: the
   /// top-left for Vulkan and D3D12 images, the bottom-left (the window
