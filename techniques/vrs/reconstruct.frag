@@ -6,7 +6,6 @@
 uniform usampler2D u_classes;  // one texel per tile: index into the rates (GL rows)
 uniform sampler2D u_class0, u_class1, u_class2, u_class3, u_class4, u_class5, u_class6;
 uniform vec2 u_extent[7];  // per class: its target's size in screen pixels (texels x rate)
-uniform float u_pixels[7];  // per class: pixels per fragment (rw * rh)
 uniform int u_tile;
 out vec4 o_color;
 
@@ -34,9 +33,9 @@ void main() {
       ivec2 n = tile + ivec2(dx, dy);
       if (any(lessThan(n, ivec2(0))) || any(greaterThanEqual(n, grid))) continue;
       int k = int(texelFetch(u_classes, n, 0).r);
-      // Finer: fewer pixels per fragment; between 2x4 and 4x2 (or 1x2 and
-      // 2x1) the lower index, so that every border between classes fades.
-      if (u_pixels[k] > u_pixels[c] || (u_pixels[k] == u_pixels[c] && k >= c)) continue;
+      // Finer: a lower index (the rates are ordered by pixels per fragment,
+      // 2x4 before 4x2 and 1x2 before 2x1), so every border between classes fades.
+      if (k >= c) continue;
       vec2 lo = vec2(n * u_tile), hi = lo + float(u_tile);
       float d = distance(p, clamp(p, lo, hi));
       if (d < nearest) {

@@ -3,8 +3,8 @@
 // sample spacing keeps two samples per MAR cycle), as engines and headsets
 // foveate today. llvmpipe has no VRS, so this is the emulation: every rate
 // class present is shaded into a target of its own reduced resolution (W / rw
-// x H / rh), limited by a stencil mask to its tiles and a one-tile border
-// (llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
+// x H / rh), limited by a stencil mask to its tiles and the coarser tiles
+// next to them (llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
 // nothing), then the frame is put together in linear light: each pixel reads
 // its class bilinearly, and a tile next to a finer one fades into it over one
 // tile, so the 1x1 fovea is native and no tile edge shows. `fixed` takes the
@@ -149,8 +149,6 @@ class Vrs final : public Technique {
                   const std::string e = "u_extent[" + std::to_string(k) + "]";
                   p.set(e.c_str(), float(((W + r.width - 1) / r.width) * r.width),
                         float(((H + r.height - 1) / r.height) * r.height));
-                  const std::string px = "u_pixels[" + std::to_string(k) + "]";
-                  p.set(px.c_str(), float(r.pixels()));
                 }
                 p.set("u_tile", tile_);
               });

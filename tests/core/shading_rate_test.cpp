@@ -196,6 +196,11 @@ TEST(ShadingRate, EncodingsMatchTheSpecifications) {
     EXPECT_EQ(gl_nv_palette()[static_cast<size_t>(idx)], row.gl_enum) << row.r.name();
   }
   EXPECT_THROW(encode_shading_rate({3, 3}, RateApi::Vulkan), Error);
+  // The list is ordered by pixels per fragment (the vrs technique's shaders
+  // rely on it: a higher index is coarser).
+  for (size_t i = 1; i < kShadingRates.size(); ++i) {
+    EXPECT_LE(kShadingRates[i - 1].pixels(), kShadingRates[i].pixels());
+  }
 }
 
 TEST(ShadingRate, LatencyMarginShrinksTheCoarseArea) {
