@@ -10,7 +10,8 @@
   X(logpolar)                         \
   X(checkerboard)                     \
   X(lodmask)                          \
-  X(inset)
+  X(inset)                            \
+  X(vrs)
 
 namespace foveate::tech {
 

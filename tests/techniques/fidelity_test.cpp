@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "foveate/core/models.hpp"
+#include "foveate/core/shading_rate.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
@@ -322,4 +323,96 @@ TEST_F(Fidelity, LogpolarTemporalLevelConvergesTowardsTheFilteredScene) {
   };
   const double with = periphery_deviation(0.5), without = periphery_deviation(0.0);
   EXPECT_LT(with, 0.8 * without) << with << " vs " << without;
+}
+
+// ---------------------------------------------------------------- vrs
+
+TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
+  // The 1x1 tiles are shaded at native resolution and reconstructed untouched:
+  // the disc around the gaze that only 1x1 tiles cover (the overlay's circle,
+  // 3 degrees on the paper's display: 2x2 needs w(e) >= 4 pixels) equals
+  // native, and the coarse periphery keeps native's mean linear luminance.
+  const int W = 1920, H = 1080;
+  for (const char* name : {"detail", "cheap", "guenter"}) {
+    auto scene = load_scene(name);
+    const Image ref = native(*scene, W, H);
+    auto t = make_technique("vrs", config(W, H));
+    for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{400, 300}}) {
+      FrameStats s;
+      const Image img = run(*t, *scene, gaze, 0, &s);
+      const double fovea = fovea_px(*t, gaze);
+      EXPECT_GE(fovea, t->display().radius_px_at(2.5));
+      EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
+      const double periphery = mean_linear_luminance(ref, gaze, fovea);
+      EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
+      // The model's pixel ratio is 0.10 at the centre; each finer class also
+      // shaded over the coarser tiles beside it adds a little (0.116 here).
+      EXPECT_LT(s.shaded_pixels, 0.16 * W * H) << name;
+      EXPECT_GT(s.shaded_pixels, 0.08 * W * H) << name;
+    }
+  }
+}
+
+TEST_F(Fidelity, VrsShowsNoTileStructure) {
+  // On the smooth scene, where two tiles of different rates meet, the error
+  // against native changes across their edge no faster than just beside it:
+  // no seam where the classes meet (the coarser tile fades into the finer
+  // one's reconstruction, which reaches it exactly at their border). With
+  // the fade removed, this ratio is 1.5 (1.06 with it).
+  const int W = 960, H = 540;
+  auto scene = load_scene("cheap");
+  const Image ref = native(*scene, W, H);
+  auto t = make_technique("vrs", config(W, H));
+  const Vec2d gaze{480, 270};
+  const Image img = run(*t, *scene, gaze);
+  ShadingRateOptions o;
+  o.origin_bottom_left = true;  // the technique's grid (GL)
+  const ShadingRateImage m = shading_rate_image(t->display(), AcuityModel::quality("A"), gaze, o);
+  auto rate = [&](int x, int y) {
+    const auto k = m.tile_of(x, y);
+    return m.at(k[0], k[1]);
+  };
+  // The change of the error (image - native) between two neighbouring pixels.
+  auto step = [&](int x0, int y0, int x1, int y1) {
+    double d = 0;
+    for (int c = 0; c < 3; ++c) {
+      d += std::abs((int(img.at(x1, y1)[c]) - int(ref.at(x1, y1)[c])) -
+                    (int(img.at(x0, y0)[c]) - int(ref.at(x0, y0)[c])));
+    }
+    return d;
+  };
+  double edge = 0, beside = 0;
+  int n = 0;
+  for (int y = 2; y + 2 < H; ++y) {
+    for (int x = 2; x + 2 < W; ++x) {
+      if (!(rate(x, y) == rate(x + 1, y))) {  // a border between x and x + 1
+        edge += step(x, y, x + 1, y);
+        beside += 0.5 * (step(x - 1, y, x, y) + step(x + 1, y, x + 2, y));
+        ++n;
+      }
+      if (!(rate(x, y) == rate(x, y + 1))) {
+        edge += step(x, y, x, y + 1);
+        beside += 0.5 * (step(x, y - 1, x, y) + step(x, y + 1, x, y + 2));
+        ++n;
+      }
+    }
+  }
+  EXPECT_GT(n, 500);
+  EXPECT_LT(edge / beside, 1.2) << edge << " / " << beside << " over " << n << " borders";
+}
+
+TEST_F(Fidelity, VrsFixedModeTakesTheRatesFromTheCentre) {
+  // Without eye tracking the native disc stays at the screen centre wherever
+  // the gaze is.
+  const int W = 1920, H = 1080;
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene, W, H);
+  auto t = make_technique("vrs", config(W, H, {{"fixed", 1}}));
+  const Image img = run(*t, *scene, {300, 200});
+  const auto shapes = t->overlay(GazeState{{300, 200}});
+  EXPECT_EQ(shapes[0].x, 960);
+  EXPECT_EQ(shapes[0].y, 540);
+  EXPECT_TRUE(within_golden(compare_disc(ref, img, {960, 540}, shapes[0].w)));
+  // ... and the gaze's surroundings are not native (the detail scene aliases there).
+  EXPECT_FALSE(within_golden(compare_disc(ref, img, {300, 200}, shapes[0].w)));
 }

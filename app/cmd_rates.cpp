@@ -1,0 +1,252 @@
+// foveate rates: the shading-rate image the acuity model gives for a display
+// and a gaze, encoded for an engine's variable-rate shading (Vulkan, D3D12 or
+// GL_NV_shading_rate_image), with a preview and the fraction of the screen at
+// each rate.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "cli_util.hpp"
+#include "commands.hpp"
+#include "foveate/core/error.hpp"
+#include "foveate/core/file.hpp"
+#include "foveate/core/image.hpp"
+#include "foveate/core/shading_rate.hpp"
+
+namespace foveate::app {
+
+namespace {
+
+struct RatesArgs {
+  std::string display = "desktop-1080p";
+  std::string gaze;
+  int tile = 16;
+  std::string api = "vulkan";
+  std::string out;
+  std::string preview;
+  std::string size;
+  std::string quality;
+  std::optional<double> slope;
+  double latency_ms = 0.0;
+  double max_saccade = 200.0;
+  std::string rates;
+};
+
+// Preview colours by rate, in the order of kShadingRates.
+constexpr std::uint8_t kRateColours[7][3] = {{230, 60, 60}, {240, 150, 40}, {225, 205, 50},
+                                             {60, 180, 75}, {70, 190, 200}, {70, 110, 220},
+                                             {150, 80, 200}};
+
+size_t rate_index(ShadingRate r) {
+  return static_cast<size_t>(std::find(kShadingRates.begin(), kShadingRates.end(), r) -
+                             kShadingRates.begin());
+}
+
+std::string hex_colour(size_t i) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", kRateColours[i][0], kRateColours[i][1],
+                kRateColours[i][2]);
+  return buf;
+}
+
+void put(Image& img, int x, int y, const std::uint8_t* c, double a) {
+  if (x < 0 || y < 0 || x >= img.width || y >= img.height) return;
+  std::uint8_t* p = img.at(x, y);
+  for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(p[k] * (1.0 - a) + c[k] * a + 0.5);
+  p[3] = 255;
+}
+
+// A plain grey frame, each tile tinted with its rate's colour and outlined, a
+// black-and-white gaze marker, and a legend in the bottom-left corner: one
+// swatch per rate, finest first, each holding a white box as wide and high as
+// the rate's fragment (4 screen pixels per pixel of the fragment).
+Image preview(const ShadingRateImage& m, Vec2d gaze) {
+  Image img(m.width_px, m.height_px);
+  const std::uint8_t grey[3] = {128, 128, 128}, dark[3] = {40, 40, 40}, white[3] = {255, 255, 255};
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) put(img, x, y, grey, 1.0);
+  }
+  for (int ty = 0; ty < m.tiles_y; ++ty) {
+    for (int tx = 0; tx < m.tiles_x; ++tx) {
+      const auto r = m.tile_rect(tx, ty);
+      const std::uint8_t* c = kRateColours[rate_index(m.at(tx, ty))];
+      for (int y = r[1]; y < r[3]; ++y) {
+        for (int x = r[0]; x < r[2]; ++x) {
+          const bool edge = x == r[0] || y == r[1];
+          put(img, x, y, edge ? dark : c, edge ? 0.35 : 0.6);
+        }
+      }
+    }
+  }
+  const int gx = static_cast<int>(gaze.x), gy = static_cast<int>(gaze.y);
+  for (int d = -6; d <= 6; ++d) {
+    for (int w = -1; w <= 1; ++w) {
+      put(img, gx + d, gy + w, w == 0 ? white : dark, 1.0);
+      put(img, gx + w, gy + d, w == 0 ? white : dark, 1.0);
+    }
+  }
+  const int s = 24, pad = 4;
+  for (size_t i = 0; i < kShadingRates.size(); ++i) {
+    const int x0 = pad + static_cast<int>(i) * (s + pad), y0 = img.height - pad - s;
+    for (int y = y0 - 1; y <= y0 + s; ++y) {
+      for (int x = x0 - 1; x <= x0 + s; ++x) {
+        const bool edge = x < x0 || y < y0 || x >= x0 + s || y >= y0 + s;
+        put(img, x, y, edge ? dark : kRateColours[i], 1.0);
+      }
+    }
+    const int bw = 4 * kShadingRates[i].width, bh = 4 * kShadingRates[i].height;
+    for (int y = 0; y < bh; ++y) {
+      for (int x = 0; x < bw; ++x)
+        put(img, x0 + (s - bw) / 2 + x, y0 + (s - bh) / 2 + y, white, 1.0);
+    }
+  }
+  return img;
+}
+
+void run_rates(const RatesArgs& a) {
+  const std::string ext = std::filesystem::path(a.out).extension().string();
+  if (ext != ".bin" && ext != ".json") {
+    throw Error("--out: the file must end in .bin or .json, got '" + a.out + "'");
+  }
+  if (!a.preview.empty() && std::filesystem::path(a.preview).extension() != ".png") {
+    throw Error("--preview: the file must end in .png, got '" + a.preview + "'");
+  }
+  if (!(a.latency_ms >= 0.0) || a.latency_ms > 10000.0) {
+    throw Error("--latency-ms: expected 0..10000 milliseconds, got " + fmt(a.latency_ms, 3));
+  }
+  if (!(a.max_saccade >= 0.0) || a.max_saccade > 1000.0) {
+    throw Error("--max-saccade: expected 0..1000 degrees per second, got " + fmt(a.max_saccade, 3));
+  }
+  if (a.tile != 8 && a.tile != 16 && a.tile != 32) {
+    throw Error("--tile: expected 8, 16 or 32 pixels, got " + std::to_string(a.tile));
+  }
+  RateApi api;
+  try {
+    api = parse_rate_api(a.api);
+  } catch (const Error& e) {
+    throw Error(std::string("--api: ") + e.what());
+  }
+  ShadingRateOptions opt;
+  opt.tile_px = a.tile;
+  opt.origin_bottom_left = api == RateApi::GlNv;
+  opt.latency_margin_deg = a.latency_ms * a.max_saccade / 1000.0;
+  if (!a.rates.empty()) {
+    try {
+      opt.supported = parse_shading_rates(a.rates);
+    } catch (const Error& e) {
+      throw Error(std::string("--rates: ") + e.what());
+    }
+  }
+  Display display = Display::load(a.display);
+  if (!a.size.empty()) {
+    const Size sz = parse_size(a.size, "--size");
+    display = display.resized(sz.width, sz.height);
+  }
+  const AcuityModel acuity = acuity_from_options(a.quality, a.slope);
+  const Vec2d gaze = a.gaze.empty()
+                         ? Vec2d{0.5 * display.width_px, 0.5 * display.height_px}
+                         : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
+  const ShadingRateImage m = shading_rate_image(display, acuity, gaze, opt);
+  const std::vector<std::uint8_t> bytes = m.encode(api);
+
+  if (ext == ".bin") {
+    write_file_atomic(a.out,
+                      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  } else {
+    nlohmann::json j;
+    j["size"] = {m.width_px, m.height_px};
+    j["tile"] = m.tile_px;
+    j["tiles"] = {m.tiles_x, m.tiles_y};
+    j["api"] = rate_api_name(api);
+    j["row_order"] = m.origin_bottom_left ? "bottom-to-top" : "top-to-bottom";
+    j["display"] = display;
+    j["gaze_px"] = {gaze.x, gaze.y};
+    j["acuity"] = {{"slope", acuity.slope}, {"w0_deg", acuity.w0_deg}};
+    j["latency_margin_deg"] = opt.latency_margin_deg;
+    nlohmann::json legend = nlohmann::json::array();
+    for (ShadingRate r : opt.supported) {
+      nlohmann::json e = {{"rate", r.name()},
+                          {"value", encode_shading_rate(r, api)},
+                          {"fraction", m.fraction(r)},
+                          {"colour", hex_colour(rate_index(r))}};
+      if (api == RateApi::GlNv) e["gl_enum"] = gl_nv_palette()[rate_index(r)];
+      legend.push_back(e);
+    }
+    j["legend"] = legend;
+    nlohmann::json grid = nlohmann::json::array();
+    for (int ty = 0; ty < m.tiles_y; ++ty) {
+      nlohmann::json row = nlohmann::json::array();
+      for (int tx = 0; tx < m.tiles_x; ++tx) row.push_back(bytes[size_t(ty) * m.tiles_x + tx]);
+      grid.push_back(row);
+    }
+    j["grid"] = grid;
+    j["shaded_samples"] = m.shaded_samples();
+    j["pixel_ratio"] = m.pixel_ratio();
+    write_file_atomic(a.out, j.dump(1) + "\n");
+  }
+  if (!a.preview.empty()) write_png(a.preview, preview(m, gaze));
+
+  std::cout << "display " << display.name << " " << display.width_px << 'x' << display.height_px
+            << ", gaze (" << fmt(gaze.x, 1) << ", " << fmt(gaze.y, 1)
+            << ") px, acuity w(e) = " << fmt(acuity.slope, 4) << " e + " << fmt(acuity.w0_deg, 4)
+            << " deg";
+  if (opt.latency_margin_deg > 0.0) {
+    std::cout << ", latency margin " << fmt(opt.latency_margin_deg, 2) << " deg";
+  }
+  std::cout << "\n"
+            << m.tiles_x << 'x' << m.tiles_y << " tiles of " << m.tile_px << " px, "
+            << rate_api_name(api) << " encoding, rows "
+            << (m.origin_bottom_left ? "bottom-to-top" : "top-to-bottom") << "\n\n";
+  std::printf("%-5s %6s %10s\n", "rate", "value", "pixels");
+  for (ShadingRate r : opt.supported) {
+    std::printf("%-5s %6d %9.1f%%\n", r.name().c_str(), encode_shading_rate(r, api),
+                100.0 * m.fraction(r));
+  }
+  std::printf("\nshaded samples / native pixels = %.4f (%.2fx fewer invocations)\n",
+              m.pixel_ratio(), 1.0 / m.pixel_ratio());
+  std::cout << "wrote " << a.out;
+  if (!a.preview.empty()) std::cout << " and " << a.preview;
+  std::cout << '\n';
+}
+
+}  // namespace
+
+void register_rates(CLI::App& app);
+const CommandRegistrar kRates(15, register_rates);
+
+void register_rates(CLI::App& app) {
+  auto a = std::make_shared<RatesArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "rates", "Write the shading-rate image (variable-rate shading) the acuity model gives");
+  sub->add_option("--display", a->display,
+                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3) or JSON file")
+      ->capture_default_str();
+  sub->add_option("--gaze", a->gaze,
+                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
+  sub->add_option("--tile", a->tile, "Tile size in pixels: 8, 16 or 32")->capture_default_str();
+  sub->add_option("--api", a->api,
+                  "Encoding: vulkan (attachment texels), d3d12 (D3D12_SHADING_RATE) or gl-nv "
+                  "(palette indices, rows bottom-to-top)")
+      ->capture_default_str();
+  sub->add_option("--out", a->out, "Output: FILE.bin (one byte per tile) or FILE.json")->required();
+  sub->add_option("--preview", a->preview, "Also write a PNG: a colour per rate and a legend");
+  sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
+  sub->add_option("--quality", a->quality,
+                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
+  sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
+  sub->add_option("--latency-ms", a->latency_ms,
+                  "Gaze latency: the fovea grows by latency x --max-saccade degrees")
+      ->capture_default_str();
+  sub->add_option("--max-saccade", a->max_saccade, "Fastest eye movement, degrees per second")
+      ->capture_default_str();
+  sub->add_option("--rates", a->rates,
+                  "Rates the GPU supports, e.g. 1x1,2x2,4x4 (must include 1x1); default all "
+                  "of 1x1,1x2,2x1,2x2,2x4,4x2,4x4");
+  sub->callback([a] { run_rates(*a); });
+}
+
+}  // namespace foveate::app

@@ -1,0 +1,260 @@
+#include "foveate/core/shading_rate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "foveate/core/error.hpp"
+
+namespace foveate {
+
+namespace {
+constexpr double kRad = std::numbers::pi / 180.0;
+
+bool known_rate(ShadingRate r) {
+  return std::find(kShadingRates.begin(), kShadingRates.end(), r) != kShadingRates.end();
+}
+
+int log2_of(int v) { return v == 4 ? 2 : v == 2 ? 1 : 0; }
+
+// The value in [lo, hi] nearest to v.
+double nearest_in(double v, double lo, double hi) { return std::clamp(v, lo, hi); }
+
+// Largest angle (radians) one pixel step along the first axis subtends over the
+// rectangle [a0, a1] x [b0, b1] (coordinates relative to the display centre,
+// the first axis being the step's). At (a, b) the step subtends
+// sqrt(b^2 + f^2) / (a^2 + b^2 + f^2): decreasing in |a|, and in |b| it rises
+// to a peak at b^2 = a^2 - f^2 (0 when |a| <= f) and falls after it.
+double max_step_angle(double a0, double a1, double b0, double b1, double f) {
+  const double a = nearest_in(0.0, a0, a1);
+  const double peak = std::sqrt(std::max(0.0, a * a - f * f));
+  // |b| over [b0, b1] spans [lo, hi]; the function of |b| is unimodal.
+  const double lo = (b0 <= 0.0 && b1 >= 0.0) ? 0.0 : std::min(std::abs(b0), std::abs(b1));
+  const double hi = std::max(std::abs(b0), std::abs(b1));
+  const double b = nearest_in(peak, lo, hi);
+  const double q = b * b + f * f;
+  return std::sqrt(q) / (a * a + q);
+}
+
+// The smallest eccentricity (degrees) of any point of the rectangle
+// [x0, x1] x [y0, y1] (top-left pixels). The angle from the gaze has no
+// minimum inside the rectangle but at the gaze itself, so it lies on an edge;
+// each edge is an arc of a great circle, along which the angle falls to one
+// minimum and rises again: at x* = gx (y^2 + f^2) / (y gy + f^2) along a row y
+// (centre-relative coordinates), likewise along a column. On a flat panel this
+// is the point nearest the gaze in pixels to within a hundredth of a degree;
+// on a wide head-mounted pinhole far from the centre it is not.
+double min_eccentricity(const Display& d, Vec2d gaze, double x0, double y0, double x1, double y1) {
+  if (gaze.x >= x0 && gaze.x <= x1 && gaze.y >= y0 && gaze.y <= y1) return 0.0;
+  const double f = d.eye_distance_px(), f2 = f * f;
+  const double cx = 0.5 * d.width_px, cy = 0.5 * d.height_px;
+  const double gx = gaze.x - cx, gy = gaze.y - cy;
+  double best = 180.0;
+  auto consider = [&](double x, double y) {
+    best = std::min(best, d.eccentricity_deg({x, y}, gaze));
+  };
+  for (double y : {y0, y1}) {  // rows: the along-edge coordinate is x
+    const double yr = y - cy, den = yr * gy + f2;
+    consider(x0, y);
+    consider(x1, y);
+    if (den > 0.0) consider(nearest_in(cx + gx * (yr * yr + f2) / den, x0, x1), y);
+  }
+  for (double x : {x0, x1}) {  // columns
+    const double xr = x - cx, den = xr * gx + f2;
+    if (den > 0.0) consider(x, nearest_in(cy + gy * (xr * xr + f2) / den, y0, y1));
+  }
+  return best;
+}
+}  // namespace
+
+std::string ShadingRate::name() const {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+ShadingRate parse_shading_rate(const std::string& text) {
+  for (ShadingRate r : kShadingRates) {
+    if (r.name() == text) return r;
+  }
+  throw Error("shading rate '" + text + "': expected one of 1x1, 1x2, 2x1, 2x2, 2x4, 4x2, 4x4");
+}
+
+std::vector<ShadingRate> parse_shading_rates(const std::string& text) {
+  std::vector<ShadingRate> out;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
+    const ShadingRate r = parse_shading_rate(item);
+    if (std::find(out.begin(), out.end(), r) != out.end()) {
+      throw Error("shading rates: " + r.name() + " is listed twice");
+    }
+    out.push_back(r);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (std::find(out.begin(), out.end(), ShadingRate{1, 1}) == out.end()) {
+    throw Error("shading rates: must include 1x1 (native shading, which every GPU supports)");
+  }
+  return out;
+}
+
+RateApi parse_rate_api(const std::string& text) {
+  if (text == "vulkan") return RateApi::Vulkan;
+  if (text == "d3d12") return RateApi::D3D12;
+  if (text == "gl-nv") return RateApi::GlNv;
+  throw Error("api '" + text + "': expected vulkan, d3d12 or gl-nv");
+}
+
+const char* rate_api_name(RateApi api) {
+  switch (api) {
+    case RateApi::Vulkan:
+      return "vulkan";
+    case RateApi::D3D12:
+      return "d3d12";
+    case RateApi::GlNv:
+      return "gl-nv";
+  }
+  return "?";
+}
+
+std::uint8_t encode_shading_rate(ShadingRate rate, RateApi api) {
+  if (!known_rate(rate)) throw Error("shading rate " + rate.name() + ": not a VRS rate");
+  if (api == RateApi::GlNv) {
+    const auto it = std::find(kShadingRates.begin(), kShadingRates.end(), rate);
+    return static_cast<std::uint8_t>(it - kShadingRates.begin());
+  }
+  // Vulkan's attachment texel and D3D12_SHADING_RATE share this encoding.
+  return static_cast<std::uint8_t>(log2_of(rate.width) << 2 | log2_of(rate.height));
+}
+
+const std::array<unsigned, 7>& gl_nv_palette() {
+  static const std::array<unsigned, 7> palette = {0x9565, 0x9566, 0x9567, 0x9568,
+                                                  0x9569, 0x956A, 0x956B};
+  return palette;
+}
+
+void ShadingRateOptions::validate() const {
+  if (tile_px != 8 && tile_px != 16 && tile_px != 32) {
+    throw Error("tile: expected 8, 16 or 32 pixels, got " + std::to_string(tile_px));
+  }
+  if (!std::isfinite(latency_margin_deg) || latency_margin_deg < 0.0) {
+    throw Error("latency margin: expected a finite number of degrees >= 0, got " +
+                std::to_string(latency_margin_deg));
+  }
+  if (!std::isfinite(fovea_scale) || fovea_scale < 1.0 || fovea_scale > 100.0) {
+    throw Error("fovea scale: expected 1..100, got " + std::to_string(fovea_scale));
+  }
+  if (std::find(supported.begin(), supported.end(), ShadingRate{1, 1}) == supported.end()) {
+    throw Error("shading rates: must include 1x1 (native shading, which every GPU supports)");
+  }
+  for (ShadingRate r : supported) {
+    if (!known_rate(r)) throw Error("shading rates: " + r.name() + " is not a VRS rate");
+  }
+}
+
+std::array<int, 4> ShadingRateImage::tile_rect(int tx, int ty) const {
+  const int x0 = tx * tile_px, x1 = std::min(width_px, x0 + tile_px);
+  if (!origin_bottom_left) {
+    const int y0 = ty * tile_px;
+    return {x0, y0, x1, std::min(height_px, y0 + tile_px)};
+  }
+  const int b0 = ty * tile_px, b1 = std::min(height_px, b0 + tile_px);
+  return {x0, height_px - b1, x1, height_px - b0};
+}
+
+std::array<int, 2> ShadingRateImage::tile_of(int x, int y) const {
+  const int row = origin_bottom_left ? height_px - 1 - y : y;
+  return {x / tile_px, row / tile_px};
+}
+
+double ShadingRateImage::fraction(ShadingRate rate) const {
+  double n = 0.0;
+  for (int ty = 0; ty < tiles_y; ++ty) {
+    for (int tx = 0; tx < tiles_x; ++tx) {
+      if (!(at(tx, ty) == rate)) continue;
+      const auto r = tile_rect(tx, ty);
+      n += double(r[2] - r[0]) * (r[3] - r[1]);
+    }
+  }
+  return n / (double(width_px) * height_px);
+}
+
+double ShadingRateImage::shaded_samples() const {
+  double n = 0.0;
+  for (int ty = 0; ty < tiles_y; ++ty) {
+    for (int tx = 0; tx < tiles_x; ++tx) {
+      const ShadingRate s = at(tx, ty);
+      const auto r = tile_rect(tx, ty);
+      // A fragment partly outside the screen is still shaded once.
+      n +=
+          double((r[2] - r[0] + s.width - 1) / s.width) * ((r[3] - r[1] + s.height - 1) / s.height);
+    }
+  }
+  return n;
+}
+
+double ShadingRateImage::pixel_ratio() const {
+  return shaded_samples() / (double(width_px) * height_px);
+}
+
+std::vector<std::uint8_t> ShadingRateImage::encode(RateApi api) const {
+  std::vector<std::uint8_t> out;
+  out.reserve(rates.size());
+  for (ShadingRate r : rates) out.push_back(encode_shading_rate(r, api));
+  return out;
+}
+
+ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity, Vec2d gaze,
+                              const std::array<int, 4>& rect, const ShadingRateOptions& options) {
+  const double x0 = rect[0], y0 = rect[1], x1 = rect[2], y1 = rect[3];
+  // Eccentricity of the tile's point nearest the gaze, less the latency margin.
+  const double e =
+      std::max(0.0, min_eccentricity(display, gaze, x0, y0, x1, y1) / options.fovea_scale -
+                        options.latency_margin_deg);
+  const double half_cycle = 0.5 * acuity.mar_deg(e) * kRad;
+  // The largest angle of one pixel step along x and along y over the tile.
+  const double f = display.eye_distance_px();
+  const double cx = 0.5 * display.width_px, cy = 0.5 * display.height_px;
+  const double ax = max_step_angle(x0 - cx, x1 - cx, y0 - cy, y1 - cy, f);
+  const double ay = max_step_angle(y0 - cy, y1 - cy, x0 - cx, x1 - cx, f);
+  const double kx = half_cycle / ax, ky = half_cycle / ay;  // largest allowed spacings
+
+  ShadingRate best{1, 1};
+  double best_headroom = std::min(kx, ky);
+  for (ShadingRate r : options.supported) {
+    if (r.width > kx || r.height > ky) continue;
+    const double headroom = std::min(kx / r.width, ky / r.height);
+    if (r.pixels() > best.pixels() || (r.pixels() == best.pixels() && headroom > best_headroom)) {
+      best = r;
+      best_headroom = headroom;
+    }
+  }
+  return best;
+}
+
+ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& acuity, Vec2d gaze,
+                                    const ShadingRateOptions& options) {
+  display.validate();
+  options.validate();
+  if (!std::isfinite(gaze.x) || !std::isfinite(gaze.y)) throw Error("gaze: must be finite");
+  if (!(acuity.slope > 0.0) || !std::isfinite(acuity.slope) || !(acuity.w0_deg > 0.0)) {
+    throw Error("acuity: slope and w0 must be positive");
+  }
+  ShadingRateImage img;
+  img.width_px = display.width_px;
+  img.height_px = display.height_px;
+  img.tile_px = options.tile_px;
+  img.origin_bottom_left = options.origin_bottom_left;
+  img.tiles_x = (display.width_px + options.tile_px - 1) / options.tile_px;
+  img.tiles_y = (display.height_px + options.tile_px - 1) / options.tile_px;
+  img.rates.resize(static_cast<size_t>(img.tiles_x) * img.tiles_y);
+  for (int ty = 0; ty < img.tiles_y; ++ty) {
+    for (int tx = 0; tx < img.tiles_x; ++tx) {
+      img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] =
+          tile_shading_rate(display, acuity, gaze, img.tile_rect(tx, ty), options);
+    }
+  }
+  return img;
+}
+
+}  // namespace foveate

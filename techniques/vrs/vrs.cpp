@@ -1,0 +1,206 @@
+// vrs: variable-rate shading with the rates the acuity model gives
+// (core/shading_rate.hpp: per 16-px tile the coarsest of 1x1 .. 4x4 whose
+// sample spacing keeps two samples per MAR cycle), as engines and headsets
+// foveate today. llvmpipe has no VRS, so this is the emulation: every rate
+// class present is shaded into a target of its own reduced resolution (W / rw
+// x H / rh), limited by a stencil mask to its tiles and the coarser tiles
+// next to them (llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
+// nothing), then the frame is put together in linear light: each pixel reads
+// its class bilinearly, and a tile next to a finer one fades into it over one
+// tile, so the 1x1 fovea is native and no tile edge shows. `fixed` takes the
+// rates from the screen centre instead of the gaze (headsets without eye
+// tracking).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "../common/kit.hpp"
+#include "../common/registry.hpp"
+#include "foveate/core/shading_rate.hpp"
+
+namespace foveate::tech {
+
+namespace {
+
+constexpr int kClasses = static_cast<int>(kShadingRates.size());
+
+int class_of(ShadingRate r) {
+  return static_cast<int>(std::find(kShadingRates.begin(), kShadingRates.end(), r) -
+                          kShadingRates.begin());
+}
+
+class Vrs final : public Technique {
+ public:
+  Vrs(const TechniqueConfig& c, const ParamValues& v)
+      : display_(c.display),
+        acuity_(c.acuity),
+        tile_(v.integer("tile")),
+        fixed_(v.boolean("fixed")) {
+    ShadingRateOptions o;
+    o.tile_px = tile_;
+    o.validate();
+  }
+
+  // The rates for this gaze (GL grid: rows from the bottom, as the shaders read them).
+  ShadingRateImage rates(const GazeState& g, int w, int h) const {
+    const Display d =
+        w == display_.width_px && h == display_.height_px ? display_ : display_.resized(w, h);
+    ShadingRateOptions o;
+    o.tile_px = tile_;
+    o.origin_bottom_left = true;
+    if (!fixed_) {
+      o.latency_margin_deg = latency_margin_deg(g);
+      o.fovea_scale = std::max(1.0, g.fovea_scale);
+    }
+    return shading_rate_image(d, acuity_, centre(g, w, h), o);
+  }
+
+  Vec2d centre(const GazeState& g, int w, int h) const {
+    return fixed_ ? Vec2d{0.5 * w, 0.5 * h} : g.gaze_px;
+  }
+
+  // Radius (pixels) of the disc around the centre that only 1x1 tiles cover.
+  static double native_radius(const ShadingRateImage& m, Vec2d c) {
+    double r = 1e9;
+    for (int ty = 0; ty < m.tiles_y; ++ty) {
+      for (int tx = 0; tx < m.tiles_x; ++tx) {
+        if (m.at(tx, ty) == ShadingRate{1, 1}) continue;
+        const auto t = m.tile_rect(tx, ty);
+        r = std::min(r, std::hypot(c.x - std::clamp(c.x, double(t[0]), double(t[2])),
+                                   c.y - std::clamp(c.y, double(t[1]), double(t[3]))));
+      }
+    }
+    return r;
+  }
+
+  FrameStats render(Scene& scene, const FrameInput&, const GazeState& gaze,
+                    const gpu::RenderTarget& target) override {
+    const int W = target.width(), H = target.height();
+    const ShadingRateImage m = rates(gaze, W, H);
+    std::vector<std::uint8_t> classes(m.rates.size());
+    std::array<bool, kClasses> present{};
+    for (size_t i = 0; i < m.rates.size(); ++i) {
+      const int k = class_of(m.rates[i]);
+      classes[i] = static_cast<std::uint8_t>(k);
+      present[static_cast<size_t>(k)] = true;
+    }
+    if (!classes_ || grid_w_ != m.tiles_x || grid_h_ != m.tiles_y) {
+      classes_ = gpu::Texture::create_2d(GL_R8UI, m.tiles_x, m.tiles_y);
+      classes_.set_filter(GL_NEAREST, GL_NEAREST);
+      grid_w_ = m.tiles_x;
+      grid_h_ = m.tiles_y;
+    }
+    classes_.upload(m.tiles_x, m.tiles_y, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
+
+    FrameStats s;
+    s.native_pixels = double(W) * H;
+    gpu::PassState mask;
+    mask.stencil_func = GL_ALWAYS;
+    mask.stencil_pass_op = GL_REPLACE;
+    mask.stencil_ref = 1;
+    mask.stencil_write = true;
+    mask.color_off = true;
+    gpu::PassState shade;
+    shade.stencil_func = GL_EQUAL;
+    shade.stencil_ref = 1;
+    int first = -1;
+    for (int k = 0; k < kClasses; ++k) {
+      if (!present[static_cast<size_t>(k)]) continue;
+      if (first < 0) first = k;
+      const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
+      const int tw = (W + r.width - 1) / r.width, th = (H + r.height - 1) / r.height;
+      gpu::RenderTarget& t = targets_[static_cast<size_t>(k)];
+      t.ensure(tw, th, GL_SRGB8_ALPHA8, true);
+      t.color().set_filter(GL_LINEAR, GL_LINEAR);
+      t.color().set_wrap(GL_CLAMP_TO_EDGE);
+      t.clear(0, 0, 0, 1);
+      kit_.pass(kit_.fullscreen("vrs/mask.frag"), t, mask,
+                [&](const gpu::Program& p, gpu::Samplers& smp) {
+                  smp.bind(p, "u_classes", classes_);
+                  p.set("u_class", k);
+                  p.set("u_rate", float(r.width), float(r.height));
+                  p.set("u_tile", tile_);
+                });
+      // The class's grid: texel i covers screen pixels [i rw, (i + 1) rw).
+      const View view{0,
+                      0,
+                      double(tw * r.width),
+                      double(th * r.height),
+                      tw,
+                      th,
+                      double(std::max(r.width, r.height))};
+      scene.prepass(view);
+      const double n = kit_.shade(
+          scene, view, kMapRect, t,
+          [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, shade, true);
+      s.parts.push_back({r.name(), n});
+      s.shaded_pixels += n;
+    }
+    kit_.pass(kit_.fullscreen("vrs/reconstruct.frag"), target, {},
+              [&](const gpu::Program& p, gpu::Samplers& smp) {
+                smp.bind(p, "u_classes", classes_);
+                for (int k = 0; k < kClasses; ++k) {
+                  const size_t i = static_cast<size_t>(k);
+                  const ShadingRate r = kShadingRates[i];
+                  const gpu::RenderTarget& t = targets_[present[i] ? i : size_t(first)];
+                  const std::string name = "u_class" + std::to_string(k);
+                  smp.bind(p, name.c_str(), t.color());
+                  const std::string e = "u_extent[" + std::to_string(k) + "]";
+                  p.set(e.c_str(), float(((W + r.width - 1) / r.width) * r.width),
+                        float(((H + r.height - 1) / r.height) * r.height));
+                }
+                p.set("u_tile", tile_);
+              });
+    return s;
+  }
+
+  std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
+    const ShadingRateImage m = rates(gaze, display_.width_px, display_.height_px);
+    const Vec2d c = centre(gaze, display_.width_px, display_.height_px);
+    std::vector<OverlayShape> shapes = {
+        {OverlayShape::Kind::Circle, c.x, c.y, native_radius(m, c), 0, 1, 0.1f, 0.1f}};
+    shapes.push_back(gaze_dot(gaze));
+    return shapes;
+  }
+
+ protected:
+  std::vector<std::pair<std::string, double>> derived() const override {
+    GazeState g;
+    g.gaze_px = {0.5 * display_.width_px, 0.5 * display_.height_px};
+    const ShadingRateImage m = rates(g, display_.width_px, display_.height_px);
+    return {{"native_radius_px", native_radius(m, g.gaze_px)},
+            {"pixel_ratio", m.pixel_ratio()},
+            {"fraction_4x4", m.fraction({4, 4})}};
+  }
+
+ private:
+  Display display_;
+  AcuityModel acuity_;
+  int tile_;
+  bool fixed_;
+  Kit kit_;
+  gpu::Texture classes_;
+  int grid_w_ = 0, grid_h_ = 0;
+  std::array<gpu::RenderTarget, kClasses> targets_;
+};
+
+}  // namespace
+
+TechniqueInfo vrs_info() {
+  TechniqueInfo t;
+  t.name = "vrs";
+  t.summary =
+      "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4), emulated: each "
+      "rate class shaded at its reduced resolution over its tiles, reconstructed in linear light.";
+  t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
+  t.params = {
+      param("tile", "shading-rate tile size (8, 16 or 32)", "px", ParamType::Integer, 8, 32, 16),
+      param("fixed", "rates from the screen centre, not the gaze (no eye tracking)", "",
+            ParamType::Boolean, 0, 1, 0),
+  };
+  t.make = construct<Vrs>();
+  return t;
+}
+
+}  // namespace foveate::tech
