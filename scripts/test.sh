@@ -28,4 +28,12 @@ ctest --preset debug -j "$jobs"
 
 # Every parser of user data under libFuzzer (ASan + UBSan) for a short while:
 # about 1 min of build and 10 s per target.
-bash scripts/fuzz.sh "${FOVEATE_FUZZ_SECONDS:-10}"
+# Every target but mesh_import_fuzz: that one fuzzes libassimp itself (not
+# instrumented, not ours to fix) and finds its crashes at random, which would
+# make CI fail by chance; run it by hand (tests/fuzz/README.md).
+ci_targets=()
+for d in tests/fuzz/corpus/*/; do
+  t=$(basename "$d")
+  [ "$t" = mesh_import_fuzz ] || ci_targets+=("$t")
+done
+bash scripts/fuzz.sh "${FOVEATE_FUZZ_SECONDS:-10}" "${ci_targets[@]}"

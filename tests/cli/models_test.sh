@@ -36,6 +36,10 @@ expect_error "a header declaring 2e9 vertices is refused by default" "2000000000
 expect_error "all-NaN OBJ" "all_nan.obj: the model has no finite vertices" render --scene "$corpus/all_nan.obj" --size 32x32 --out "$tmp/x"
 mkfifo "$tmp/pipe.obj"
 expect_error_t() { local name=$1 text=$2; shift 2; local err rc; err=$(timeout 10 "$FOVEATE" "$@" 2>&1); rc=$?; if [[ $rc -eq 1 && "$err" == *"$text"* ]]; then echo "ok: $name"; else echo "FAIL: $name (exit $rc): $err"; fail=1; fi; }
+# mesh_import_fuzz crashed libassimp with this damaged OBJ (NUL bytes in its
+# statements) when imported from memory with every post-process step at once;
+# foveate reads the file first and post-processes after, and refuses it.
+expect_error_t "the damaged OBJ that crashed assimp in the fuzzer is a clear error" "assimp_fuzz_crash.obj: cannot read the model: OBJ" render --scene "$models/assimp_fuzz_crash.obj" --size 32x32 --out "$tmp/x"
 expect_error_t "a FIFO as the model is refused without opening it (no hang)" "pipe.obj: is a named pipe (FIFO), not a model file" render --scene "$tmp/pipe.obj" --size 32x32 --out "$tmp/x"
 mkdir "$tmp/dir.obj"
 expect_error "a directory as the model" "dir.obj: is a directory, not a model file" render --scene "$tmp/dir.obj" --size 32x32 --out "$tmp/x"
