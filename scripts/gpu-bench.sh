@@ -36,7 +36,7 @@ bin=${FOVEATE_BIN:-build/release/app/foveate}
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-all=native,layered,logpolar,checkerboard,inset
+all=native,layered,logpolar,checkerboard,inset,vrs
 
 # The renderer string names the file.
 "$bin" bench --scene cheap --size 64x36 --frames 1 --techniques native --no-metrics --quiet \
