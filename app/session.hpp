@@ -45,6 +45,9 @@ struct SessionOptions {
   bool mouse_down = false;
   /// Open a window (GLFW) instead of a headless context; the output is shown in it.
   bool window = false;
+  /// The window's size when larger than `size` (room for a UI beside the
+  /// output); 0 = `size`.
+  Size window_size{0, 0};
 };
 
 /// The options every rendering command has, as typed on the command line.
@@ -110,6 +113,10 @@ class Session {
   [[nodiscard]] gpu::Window* window() const { return window_; }
   /// Copies the output to the window and swaps.
   void present();
+  /// Switches to another display (preset or JSON file, resized to the
+  /// output's size); the gaze tracker restarts with it. Techniques made
+  /// before keep the old display: make them again.
+  void set_display(const std::string& display);
 
  private:
   SessionOptions options_;
@@ -119,6 +126,9 @@ class Session {
   Display display_;
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<gaze::GazeTracker> gaze_;
+  std::string gaze_spec_;
+  std::function<std::optional<Vec2d>()> mouse_;
+  void make_tracker();
 };
 
 }  // namespace foveate::app
