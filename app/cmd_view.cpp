@@ -60,7 +60,10 @@ void run_view(const ViewArgs& a) {
   o.window_size = {o.size.width + kPanelWidth, std::max(o.size.height, 560)};
   with_flag("--technique", [&] { return technique_info(a.technique); });
   const ParamArgs params = parse_params(a.session.params);
-  validate_params(params, {a.technique});
+  // Any technique can be switched to: a KEY=VALUE must belong to one of them.
+  std::vector<std::string> all;
+  for (const TechniqueInfo& t : techniques()) all.push_back(t.name);
+  validate_params(params, all);
   // The mouse is the gaze unless --gaze says otherwise (normalized, top-left),
   // while it is over the image and not over the panel or the divider.
   std::optional<Vec2d> mouse;

@@ -37,17 +37,21 @@ Viewer::Viewer(Session& session, const std::string& technique, const ParamArgs& 
   // run it (lodmask without meshes), its --param values checked.
   with_flag("--technique", [&] { return technique_info(technique); });
   params_[technique] = params_for(params, technique);
-  technique_ = build(technique);
+  technique_ = with_flag("--param", [&] { return build(technique); });
   native_ = build("native");
 }
 
 Viewer::~Viewer() = default;
 
 std::unique_ptr<Technique> Viewer::build(const std::string& name) const {
-  ParamArgs p;
+  const TechniqueInfo& info = technique_info(name);
+  check_scene(info, session_.scene().info());
+  TechniqueConfig c;
+  c.display = session_.display();
+  c.acuity = acuity_;
   auto it = params_.find(name);
-  if (it != params_.end()) p.per_technique[name] = it->second;
-  return session_.make(name, p, acuity_);
+  if (it != params_.end()) c.params = it->second;
+  return make_technique(name, c);
 }
 
 void Viewer::rebuild() {
@@ -60,8 +64,7 @@ const std::map<std::string, double>& Viewer::overrides() const { return params_.
 void Viewer::set_technique(const std::string& name) {
   if (name == name_) return;
   const TechniqueInfo& info = technique_info(name);  // names the unknown one
-  const std::string why = scene_mismatch(info, session_.scene().info());
-  if (!why.empty()) throw Error("technique " + name + ": " + why);
+  check_scene(info, session_.scene().info());
   auto t = build(name);
   technique_ = std::move(t);
   name_ = name;
@@ -90,10 +93,10 @@ void Viewer::set_param(const std::string& technique, const std::string& key, dou
       const ParamValues v = resolve_parameters(info, c);
       if (info.check) info.check(v);
     }
-  } catch (const Error& e) {
+  } catch (const Error&) {
     mine = before;
     if (tech == name_) rebuild();
-    throw Error("param " + tech + "." + key + ": " + e.what());
+    throw;
   }
 }
 
