@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/gaze/gaze.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "session.hpp"
 #include "viewer/viewer.hpp"
@@ -151,8 +152,10 @@ void register_view(CLI::App& app) {
               "or split screen (native left, foveated right, drag the divider); frame time, "
               "native sampled once a second on the same frame and the speedup; the share of "
               "pixels shaded; what each overlay colour marks; the gaze source and filter.\n\n" +
-              viewer::Script::help());
+              viewer::Script::help() + "\n");
   add_session_options(sub, a->session);
+  sub->get_option("--gaze")->description(
+      std::string("Gaze source; default the mouse over the image. ") + gaze::gaze_spec_help());
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();
   sub->add_flag("--overlay,!--no-overlay", a->overlay,
                 "Layer/region borders: drawn by default, --no-overlay hides them (toggle with O)");

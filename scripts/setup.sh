@@ -10,7 +10,7 @@ packages=(
   libassimp-dev libmeshoptimizer-dev
   libzmq3-dev cppzmq-dev libmsgpack-cxx-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth chromium
+  xvfb xauth xdotool chromium
 )
 
 sudo_cmd=()

@@ -137,6 +137,28 @@ other = [px(200, y) for y in range(20, 70)]
 assert sum(1 for p in other if min(p) >= 190) / len(other) < 0.5, "x=200 is white too"
 PY
 
+# Real input through X (xdotool): keys switch technique (3 = logpolar), split
+# (S) and the overlay (O); the mouse over the image is the gaze.
+if command -v xdotool >/dev/null; then
+  cat > "$tmp/keys.sh" <<'SH'
+"$FOVEATE" view --scene cheap --size 320x180 --commands "frames 1; wait 4; print-state; quit" > "$1" 2>/dev/null &
+pid=$!
+wid=$(xdotool search --sync --name foveate | head -1)
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+xdotool mousemove --window "$wid" 80 45
+sleep 0.5
+xdotool key --delay 100 3 s o
+wait $pid
+SH
+  FOVEATE="$FOVEATE" xvfb bash "$tmp/keys.sh" "$tmp/keys.jsonl"
+  check "keys and mouse: technique 3, split, overlay off, gaze at the mouse" python3 -c "
+import json; s = json.loads(open('$tmp/keys.jsonl').read())
+assert (s['technique'], s['split'], s['overlay']) == ('logpolar', True, False), s
+g = s['gaze']; assert g['source'].startswith('mouse') and abs(g['x_px'] - 80) <= 3 and abs(g['y_px'] - 45) <= 3, g"
+else
+  echo "FAIL: xdotool is missing (scripts/setup.sh installs it)"; fail=1
+fi
+
 # Refusals: a technique the scene cannot run; a bad command; a bad value.
 err=$(xvfb "$FOVEATE" view --scene cheap --size 160x90 --technique lodmask --frames 1 2>&1); rc=$?
 if [[ $rc -eq 1 && "$err" == *lodmask*meshes* ]]; then echo "ok: lodmask on a scene without meshes is refused"; else echo "FAIL: lodmask (exit $rc): $err"; fail=1; fi
