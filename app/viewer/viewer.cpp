@@ -137,6 +137,7 @@ void Viewer::set_display(const std::string& spec) {
   try {
     rebuild();
     native_ = build("native");
+    native_renders_ = 0;
   } catch (const Error&) {
     session_.set_display(before);
     rebuild();
@@ -188,20 +189,23 @@ double Viewer::timed_render(Technique& t, const FrameInput& input, const GazeSta
 
 void Viewer::blit_columns(int x0, int x1) {
   if (x1 <= x0) return;
-  const int W = width(), H = height();
+  const int H = height();
   const int fb_h = session_.window() ? session_.window()->framebuffer_height() : H;
   // The output holds sRGB-encoded bytes: copied as they are.
   glDisable(GL_FRAMEBUFFER_SRGB);
   glBlitNamedFramebuffer(session_.renderer().output().framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H,
                          x1, fb_h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  (void)W;
 }
 
 void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double wall_s) {
   gaze_ = gaze;
-  const bool native_due = !split_ && name_ != "native" && frame_ >= 1 &&
-                          (next_native_s_ < 0 || wall_s >= next_native_s_);
+  const bool native_due =
+      !split_ && name_ != "native" && (next_native_s_ < 0 || wall_s >= next_native_s_);
   auto record_native = [&](double ms) {
+    if (native_renders_++ == 0) {  // compiled its shaders: not a measurement
+      next_native_s_ = -1.0;
+      return;
+    }
     stats_.native_ms =
         ema(stats_.native_ms.value_or(ms), ms, kNativeWeight, stats_.native_samples == 0);
     ++stats_.native_samples;
@@ -217,20 +221,20 @@ void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double
   glClear(GL_COLOR_BUFFER_BIT);
   if (native_due) {
     // Native on the same frame, timed alike; its image is not shown.
-    record_native(timed_render(*native_, input, gaze, false, nullptr));
     next_native_s_ = wall_s + kNativePeriodS;
+    record_native(timed_render(*native_, input, gaze, false, nullptr));
   }
   const int W = width();
   const int split_px = std::clamp(static_cast<int>(std::lround(divider_ * W)), 0, W);
   if (split_) {
     // Left: native; right: the technique.
     const double nms = timed_render(*native_, input, gaze, false, nullptr);
-    if (frame_ >= 1) record_native(nms);
+    record_native(nms);
     blit_columns(0, split_px);
   }
   if (show_native_ && !split_) {
     const double nms = timed_render(*native_, input, gaze, false, nullptr);
-    if (frame_ >= 1) record_native(nms);
+    record_native(nms);
     blit_columns(0, W);
   } else {
     FrameStats s;

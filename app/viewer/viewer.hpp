@@ -103,6 +103,7 @@ class Viewer {
   ViewerStats stats_;
   GazeState gaze_;
   int frames_since_build_ = 0;
+  int native_renders_ = 0;  ///< since native_ was built (the first is not timed)
   int frame_ = 0;
   double next_native_s_ = -1.0;
   gpu::FrameTimer timer_;

@@ -221,10 +221,17 @@ void Ui::draw(Viewer& v) {
     if (ImGui::RadioButton("quality A", v.quality() == "A")) act([&] { v.set_quality("A"); });
     ImGui::SameLine();
     if (ImGui::RadioButton("quality B", v.quality() == "B")) act([&] { v.set_quality("B"); });
-    double m = v.slope();
+    auto it = pending_.find("slope");
+    double m = it != pending_.end() ? it->second : v.slope();
     const double lo = 0.005, hi = 0.08;
-    ImGui::SliderScalar("MAR slope m", ImGuiDataType_Double, &m, &lo, &hi, "%.4f deg/deg");
-    if (ImGui::IsItemDeactivatedAfterEdit()) act([&] { v.set_slope(m); });
+    if (ImGui::SliderScalar("MAR slope m", ImGuiDataType_Double, &m, &lo, &hi, "%.4f deg/deg"))
+      pending_["slope"] = m;
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+      pending_.erase("slope");
+      act([&] { v.set_slope(m); });
+    } else if (!ImGui::IsItemActive()) {
+      pending_.erase("slope");
+    }
     if (ImGui::BeginCombo("display", v.display_spec().c_str())) {
       for (const Display& d : Display::presets()) {
         if (ImGui::Selectable(d.name.c_str(), d.name == v.display_spec())) {
