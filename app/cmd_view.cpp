@@ -1,6 +1,7 @@
-// foveate view: an interactive window. The gaze follows the mouse (Silvera's
-// stand-in for an eye tracker) unless --gaze says otherwise; number keys switch
-// techniques, O toggles the overlay, Escape quits.
+// foveate view: a live window with a panel (app/viewer/): the gaze follows the
+// mouse unless --gaze says otherwise; technique, parameters, acuity model,
+// display, A/B and split screen against native, measured frame time and
+// speedup. --commands / --script drive the same actions from a script.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -13,8 +14,13 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/file.hpp"
+#include "foveate/gaze/gaze.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "session.hpp"
+#include "viewer/viewer.hpp"
+#include "viewer/viewer_script.hpp"
+#include "viewer/viewer_ui.hpp"
 
 namespace foveate::app {
 
@@ -26,88 +32,110 @@ struct ViewArgs {
   bool overlay = true;
   int frames = 0;
   std::string screenshot;
+  std::string commands;
+  std::string script;
 };
 
+const char* kKeys =
+    "1-9 technique, Space A/B (native), S split screen, O overlay, R reset parameters, "
+    "Esc or Q quit";
+
+/// The window's framebuffer as an opaque image.
+Image grab_window(gpu::Window& w) {
+  Image img = gpu::read_framebuffer(0, w.framebuffer_width(), w.framebuffer_height());
+  for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+  return img;
+}
+
 void run_view(const ViewArgs& a) {
+  using namespace viewer;
   if (a.frames < 0) throw Error("--frames: must be >= 0 (0 = until the window closes)");
+  if (!a.commands.empty() && !a.script.empty())
+    throw Error("--commands and --script: give one of them");
+  std::optional<Script> script;
+  if (!a.commands.empty()) script.emplace(a.commands, "--commands");
+  if (!a.script.empty()) script.emplace(read_file(a.script), "--script " + a.script);
   SessionOptions o = to_session_options(a.session, "now");
   o.window = true;
+  o.window_size = {o.size.width + kPanelWidth, std::max(o.size.height, 560)};
   with_flag("--technique", [&] { return technique_info(a.technique); });
   const ParamArgs params = parse_params(a.session.params);
-  validate_params(params, {a.technique});
-  // The mouse is the gaze unless --gaze says otherwise (normalized, top-left).
-  gpu::Window::Input last_input;
-  gpu::Window* window = nullptr;
+  // Any technique can be switched to: a KEY=VALUE must belong to one of them.
+  std::vector<std::string> all;
+  for (const TechniqueInfo& t : techniques()) all.push_back(t.name);
+  validate_params(params, all);
+  // The mouse is the gaze unless --gaze says otherwise (normalized, top-left),
+  // while it is over the image and not over the panel or the divider.
+  std::optional<Vec2d> mouse;
   Session session(o, a.session.gaze.empty() ? "mouse" : a.session.gaze,
-                  [&]() -> std::optional<Vec2d> {
-                    if (!last_input.mouse_inside || !window) return std::nullopt;
-                    return Vec2d{last_input.mouse_x / window->framebuffer_width(),
-                                 last_input.mouse_y / window->framebuffer_height()};
-                  });
-  window = session.window();
-  Renderer& renderer = session.renderer();
-  renderer.set_overlay(a.overlay);
-  // The techniques this scene can run; the one asked for is refused with
-  // render's message when it cannot.
-  auto technique = session.make(a.technique, params);
-  std::vector<std::string> names;
-  for (const TechniqueInfo& t : techniques()) {
-    if (scene_mismatch(t, session.scene().info()).empty()) names.push_back(t.name);
-  }
-  size_t current = 0;
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (names[i] == a.technique) current = i;
-  }
-  gpu::FrameTimer timer;
+                  [&]() -> std::optional<Vec2d> { return mouse; });
+  gpu::Window& window = *session.window();
+  Viewer view(session, a.technique, params, a.session.quality, a.session.slope);
+  view.set_overlay(a.overlay);
+  Ui ui(window);
+  std::fprintf(stderr, "foveate view: keys %s; techniques:", kKeys);
+  for (size_t i = 0; i < view.available().size(); ++i)
+    std::fprintf(stderr, " %zu %s", i + 1, view.available()[i].c_str());
+  std::fprintf(stderr, "\n");
+
   const auto start = std::chrono::steady_clock::now();
-  double shown_ms = 0;
-  std::fprintf(stderr, "foveate view: keys 1-%zu switch technique (%s), O overlay, Esc quit\n",
-               names.size(),
-               [&] {
-                 std::string s;
-                 for (size_t i = 0; i < names.size(); ++i)
-                   s += (i ? ", " : "") + std::to_string(i + 1) + " " + names[i];
-                 return s;
-               }()
-                   .c_str());
+  Image last;
   for (int frame = 0; a.frames == 0 || frame < a.frames; ++frame) {
-    const gpu::Window::Input in = window->poll();
-    last_input = in;
+    const gpu::Window::Input in = window.poll();
     if (in.should_close) break;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    FrameActions actions;
+    if (script) script->begin_frame(view, frame, wall, actions);
+    if (actions.quit) break;
     bool quit = false;
-    for (int key : in.keys_pressed) {
-      if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) quit = true;
-      if (key == GLFW_KEY_O) renderer.set_overlay(!renderer.options().overlay);
-      if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + static_cast<int>(names.size())) {
-        current = static_cast<size_t>(key - GLFW_KEY_1);
-        technique = session.make(names[current], params);  // --param persists
+    if (!ui.wants_keyboard()) {
+      for (int key : in.keys_pressed) {
+        if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) quit = true;
+        if (key == GLFW_KEY_O) view.set_overlay(!view.overlay());
+        if (key == GLFW_KEY_SPACE) view.set_show_native(!view.show_native());
+        if (key == GLFW_KEY_S) view.set_split(!view.split());
+        if (key == GLFW_KEY_R) view.reset_params();
+        const int n = static_cast<int>(view.available().size());
+        if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + std::min(n, 9)) {
+          try {
+            view.set_technique(view.available()[static_cast<size_t>(key - GLFW_KEY_1)]);
+          } catch (const Error& e) {
+            std::fprintf(stderr, "foveate view: %s\n", e.what());
+          }
+        }
       }
     }
     if (quit) break;
-    const double t =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const GazeState gaze = session.gaze().at(t);
-    FrameInput input = renderer.frame_input(frame);
-    input.time_s = o.start_time + t;  // the viewer runs on the wall clock
-    FrameStats s;
-    const double ms =
-        session.watchdog().run("frame " + std::to_string(frame) + " (" + names[current] + ")", [&] {
-          timer.start();
-          s = renderer.render(*technique, input, gaze);
-          return timer.stop();
-        });
-    shown_ms = shown_ms == 0 ? ms : 0.9 * shown_ms + 0.1 * ms;
-    session.present();
+    const bool over_image = in.mouse_inside && in.mouse_x >= 0 && in.mouse_y >= 0 &&
+                            in.mouse_x < view.width() && in.mouse_y < view.height();
+    if (over_image && !ui.wants_mouse() && !ui.dragging_divider()) {
+      mouse = Vec2d{in.mouse_x / view.width(), in.mouse_y / view.height()};
+    } else {
+      mouse.reset();
+    }
+    const GazeState gaze = session.gaze().at(wall);
+    FrameInput input = session.renderer().frame_input(frame);
+    input.time_s = o.start_time + wall;  // the viewer runs on the wall clock
+    session.watchdog().run("frame " + std::to_string(frame) + " (" + view.technique().name() + ")",
+                           [&] { view.render_frame(input, gaze, wall); });
+    ui.draw(view);
+    // Before the swap: the back buffer holds what is about to be shown.
+    for (const std::string& path : actions.screenshots) {
+      write_png(path, grab_window(window));
+      std::fprintf(stderr, "foveate view: wrote %s\n", path.c_str());
+    }
+    if (!a.screenshot.empty()) last = grab_window(window);
+    for (int i = 0; i < actions.print_state; ++i) std::cout << view.state().dump() << std::endl;
+    window.swap_buffers();
     char title[256];
-    std::snprintf(title, sizeof title, "foveate: %s on %s, %.1f ms, %.0f %% of native pixels",
-                  names[current].c_str(), session.scene().info().name.c_str(), shown_ms,
-                  100.0 * s.shaded_pixels / s.native_pixels);
-    window->set_title(title);
+    std::snprintf(title, sizeof title, "foveate: %s on %s, %.1f ms", view.technique_name().c_str(),
+                  session.scene().info().name.c_str(), view.stats().frame_ms);
+    window.set_title(title);
   }
-  if (!a.screenshot.empty()) {
-    write_png(a.screenshot,
-              gpu::read_framebuffer(0, window->framebuffer_width(), window->framebuffer_height()));
-    std::cout << "wrote " << a.screenshot << "\n";
+  if (!a.screenshot.empty() && last.width > 0) {
+    write_png(a.screenshot, last);
+    std::fprintf(stderr, "foveate view: wrote %s\n", a.screenshot.c_str());
   }
 }
 
@@ -115,16 +143,30 @@ void run_view(const ViewArgs& a) {
 
 void register_view(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
-  CLI::App* sub = app.add_subcommand("view", "Interactive window: the gaze follows the mouse");
+  CLI::App* sub = app.add_subcommand(
+      "view", "Live window with a control panel: the gaze follows the mouse over the image");
+  sub->footer(std::string("Keys: ") + kKeys +
+              ".\nThe panel beside the image: technique; a slider per parameter with its range "
+              "and unit (hover for its meaning; Ctrl+click to type; * = set by you or --param, "
+              "kept across technique switches); quality A/B and MAR slope; display; show native "
+              "or split screen (native left, foveated right, drag the divider); frame time, "
+              "native sampled once a second on the same frame and the speedup; the share of "
+              "pixels shaded; what each overlay colour marks; the gaze source and filter.\n\n" +
+              viewer::Script::help() + "\n");
   add_session_options(sub, a->session, false, "now");
+  sub->get_option("--gaze")->description(
+      std::string("Gaze source; default the mouse over the image. ") + gaze::gaze_spec_help());
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();
-  sub->add_flag(
-      "--overlay,!--no-overlay", a->overlay,
-      "Draw layer/region borders: on by default, --no-overlay starts without them (toggle "
-      "with O)");
+  sub->add_flag("--overlay,!--no-overlay", a->overlay,
+                "Layer/region borders: drawn by default, --no-overlay hides them (toggle with O)");
   sub->add_option("--frames", a->frames, "Quit after N frames (0 = run until closed)")
       ->capture_default_str();
-  sub->add_option("--screenshot", a->screenshot, "Save the window's last frame as PNG on exit");
+  sub->add_option("--screenshot", a->screenshot,
+                  "Save the window's last frame (image and panel) as PNG on exit");
+  sub->add_option("--commands", a->commands,
+                  "Script to run, commands separated by ';' (see below), e.g. \"param "
+                  "layers=2; technique logpolar; frames 3; screenshot s.png; print-state; quit\"");
+  sub->add_option("--script", a->script, "Script file (one command per line)");
   sub->callback([a] { run_view(*a); });
 }
 

@@ -1,5 +1,6 @@
 #include "session.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -165,12 +166,13 @@ SessionOptions to_session_options(const SessionArgs& a, const char* default_date
 
 Session::Session(const SessionOptions& o, const std::string& gaze_spec,
                  std::function<std::optional<Vec2d>()> mouse)
-    : options_(o) {
+    : options_(o), gaze_spec_(gaze_spec), mouse_(std::move(mouse)) {
   display_ = with_flag("--display", [&] {
                return Display::load(o.display);
              }).resized(o.size.width, o.size.height);
   if (o.window) {
-    auto w = gpu::create_window(o.size.width, o.size.height, "foveate");
+    auto w = gpu::create_window(std::max(o.size.width, o.window_size.width),
+                                std::max(o.size.height, o.window_size.height), "foveate");
     window_ = w.get();
     context_ = std::move(w);
   } else {
@@ -192,21 +194,7 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   ro.mouse_down = o.mouse_down;
   renderer_ = with_flag("--size", [&] { return std::make_unique<Renderer>(*scene_, ro); });
   watchdog_ = std::make_unique<FrameWatchdog>(o.frame_timeout_s, scene_->info().name);
-  gaze::GazeContext ctx;
-  ctx.display = display_;
-  ctx.strict_traces = o.strict_traces;
-  ctx.warn = [](const std::string& w) {
-    std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
-  };
-  ctx.mouse = std::move(mouse);
-  Scene* scene = scene_.get();
-  const double w = o.size.width, h = o.size.height;
-  ctx.objects = [scene, w, h](double) {
-    std::vector<Vec2d> out;
-    for (const Vec2d& p : scene->object_positions()) out.push_back({p.x / w, p.y / h});
-    return out;
-  };
-  gaze_ = with_flag("--gaze", [&] { return std::make_unique<gaze::GazeTracker>(gaze_spec, ctx); });
+  make_tracker();
   if (verbose()) {
     const Vec2d c{0.5 * o.size.width, 0.5 * o.size.height};
     std::fprintf(stderr,
@@ -217,6 +205,33 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
                  gaze_->describe().c_str());
   }
   note_savings(display_, o.acuity);
+}
+
+void Session::make_tracker() {
+  gaze::GazeContext ctx;
+  ctx.display = display_;
+  ctx.strict_traces = options_.strict_traces;
+  ctx.warn = [](const std::string& w) {
+    std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
+  };
+  ctx.mouse = mouse_;
+  Scene* scene = scene_.get();
+  const double w = options_.size.width, h = options_.size.height;
+  ctx.objects = [scene, w, h](double) {
+    std::vector<Vec2d> out;
+    for (const Vec2d& p : scene->object_positions()) out.push_back({p.x / w, p.y / h});
+    return out;
+  };
+  gaze_ = with_flag("--gaze", [&] { return std::make_unique<gaze::GazeTracker>(gaze_spec_, ctx); });
+}
+
+void Session::set_display(const std::string& display) {
+  Display d = with_flag("--display", [&] {
+                return Display::load(display);
+              }).resized(options_.size.width, options_.size.height);
+  display_ = d;
+  options_.display = display;
+  make_tracker();
 }
 
 Session::~Session() = default;

@@ -57,6 +57,9 @@ struct SessionOptions {
   bool strict_traces = false;
   /// A frame running longer than this stops the run (--frame-timeout; 0 = off).
   double frame_timeout_s = kDefaultFrameTimeoutS;
+  /// The window's size when larger than `size` (room for a UI beside the
+  /// output); 0 = `size`.
+  Size window_size{0, 0};
 };
 
 /// The options every rendering command has, as typed on the command line.
@@ -132,6 +135,10 @@ class Session {
   [[nodiscard]] gpu::Window* window() const { return window_; }
   /// Copies the output to the window and swaps.
   void present();
+  /// Switches to another display (preset or JSON file, resized to the
+  /// output's size); the gaze tracker restarts with it. Techniques made
+  /// before keep the old display: make them again.
+  void set_display(const std::string& display);
 
  private:
   SessionOptions options_;
@@ -142,6 +149,9 @@ class Session {
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<gaze::GazeTracker> gaze_;
   std::unique_ptr<FrameWatchdog> watchdog_;
+  std::string gaze_spec_;
+  std::function<std::optional<Vec2d>()> mouse_;
+  void make_tracker();
 };
 
 }  // namespace foveate::app

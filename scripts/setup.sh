@@ -6,11 +6,11 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format clang-15 libfuzzer-15-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libepoxy-dev
-  libglfw3-dev libglm-dev libcli11-dev nlohmann-json3-dev libstb-dev libpng-dev
+  libglfw3-dev libimgui-dev libglm-dev libcli11-dev nlohmann-json3-dev libstb-dev libpng-dev
   libassimp-dev libmeshoptimizer-dev
   libzmq3-dev cppzmq-dev libmsgpack-cxx-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth chromium
+  xvfb xauth xdotool chromium
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev ffmpeg
   python3-dev pybind11-dev python3-numpy python3-pytest
 )

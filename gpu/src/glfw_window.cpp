@@ -54,6 +54,7 @@ class GlfwWindow final : public Window {
     glfwGetFramebufferSize(window_, &w, &h);
     return h;
   }
+  void* native_handle() const override { return window_; }
   void init(const ContextOptions& o) { install_debug_callback(o); }
 
  private:

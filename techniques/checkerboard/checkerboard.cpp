@@ -196,11 +196,14 @@ class Checkerboard final : public Technique {
     // The native fovea, then where regions 1-3 begin.
     const Borders b = borders(gaze);
     const double radii[4] = {b.fovea, b.pattern[0], b.pattern[1], b.pattern[2]};
+    static const char* const kLabels[4] = {
+        "native fovea: every pixel shaded inside", "region 1 begins: drops 1 of every 4 quads",
+        "region 2 begins: drops 2 of every 4 quads", "region 3 begins: drops 3 of every 4 quads"};
     std::vector<OverlayShape> out;
     for (int k = 0; k < 4; ++k) {
       const auto* c = kRingColours[k];
       out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, radii[k], 0, c[0],
-                     c[1], c[2]});
+                     c[1], c[2], kLabels[k]});
     }
     out.push_back(gaze_dot(gaze));
     return out;

@@ -140,7 +140,7 @@ double latency_margin_deg(const GazeState& g) {
 }
 
 OverlayShape gaze_dot(const GazeState& g) {
-  return {OverlayShape::Kind::Dot, g.gaze_px.x, g.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f};
+  return {OverlayShape::Kind::Dot, g.gaze_px.x, g.gaze_px.y, 4, 4, 1.0f, 0.3f, 0.8f, "gaze"};
 }
 
 }  // namespace foveate::tech

@@ -102,9 +102,10 @@ class Inset final : public Technique {
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     const LatencyAwareFovea f = fovea(gaze);
     const double half = 0.5 * f.diameter_px(display_);
-    return {{OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half, 0, 1, 0.1f, 0.1f},
+    return {{OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half, 0, 1, 0.1f, 0.1f,
+             "full-resolution inset: edge (quarter-resolution periphery outside)"},
             {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half - f.blend_border_px,
-             0, 0.1f, 0.9f, 0.2f},
+             0, 0.1f, 0.9f, 0.2f, "inset blends into the periphery from this ring (vignette)"},
             gaze_dot(gaze)};
   }
 

@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <string>
 
 #include "../common/kit.hpp"
 #include "../common/regions.hpp"
@@ -199,19 +201,35 @@ class Layered final : public Technique {
   // reproject, then shown stale and warped: both phases, twice.
   [[nodiscard]] int settle_frames() const override { return half_rate_ ? 6 : 3; }
 
+  std::string layer_label(size_t i) const {
+    char s[96];
+    const Layer& l = plan_.layers[i];
+    if (l.sampling_factor <= 1.0) {
+      std::snprintf(s, sizeof s, "layer %zu (native, to %.1f deg)", i + 1, l.radius_deg);
+    } else {
+      std::snprintf(s, sizeof s, "layer %zu (%.2fx coarser pixels, to %.1f deg)", i + 1,
+                    l.sampling_factor, l.radius_deg);
+    }
+    return s;
+  }
+
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     std::vector<OverlayShape> out;
     for (size_t i = 0; i + 1 < plan_.layers.size(); ++i) {
       const InnerSize sz = inner_size(i, gaze);
       const auto* c = kRingColours[i];
+      const std::string layer = layer_label(i);
       out.push_back({OverlayShape::Kind::Rect, gaze.gaze_px.x - sz.half, gaze.gaze_px.y - sz.half,
-                     2 * sz.half, 2 * sz.half, c[0], c[1], c[2]});
+                     2 * sz.half, 2 * sz.half, c[0], c[1], c[2], layer + ": its render target"});
       out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, sz.blend_from, 0,
-                     c[0], c[1], c[2]});
+                     c[0], c[1], c[2], layer + ": blends into the next layer from this ring"});
     }
-    const auto* c = kRingColours[plan_.layers.size() - 1];
-    out.push_back({OverlayShape::Kind::Rect, 1, 1, display_.width_px - 2.0,
-                   display_.height_px - 2.0, c[0], c[1], c[2]});
+    const size_t last = plan_.layers.size() - 1;
+    const auto* c = kRingColours[last];
+    out.push_back(
+        {OverlayShape::Kind::Rect, 1, 1, display_.width_px - 2.0, display_.height_px - 2.0, c[0],
+         c[1], c[2],
+         layer_label(last) + ": the whole frame" + (half_rate_ && last > 0 ? ", half rate" : "")});
     out.push_back(gaze_dot(gaze));
     return out;
   }

@@ -114,8 +114,10 @@ class LodMask final : public Technique {
     const Vec2d c = centre(gaze);
     const auto* a = kRingColours[0];
     const auto* b = kRingColours[1];
-    return {{OverlayShape::Kind::Circle, c.x, c.y, r_in, 0, a[0], a[1], a[2]},
-            {OverlayShape::Kind::Circle, c.x, c.y, r_out, 0, b[0], b[1], b[2]},
+    return {{OverlayShape::Kind::Circle, c.x, c.y, r_in, 0, a[0], a[1], a[2],
+             "full-detail LOD inside (LOD 0)"},
+            {OverlayShape::Kind::Circle, c.x, c.y, r_out, 0, b[0], b[1], b[2],
+             "mid-detail LOD inside (LOD 1); coarse LOD beyond"},
             gaze_dot(gaze)};
   }
 

@@ -308,14 +308,16 @@ class LogPolar final : public Technique {
     std::vector<OverlayShape> out;
     const auto* c0 = kRingColours[0];
     out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, native_px(gaze), 0,
-                   c0[0], c0[1], c0[2]});
+                   c0[0], c0[1], c0[2], "native disc: native pixels inside"});
     const double L = model_.log_extent();
     int k = 1;
     for (double r = 2.0; r < 4000 && k < 4; r *= 1.01) {
       if (buffer_gap(r, L, alpha_, model_.buffer_w(), model_.buffer_h()) >= std::pow(2.0, k)) {
         const auto* c = kRingColours[k];
-        out.push_back(
-            {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r, 0, c[0], c[1], c[2]});
+        out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r, 0, c[0], c[1],
+                       c[2],
+                       "log-polar buffer samples " + std::to_string(1 << k) +
+                           " screen pixels apart from here"});
         ++k;
       }
     }

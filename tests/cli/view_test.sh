@@ -1,16 +1,181 @@
 #!/usr/bin/env bash
-# `foveate view` in a real window under Xvfb: it opens, renders with the mouse
-# as gaze, and saves what the window showed.
+# `foveate view` in a real window under Xvfb: the panel (Dear ImGui) beside the
+# image, driven by a script through the same actions as the panel; the state
+# it prints and the screenshots it takes are checked.
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 if ! command -v xvfb-run >/dev/null; then echo "FAIL: xvfb-run is missing (scripts/setup.sh installs xvfb)"; exit 1; fi
 fail=0
-xvfb-run -a -s "-screen 0 1024x768x24" "$FOVEATE" view --scene cheap --size 160x90 --technique checkerboard \
-  --frames 3 --screenshot "$tmp/shot.png" > "$tmp/out.txt" 2>&1
+xvfb() { xvfb-run -a -s "-screen 0 1280x800x24" "$@"; }
+check() {  # check NAME COMMAND...
+  local name=$1; shift
+  if out=$("$@" 2>&1); then echo "ok: $name"; else echo "FAIL: $name: $out"; fail=1; fi
+}
+
+# One short session: --param values from the command line, a parameter set by
+# the script, technique switches away and back, split screen, A/B.
+xvfb "$FOVEATE" view --scene cheap --size 320x180 --gaze 0.5,0.5 --technique layered \
+  --param layered.transition=0.3 --param logpolar.blur=0.5 --commands "
+    frames 2
+    param layers=2            # the current technique's (layered)
+    technique logpolar
+    print-state
+    param sigma=1.5
+    technique layered
+    measure
+    frames 3
+    print-state
+    screenshot $tmp/shot.png
+    technique logpolar; print-state
+    technique layered
+    split on; divider 0.25; frames 2
+    screenshot $tmp/split.png; print-state
+    split off; ab native; frames 1; print-state
+    quit" > "$tmp/out.jsonl" 2> "$tmp/err.txt"
 rc=$?
-if [[ $rc -eq 0 && -s "$tmp/shot.png" ]]; then echo "ok: view rendered and saved a screenshot"; else echo "FAIL: view (exit $rc): $(cat "$tmp/out.txt")"; fail=1; fi
-if grep -q "switch technique" "$tmp/out.txt"; then echo "ok: view prints its keys"; else echo "FAIL: no key help"; fail=1; fi
-# No display at all: a clear error, not a crash.
+if [[ $rc -eq 0 ]]; then echo "ok: scripted view ran"; else echo "FAIL: scripted view (exit $rc): $(cat "$tmp/err.txt")"; fail=1; fi
+if grep -q "Space A/B" "$tmp/err.txt" && ! grep -q "Space A/B" "$tmp/out.jsonl"; then
+  echo "ok: the key list goes to stderr at startup"
+else
+  echo "FAIL: key list not on stderr only: $(cat "$tmp/err.txt")"; fail=1
+fi
+
+check "state lines: parameters persist across switches, measurements present" python3 - "$tmp/out.jsonl" <<'PY'
+import json, sys
+lines = open(sys.argv[1]).read().splitlines()
+states = [json.loads(l) for l in lines]   # every stdout line is JSON
+assert len(states) == 5, f"expected 5 state lines, got {len(states)}: {lines}"
+s1, s2, s3, s4, s5 = states
+# 1: logpolar keeps its --param; layered's script value is remembered.
+assert s1["technique"] == "logpolar", s1["technique"]
+assert s1["params"]["blur"] == 0.5, s1["params"]
+assert s1["overrides_by_technique"]["layered"] == {"layers": 2, "transition": 0.3}, s1
+# 2: back on layered: the script's layers=2 and --param transition=0.3 both kept.
+assert s2["technique"] == "layered"
+assert s2["params"]["layers"] == 2 and s2["params"]["transition"] == 0.3, s2["params"]
+assert s2["overrides"] == {"layers": 2, "transition": 0.3}, s2["overrides"]
+assert s2["frame_ms"] > 0 and s2["native_ms"] > 0, s2
+assert abs(s2["speedup"] - s2["native_ms"] / s2["frame_ms"]) < 1e-9 * s2["speedup"] + 1e-12, s2
+assert s2["shaded_pixels"] > 0 and s2["native_pixels"] == 320 * 180, s2
+assert abs(s2["shaded_share"] - s2["shaded_pixels"] / s2["native_pixels"]) < 1e-12, s2
+assert s2["quality"] == "A" and s2["slope"] == 0.0275 and s2["display"] == "desktop-1080p", s2
+assert s2["gaze"]["x_px"] == 160 and s2["gaze"]["y_px"] == 90 and s2["gaze"]["valid"], s2["gaze"]
+assert "fixed" in s2["gaze"]["source"], s2["gaze"]
+labels = [e["label"] for e in s2["legend"]]
+assert any(l.startswith("layer 1") for l in labels) and "gaze" in labels, labels
+assert all(e["colour"].startswith("#") and len(e["colour"]) == 7 for e in s2["legend"])
+# 3: logpolar again: sigma set by the script before the switch, blur from --param.
+assert s3["technique"] == "logpolar" and s3["params"]["sigma"] == 1.5 and s3["params"]["blur"] == 0.5, s3["params"]
+assert any("native disc" in e["label"] for e in s3["legend"]), s3["legend"]
+# 4: split screen at a quarter; 5: A/B flipped to native.
+assert s4["split"] is True and s4["divider"] == 0.25 and s4["shown"] == "split", s4
+assert s5["split"] is False and s5["shown"] == "native", s5
+PY
+
+# A small PNG reader (8-bit RGB/RGBA, not interlaced) for the screenshots.
+cat > "$tmp/png.py" <<'PY'
+import struct, zlib
+def read(path):
+    d = open(path, "rb").read()
+    assert d[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat = 8, b""
+    while pos < len(d):
+        n, t = struct.unpack(">I4s", d[pos:pos + 8])
+        body = d[pos + 8:pos + 8 + n]
+        if t == b"IHDR":
+            w, h, depth, ctype, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and ctype in (2, 6) and interlace == 0
+        if t == b"IDAT":
+            idat += body
+        pos += 12 + n
+    bpp = 4 if ctype == 6 else 3
+    raw, stride, rows, prev = zlib.decompress(idat), w * bpp, [], bytearray(w * bpp)
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c; pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line); prev = line
+    return w, h, lambda x, y: tuple(rows[y][x * bpp:x * bpp + 3])
+PY
+
+# The screenshot: the image top-left (320x180), the panel right of it (its
+# opaque background, ImGui's dark WindowBg 0.06 = 15, and white text).
+check "screenshot shows the scene and the panel" python3 - "$tmp/shot.png" "$tmp" <<'PY'
+import sys; sys.path.insert(0, sys.argv[2]); import png
+w, h, px = png.read(sys.argv[1])
+assert (w, h) == (320 + 380, 560), (w, h)
+panel = [px(x, y) for x in range(330, w - 20, 2) for y in range(30, h, 2)]
+bg = sum(1 for p in panel if max(abs(c - 15) for c in p) <= 2) / len(panel)
+text = sum(1 for p in panel if min(p) >= 200) / len(panel)
+assert bg > 0.3, f"panel background share {bg:.2f}"
+assert text > 0.005, f"panel text share {text:.4f}"
+scene = [px(x, y) for x in range(4, 316, 2) for y in range(4, 176, 2)]
+dark = sum(1 for p in scene if max(p) <= 30) / len(scene)
+mean = [sum(p[i] for p in scene) / len(scene) for i in range(3)]
+var = sum((sum(p) / 3 - sum(mean) / 3) ** 2 for p in scene) / len(scene)
+# The cheap scene: a bright sky over a green-grey ground with orange shapes.
+assert dark < 0.01, f"{dark:.2f} of the image is dark (not rendered?)"
+assert min(mean) > 90 and var > 50, (mean, var)
+below = [px(x, y) for x in range(4, 316, 4) for y in range(200, 550, 4)]
+assert all(max(abs(c - q) for c, q in zip(p, (15, 15, 18))) <= 2 for p in below), "below the image: not the clear colour"
+PY
+
+check "split screenshot shows the divider at a quarter of the width" python3 - "$tmp/split.png" "$tmp" <<'PY'
+import sys; sys.path.insert(0, sys.argv[2]); import png
+w, h, px = png.read(sys.argv[1])
+col = [px(80, y) for y in range(20, 70)]  # above the handle, below the labels
+white = sum(1 for p in col if min(p) >= 190) / len(col)
+assert white > 0.9, f"divider column at x=80: {white:.2f} white"
+other = [px(200, y) for y in range(20, 70)]
+assert sum(1 for p in other if min(p) >= 190) / len(other) < 0.5, "x=200 is white too"
+PY
+
+# Real input through X (xdotool): keys switch technique (3 = logpolar), split
+# (S) and the overlay (O); the mouse over the image is the gaze.
+if command -v xdotool >/dev/null; then
+  cat > "$tmp/keys.sh" <<'SH'
+"$FOVEATE" view --scene cheap --size 320x180 --commands "frames 1; wait 4; print-state; quit" > "$1" 2>/dev/null &
+pid=$!
+wid=$(xdotool search --sync --name foveate | head -1)
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+xdotool mousemove --window "$wid" 80 45
+sleep 0.5
+xdotool key --delay 100 3 s o
+wait $pid
+SH
+  FOVEATE="$FOVEATE" xvfb bash "$tmp/keys.sh" "$tmp/keys.jsonl"
+  check "keys and mouse: technique 3, split, overlay off, gaze at the mouse" python3 -c "
+import json; s = json.loads(open('$tmp/keys.jsonl').read())
+assert (s['technique'], s['split'], s['overlay']) == ('logpolar', True, False), s
+g = s['gaze']; assert g['source'].startswith('mouse') and abs(g['x_px'] - 80) <= 3 and abs(g['y_px'] - 45) <= 3, g"
+else
+  echo "FAIL: xdotool is missing (scripts/setup.sh installs it)"; fail=1
+fi
+
+# Refusals: a technique the scene cannot run; a bad command; a bad value.
+err=$(xvfb "$FOVEATE" view --scene cheap --size 160x90 --technique lodmask --frames 1 2>&1); rc=$?
+if [[ $rc -eq 1 && "$err" == *lodmask*meshes* ]]; then echo "ok: lodmask on a scene without meshes is refused"; else echo "FAIL: lodmask (exit $rc): $err"; fail=1; fi
+err=$(xvfb "$FOVEATE" view --scene cheap --size 160x90 --commands "frames 1; zoom 2" 2>&1); rc=$?
+if [[ $rc -eq 1 && "$err" == *"--commands: command 2 'zoom 2': unknown command"* ]]; then echo "ok: an unknown command is named"; else echo "FAIL: unknown command (exit $rc): $err"; fail=1; fi
+err=$(xvfb "$FOVEATE" view --scene cheap --size 160x90 --commands "frames 1; param layers=9; quit" 2>&1); rc=$?
+if [[ $rc -eq 1 && "$err" == *"command 2 'param layers=9'"*"out of range [1, 6]"* ]]; then echo "ok: a value out of range is refused"; else echo "FAIL: param out of range (exit $rc): $err"; fail=1; fi
+printf 'frames 1\nslope x\n' > "$tmp/bad.txt"
+err=$("$FOVEATE" view --scene cheap --script "$tmp/bad.txt" 2>&1); rc=$?
+if [[ $rc -eq 1 && "$err" == *"--script $tmp/bad.txt: command 2 'slope x'"*"not a number"* ]]; then echo "ok: a bad script is refused before a window opens"; else echo "FAIL: bad script (exit $rc): $err"; fail=1; fi
+help=$("$FOVEATE" view --help)
+if [[ "$help" == *"Space A/B"* && "$help" == *"print-state"* && "$help" == *"split screen"* ]]; then echo "ok: --help lists keys and script commands"; else echo "FAIL: view --help: $help"; fail=1; fi
+
+# --screenshot on exit, and no display at all: a clear error, not a crash.
+xvfb "$FOVEATE" view --scene cheap --size 160x90 --technique checkerboard --frames 3 --screenshot "$tmp/last.png" > "$tmp/o.txt" 2>&1
+rc=$?
+if [[ $rc -eq 0 && -s "$tmp/last.png" ]]; then echo "ok: --screenshot on exit"; else echo "FAIL: view --screenshot (exit $rc): $(cat "$tmp/o.txt")"; fail=1; fi
 err=$(DISPLAY= WAYLAND_DISPLAY= "$FOVEATE" view --scene cheap --frames 1 2>&1); rc=$?
 if [[ $rc -ne 0 && "$err" == *"window"* ]]; then echo "ok: no display gives a clear error"; else echo "FAIL: no display (exit $rc): $err"; fail=1; fi
 # view refuses what render refuses: lodmask on a scene without meshes.

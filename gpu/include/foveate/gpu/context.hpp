@@ -65,6 +65,8 @@ class Window : public Context {
   virtual void set_title(const std::string& title) = 0;
   [[nodiscard]] virtual int framebuffer_width() const = 0;
   [[nodiscard]] virtual int framebuffer_height() const = 0;
+  /// The backend's window handle (a GLFWwindow*), for UI toolkits that bind to it.
+  [[nodiscard]] virtual void* native_handle() const = 0;
 };
 
 std::unique_ptr<Window> create_window(int width, int height, const std::string& title,

@@ -93,6 +93,8 @@ struct OverlayShape {
   double x = 0, y = 0;  ///< centre (circle, dot) or corner (rect), pixels, origin top-left
   double w = 0, h = 0;  ///< radius in w (circle, dot) or size (rect)
   float r = 1, g = 1, b = 1;
+  /// What the shape marks ("layer 2 (2x subsampled) from 5.2 deg"), for legends.
+  std::string label = {};
 };
 
 class Technique {

@@ -1,0 +1,307 @@
+#include "viewer/viewer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "foveate/core/error.hpp"
+
+namespace foveate::app::viewer {
+
+namespace {
+
+// EMA weights: the frame time follows within a few frames; native, sampled
+// once a second, within two samples.
+constexpr double kFrameWeight = 0.2;
+constexpr double kNativeWeight = 0.5;
+constexpr double kNativePeriodS = 1.0;
+
+double ema(double old, double sample, double weight, bool first) {
+  return first ? sample : (1.0 - weight) * old + weight * sample;
+}
+
+}  // namespace
+
+Viewer::Viewer(Session& session, const std::string& technique, const ParamArgs& params,
+               const std::string& quality, std::optional<double> slope)
+    : session_(session), name_(technique) {
+  acuity_ = acuity_from_options(quality, slope);
+  quality_ =
+      slope ? "custom" : (quality.empty() ? "A" : std::string(1, char(std::toupper(quality[0]))));
+  for (const TechniqueInfo& t : techniques()) {
+    if (!scene_mismatch(t, session_.scene().info()).empty()) continue;
+    available_.push_back(t.name);
+    params_[t.name] = params_for(params, t.name);
+  }
+  // The one asked for: refused with render's message when the scene cannot
+  // run it (lodmask without meshes), its --param values checked.
+  with_flag("--technique", [&] { return technique_info(technique); });
+  params_[technique] = params_for(params, technique);
+  technique_ = with_flag("--param", [&] { return build(technique); });
+  native_ = build("native");
+}
+
+Viewer::~Viewer() = default;
+
+std::unique_ptr<Technique> Viewer::build(const std::string& name) const {
+  const TechniqueInfo& info = technique_info(name);
+  check_scene(info, session_.scene().info());
+  TechniqueConfig c;
+  c.display = session_.display();
+  c.acuity = acuity_;
+  auto it = params_.find(name);
+  if (it != params_.end()) c.params = it->second;
+  return make_technique(name, c);
+}
+
+void Viewer::rebuild() {
+  technique_ = build(name_);
+  frames_since_build_ = 0;
+}
+
+const std::map<std::string, double>& Viewer::overrides() const { return params_.at(name_); }
+
+void Viewer::set_technique(const std::string& name) {
+  if (name == name_) return;
+  const TechniqueInfo& info = technique_info(name);  // names the unknown one
+  check_scene(info, session_.scene().info());
+  auto t = build(name);
+  technique_ = std::move(t);
+  name_ = name;
+  frames_since_build_ = 0;
+}
+
+void Viewer::set_param(const std::string& technique, const std::string& key, double value) {
+  const std::string tech = technique.empty() ? name_ : technique;
+  const TechniqueInfo& info = technique_info(tech);
+  if (std::none_of(info.params.begin(), info.params.end(),
+                   [&](const ParamDecl& d) { return d.key == key; })) {
+    throw Error("param " + tech + "." + key + ": " + tech + " has no parameter '" + key +
+                "' (see 'foveate techniques')");
+  }
+  auto& mine = params_[tech];
+  const std::map<std::string, double> before = mine;
+  mine[key] = value;
+  try {
+    if (tech == name_) {
+      rebuild();
+    } else {
+      TechniqueConfig c;
+      c.display = session_.display();
+      c.acuity = acuity_;
+      c.params = mine;
+      const ParamValues v = resolve_parameters(info, c);
+      if (info.check) info.check(v);
+    }
+  } catch (const Error&) {
+    mine = before;
+    if (tech == name_) rebuild();
+    throw;
+  }
+}
+
+void Viewer::reset_params() {
+  params_[name_].clear();
+  rebuild();
+}
+
+void Viewer::set_quality(const std::string& preset) {
+  const AcuityModel before = acuity_;
+  acuity_ = with_flag("quality", [&] { return AcuityModel::quality(preset); });
+  try {
+    rebuild();
+  } catch (const Error&) {
+    acuity_ = before;
+    rebuild();
+    throw;
+  }
+  quality_ = std::string(1, char(std::toupper(preset[0])));
+}
+
+void Viewer::set_slope(double m) {
+  const AcuityModel before = acuity_;
+  acuity_ = with_flag("slope", [&] { return AcuityModel::with_slope(m); });
+  try {
+    rebuild();
+  } catch (const Error&) {
+    acuity_ = before;
+    rebuild();
+    throw;
+  }
+  quality_ = m == kSlopeQualityA ? "A" : m == kSlopeQualityB ? "B" : "custom";
+}
+
+void Viewer::set_display(const std::string& spec) {
+  const std::string before = session_.options().display;
+  session_.set_display(spec);
+  try {
+    rebuild();
+    native_ = build("native");
+    native_renders_ = 0;
+  } catch (const Error&) {
+    session_.set_display(before);
+    rebuild();
+    throw;
+  }
+  stats_.native_ms.reset();
+  stats_.native_samples = 0;
+  next_native_s_ = -1.0;
+}
+
+void Viewer::set_divider(double fraction) {
+  if (!(fraction >= 0.0 && fraction <= 1.0))
+    throw Error("divider: expected a fraction of the width in [0, 1]");
+  divider_ = fraction;
+}
+
+void Viewer::set_overlay(bool on) { session_.renderer().set_overlay(on); }
+
+std::optional<double> Viewer::speedup() const {
+  if (name_ == "native") return 1.0;
+  if (!stats_.native_ms || stats_.frame_ms <= 0.0) return std::nullopt;
+  return *stats_.native_ms / stats_.frame_ms;
+}
+
+std::vector<LegendEntry> Viewer::legend() const {
+  std::vector<LegendEntry> out;
+  for (const OverlayShape& s : technique_->overlay(gaze_)) {
+    const std::string label = s.label.empty() ? "(unlabelled)" : s.label;
+    const bool seen = std::any_of(out.begin(), out.end(), [&](const LegendEntry& e) {
+      return e.label == label && e.r == s.r && e.g == s.g && e.b == s.b;
+    });
+    if (!seen) out.push_back({s.r, s.g, s.b, label});
+  }
+  return out;
+}
+
+double Viewer::timed_render(Technique& t, const FrameInput& input, const GazeState& gaze,
+                            bool overlay, FrameStats* stats) {
+  Renderer& r = session_.renderer();
+  const bool was = r.options().overlay;
+  r.set_overlay(overlay && was);
+  timer_.start();
+  FrameStats s = r.render(t, input, gaze);
+  const double ms = timer_.stop();
+  r.set_overlay(was);
+  if (stats) *stats = std::move(s);
+  return ms;
+}
+
+void Viewer::blit_columns(int x0, int x1) {
+  if (x1 <= x0) return;
+  const int H = height();
+  const int fb_h = session_.window() ? session_.window()->framebuffer_height() : H;
+  // The output holds sRGB-encoded bytes: copied as they are.
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glBlitNamedFramebuffer(session_.renderer().output().framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H,
+                         x1, fb_h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double wall_s) {
+  gaze_ = gaze;
+  const bool native_due =
+      !split_ && name_ != "native" && (next_native_s_ < 0 || wall_s >= next_native_s_);
+  auto record_native = [&](double ms) {
+    if (native_renders_++ == 0) {  // compiled its shaders: not a measurement
+      next_native_s_ = -1.0;
+      return;
+    }
+    stats_.native_ms =
+        ema(stats_.native_ms.value_or(ms), ms, kNativeWeight, stats_.native_samples == 0);
+    ++stats_.native_samples;
+  };
+  // Clear the window (the UI's part) before drawing into it.
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (session_.window()) {
+    glViewport(0, 0, session_.window()->framebuffer_width(),
+               session_.window()->framebuffer_height());
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  if (native_due) {
+    // Native on the same frame, timed alike; its image is not shown.
+    next_native_s_ = wall_s + kNativePeriodS;
+    record_native(timed_render(*native_, input, gaze, false, nullptr));
+  }
+  const int W = width();
+  const int split_px = std::clamp(static_cast<int>(std::lround(divider_ * W)), 0, W);
+  if (split_) {
+    // Left: native; right: the technique.
+    const double nms = timed_render(*native_, input, gaze, false, nullptr);
+    record_native(nms);
+    blit_columns(0, split_px);
+  }
+  if (show_native_ && !split_) {
+    const double nms = timed_render(*native_, input, gaze, false, nullptr);
+    record_native(nms);
+    blit_columns(0, W);
+  } else {
+    FrameStats s;
+    const double ms = timed_render(*technique_, input, gaze, true, &s);
+    stats_.last = std::move(s);
+    stats_.last_ms = ms;
+    // The first frames after a (re)build compile shaders and fill history.
+    const bool settling = frames_since_build_ <= technique_->settle_frames();
+    stats_.frame_ms = ema(stats_.frame_ms, ms, kFrameWeight, settling || stats_.frame_ms <= 0);
+    ++frames_since_build_;
+    blit_columns(split_ ? split_px : 0, W);
+  }
+  if (name_ == "native" && !show_native_ && !split_) {
+    stats_.native_ms = stats_.frame_ms;
+    stats_.native_samples = std::max(stats_.native_samples, 1);
+  }
+  ++frame_;
+}
+
+nlohmann::json Viewer::state() const {
+  nlohmann::json j;
+  j["frame"] = frame_;
+  j["technique"] = name_;
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [k, v] : technique_->values().items()) params[k] = v;
+  j["params"] = params;
+  nlohmann::json over = nlohmann::json::object();
+  for (const auto& [k, v] : overrides()) over[k] = v;
+  j["overrides"] = over;
+  nlohmann::json all = nlohmann::json::object();
+  for (const auto& [t, m] : params_) {
+    if (m.empty()) continue;
+    for (const auto& [k, v] : m) all[t][k] = v;
+  }
+  j["overrides_by_technique"] = all;
+  j["quality"] = quality_;
+  j["slope"] = acuity_.slope;
+  j["display"] = display_spec();
+  j["shown"] = split_ ? "split" : show_native_ ? "native" : "foveated";
+  j["split"] = split_;
+  j["divider"] = divider_;
+  j["overlay"] = overlay();
+  j["frame_ms"] = stats_.frame_ms;
+  j["native_ms"] = stats_.native_ms ? nlohmann::json(*stats_.native_ms) : nlohmann::json();
+  const auto sp = speedup();
+  j["speedup"] = sp ? nlohmann::json(*sp) : nlohmann::json();
+  j["shaded_pixels"] = stats_.last.shaded_pixels;
+  j["native_pixels"] = stats_.last.native_pixels;
+  j["shaded_share"] =
+      stats_.last.native_pixels > 0 ? stats_.last.shaded_pixels / stats_.last.native_pixels : 0.0;
+  auto& g = session_.gaze();
+  const auto& f = g.last();
+  j["gaze"] = {{"source", g.describe()},  {"x_px", gaze_.gaze_px.x},
+               {"y_px", gaze_.gaze_px.y}, {"valid", f.valid},
+               {"holding", f.holding},    {"fallback", f.fallback},
+               {"saccade", f.in_saccade}, {"latency_ms", gaze_.latency_ms}};
+  nlohmann::json legend = nlohmann::json::array();
+  for (const LegendEntry& e : this->legend()) {
+    char hex[8];
+    auto byte = [](float c) {
+      return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255));
+    };
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", byte(e.r), byte(e.g), byte(e.b));
+    legend.push_back({{"colour", hex}, {"label", e.label}});
+  }
+  j["legend"] = legend;
+  return j;
+}
+
+}  // namespace foveate::app::viewer

@@ -1,0 +1,112 @@
+#pragma once
+// The live viewer's state and actions, without any UI: the technique and its
+// parameters (kept per technique, so a switch keeps what was set), the acuity
+// model, the display, the A/B toggle and split screen against native, and the
+// frame loop's measurements (frame time, native sampled periodically, the
+// shaded share). The ImGui panel and the scripted mode (--commands) both drive
+// it through the same calls.
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "foveate/gpu/frame.hpp"
+#include "session.hpp"
+
+namespace foveate::app::viewer {
+
+/// One entry of the overlay's legend: a colour and what it marks.
+struct LegendEntry {
+  float r = 1, g = 1, b = 1;
+  std::string label;
+};
+
+struct ViewerStats {
+  double frame_ms = 0.0;  ///< the shown technique's frame time (smoothed), glFinish-bracketed
+  double last_ms = 0.0;   ///< the last frame's
+  std::optional<double> native_ms;  ///< native's, sampled about once a second
+  FrameStats last;                  ///< the shown technique's last frame
+  int native_samples = 0;
+};
+
+class Viewer {
+ public:
+  /// `params` (from --param) seed every technique's parameters; the quality
+  /// ("A", "B" or "" for A) or `slope` the acuity model.
+  Viewer(Session& session, const std::string& technique, const ParamArgs& params,
+         const std::string& quality, std::optional<double> slope);
+  ~Viewer();
+
+  // Actions. Each throws foveate::Error naming the input when it is refused,
+  // and then leaves the state as it was.
+  void set_technique(const std::string& name);
+  /// `technique` empty = the current one.
+  void set_param(const std::string& technique, const std::string& key, double value);
+  /// Forgets the current technique's overrides (back to the derived defaults).
+  void reset_params();
+  void set_quality(const std::string& preset);  ///< "A" or "B"
+  void set_slope(double m);
+  void set_display(const std::string& spec);
+  void set_show_native(bool on) { show_native_ = on; }
+  void set_split(bool on) { split_ = on; }
+  void set_divider(double fraction);  ///< split position, 0..1 of the width
+  void set_overlay(bool on);
+  /// Measure native on the next frame (otherwise about once a second).
+  void request_native_sample() { next_native_s_ = -1.0; }
+
+  // State.
+  [[nodiscard]] const std::vector<std::string>& available() const { return available_; }
+  [[nodiscard]] const std::string& technique_name() const { return name_; }
+  [[nodiscard]] const Technique& technique() const { return *technique_; }
+  [[nodiscard]] const std::map<std::string, double>& overrides() const;
+  [[nodiscard]] const std::string& quality() const { return quality_; }  ///< "A", "B", "custom"
+  [[nodiscard]] double slope() const { return acuity_.slope; }
+  [[nodiscard]] const std::string& display_spec() const { return session_.options().display; }
+  [[nodiscard]] bool show_native() const { return show_native_; }
+  [[nodiscard]] bool split() const { return split_; }
+  [[nodiscard]] double divider() const { return divider_; }
+  [[nodiscard]] bool overlay() const { return session_.renderer().options().overlay; }
+  [[nodiscard]] const ViewerStats& stats() const { return stats_; }
+  [[nodiscard]] std::optional<double> speedup() const;
+  [[nodiscard]] const GazeState& gaze() const { return gaze_; }
+  [[nodiscard]] std::vector<LegendEntry> legend() const;
+  [[nodiscard]] int width() const { return session_.options().size.width; }
+  [[nodiscard]] int height() const { return session_.options().size.height; }
+  [[nodiscard]] Session& session() { return session_; }
+
+  /// Renders one frame (wall time `wall_s` since the start) and copies it to
+  /// the window's top-left W x H; the rest of the window is cleared for the UI.
+  void render_frame(const FrameInput& input, const GazeState& gaze, double wall_s);
+  /// Everything above as one JSON object (the scripted mode's print-state).
+  [[nodiscard]] nlohmann::json state() const;
+
+ private:
+  void rebuild();
+  std::unique_ptr<Technique> build(const std::string& name) const;
+  double timed_render(Technique& t, const FrameInput& input, const GazeState& gaze, bool overlay,
+                      FrameStats* stats);
+  void blit_columns(int x0, int x1);
+
+  Session& session_;
+  std::vector<std::string> available_;
+  std::map<std::string, std::map<std::string, double>> params_;  // per technique
+  std::string name_;
+  std::string quality_ = "A";
+  AcuityModel acuity_;
+  std::unique_ptr<Technique> technique_;
+  std::unique_ptr<Technique> native_;
+  bool show_native_ = false;
+  bool split_ = false;
+  double divider_ = 0.5;
+  ViewerStats stats_;
+  GazeState gaze_;
+  int frames_since_build_ = 0;
+  int native_renders_ = 0;  ///< since native_ was built (the first is not timed)
+  int frame_ = 0;
+  double next_native_s_ = -1.0;
+  gpu::FrameTimer timer_;
+};
+
+}  // namespace foveate::app::viewer

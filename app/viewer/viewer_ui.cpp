@@ -1,0 +1,281 @@
+#include "viewer/viewer_ui.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "backends/imgui_impl_glfw.h"
+#include "backends/imgui_impl_opengl3.h"
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/gl.hpp"
+
+namespace foveate::app::viewer {
+
+namespace {
+
+ImVec4 rgb(float r, float g, float b) { return {r, g, b, 1.0f}; }
+
+/// The slider's range: the declared one, with pixel radii up to the output's
+/// diagonal (typing a value with Ctrl+click still reaches the declared range).
+std::pair<double, double> slider_range(const ParamDecl& d, const Viewer& v) {
+  double hi = d.max;
+  if (d.unit == "px") hi = std::min(hi, std::ceil(std::hypot(v.width(), v.height())));
+  return {d.min, std::max(hi, d.min)};
+}
+
+}  // namespace
+
+Ui::Ui(gpu::Window& window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini beside the user's files
+  io.LogFilename = nullptr;
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.0f;
+  style.Colors[ImGuiCol_WindowBg].w = 1.0f;  // opaque: the panel is beside the image
+  if (!ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(window.native_handle()), true) ||
+      !ImGui_ImplOpenGL3_Init("#version 410 core")) {
+    ImGui::DestroyContext();
+    throw Error("view: the UI (Dear ImGui) could not start on this window");
+  }
+}
+
+Ui::~Ui() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+bool Ui::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Ui::wants_keyboard() const { return ImGui::GetIO().WantTextInput; }
+
+template <class Fn>
+void Ui::act(Fn&& fn) {
+  try {
+    fn();
+    error_.clear();
+  } catch (const Error& e) {
+    error_ = e.what();
+  }
+}
+
+void Ui::parameters(Viewer& v) {
+  const TechniqueInfo& info = technique_info(v.technique_name());
+  const ParamValues& values = v.technique().values();
+  const auto& over = v.overrides();
+  if (info.params.empty()) ImGui::TextDisabled("(no parameters)");
+  for (const ParamDecl& d : info.params) {
+    ImGui::PushID(d.key.c_str());
+    const bool overridden = over.count(d.key) > 0;
+    const std::string label = d.key + (overridden ? " *" : "");
+    const std::string id = v.technique_name() + "." + d.key;
+    if (d.type == ParamType::Boolean) {
+      bool b = values.boolean(d.key);
+      if (ImGui::Checkbox(label.c_str(), &b)) {
+        act([&] { v.set_param("", d.key, b ? 1.0 : 0.0); });
+      }
+    } else {
+      const auto [lo, hi] = slider_range(d, v);
+      auto it = pending_.find(id);
+      double value = it != pending_.end() ? it->second : values.real(d.key);
+      const std::string unit = d.unit.empty() ? "" : " " + d.unit;
+      bool changed = false;
+      if (d.type == ParamType::Integer) {
+        int i = static_cast<int>(std::lround(value));
+        const std::string fmt = "%d" + unit;
+        changed = ImGui::SliderInt(label.c_str(), &i, static_cast<int>(lo), static_cast<int>(hi),
+                                   fmt.c_str());
+        value = i;
+      } else {
+        const std::string fmt = "%.3f" + unit;
+        const ImGuiSliderFlags flags =
+            lo > 0 && hi / lo >= 100 ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &lo, &hi,
+                                      fmt.c_str(), flags);
+      }
+      if (changed) pending_[id] = value;
+      // Applied when let go: a technique is rebuilt per change.
+      if (ImGui::IsItemDeactivatedAfterEdit()) {
+        const double apply = pending_.count(id) ? pending_[id] : value;
+        pending_.erase(id);
+        act([&] { v.set_param("", d.key, apply); });
+      } else if (!ImGui::IsItemActive()) {
+        pending_.erase(id);
+      }
+    }
+    if (ImGui::IsItemHovered()) {
+      char range[96];
+      std::snprintf(range, sizeof range, "\nrange %g..%g%s%s", d.min, d.max,
+                    d.unit.empty() ? "" : " ", d.unit.c_str());
+      ImGui::SetTooltip("%s%s%s", d.help.c_str(), range,
+                        overridden ? "\n* set here or by --param" : "\nderived default");
+    }
+    ImGui::PopID();
+  }
+  if (ImGui::Button("Reset to defaults (R)")) act([&] { v.reset_params(); });
+}
+
+void Ui::measurements(Viewer& v) {
+  const ViewerStats& s = v.stats();
+  ImGui::Text("frame time   %.1f ms (%s)", s.frame_ms, v.technique_name().c_str());
+  if (s.native_ms) {
+    ImGui::Text("native       %.1f ms (%d samples)", *s.native_ms, s.native_samples);
+  } else {
+    ImGui::TextDisabled("native       not yet measured");
+  }
+  if (const auto sp = v.speedup()) {
+    ImGui::TextColored(*sp >= 1.0 ? rgb(0.4f, 1, 0.4f) : rgb(1, 0.5f, 0.4f),
+                       "speedup      %.2fx against native", *sp);
+  } else {
+    ImGui::TextDisabled("speedup      -");
+  }
+  const double share =
+      s.last.native_pixels > 0 ? 100.0 * s.last.shaded_pixels / s.last.native_pixels : 0.0;
+  ImGui::Text("shaded       %.1f %% of native pixels", share);
+  for (const PixelPart& p : s.last.parts) {
+    ImGui::TextDisabled("  %-14s %.1f %%", p.name.c_str(),
+                        s.last.native_pixels > 0 ? 100.0 * p.pixels / s.last.native_pixels : 0.0);
+  }
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled(v.split() ? "native is timed every frame (split screen), glFinish-bracketed"
+                                : "native is timed on the same frame about once a second, "
+                                  "glFinish-bracketed");
+  ImGui::PopTextWrapPos();
+}
+
+void Ui::legend_and_gaze(Viewer& v) {
+  if (ImGui::CollapsingHeader("Overlay legend (O)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (!v.overlay()) ImGui::TextDisabled("(overlay off)");
+    int k = 0;
+    for (const LegendEntry& e : v.legend()) {
+      ImGui::PushID(k++);
+      ImGui::ColorButton("##c", rgb(e.r, e.g, e.b), ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+      ImGui::SameLine();
+      ImGui::TextWrapped("%s", e.label.c_str());
+      ImGui::PopID();
+    }
+  }
+  if (ImGui::CollapsingHeader("Gaze", ImGuiTreeNodeFlags_DefaultOpen)) {
+    auto& g = v.session().gaze();
+    const auto& f = g.last();
+    ImGui::TextWrapped("source: %s", g.describe().c_str());
+    ImGui::Text("at %.0f, %.0f px, latency %.1f ms", v.gaze().gaze_px.x, v.gaze().gaze_px.y,
+                v.gaze().latency_ms);
+    ImGui::Text("filter: %s%s%s",
+                f.fallback  ? "fallback (centre, wider fovea)"
+                : f.holding ? "holding the last gaze"
+                : f.valid   ? "tracking"
+                            : "no data",
+                f.in_saccade ? ", saccade" : "", "");
+    ImGui::TextWrapped("%s", g.report().c_str());
+  }
+}
+
+void Ui::draw(Viewer& v) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  const float W = static_cast<float>(v.width()), H = static_cast<float>(v.height());
+
+  ImGui::SetNextWindowPos(ImVec2(W, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(std::max(io.DisplaySize.x - W, 100.0f), io.DisplaySize.y),
+                           ImGuiCond_Always);
+  ImGui::Begin("foveate view", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushItemWidth(-150);
+  if (!error_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, rgb(1, 0.4f, 0.3f));
+    ImGui::TextWrapped("%s", error_.c_str());
+    ImGui::PopStyleColor();
+  }
+  const auto& names = v.available();
+  if (ImGui::BeginCombo("technique (1-9)", v.technique_name().c_str())) {
+    for (size_t i = 0; i < names.size(); ++i) {
+      const std::string item = std::to_string(i + 1) + " " + names[i];
+      if (ImGui::Selectable(item.c_str(), names[i] == v.technique_name())) {
+        act([&] { v.set_technique(names[i]); });
+      }
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::CollapsingHeader("Measured", ImGuiTreeNodeFlags_DefaultOpen)) measurements(v);
+  if (ImGui::CollapsingHeader("Compare with native", ImGuiTreeNodeFlags_DefaultOpen)) {
+    bool native = v.show_native(), split = v.split(), overlay = v.overlay();
+    if (ImGui::Checkbox("show native (A/B: Space)", &native)) v.set_show_native(native);
+    if (ImGui::Checkbox("split screen: native | foveated (S)", &split)) v.set_split(split);
+    if (v.split()) {
+      float d = static_cast<float>(v.divider());
+      if (ImGui::SliderFloat("divider", &d, 0.0f, 1.0f, "%.2f")) act([&] { v.set_divider(d); });
+    }
+    if (ImGui::Checkbox("overlay (O)", &overlay)) v.set_overlay(overlay);
+  }
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameters(v);
+  if (ImGui::CollapsingHeader("Acuity and display", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::RadioButton("quality A", v.quality() == "A")) act([&] { v.set_quality("A"); });
+    ImGui::SameLine();
+    if (ImGui::RadioButton("quality B", v.quality() == "B")) act([&] { v.set_quality("B"); });
+    auto it = pending_.find("slope");
+    double m = it != pending_.end() ? it->second : v.slope();
+    const double lo = 0.005, hi = 0.08;
+    if (ImGui::SliderScalar("MAR slope m", ImGuiDataType_Double, &m, &lo, &hi, "%.4f deg/deg"))
+      pending_["slope"] = m;
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+      pending_.erase("slope");
+      act([&] { v.set_slope(m); });
+    } else if (!ImGui::IsItemActive()) {
+      pending_.erase("slope");
+    }
+    if (ImGui::BeginCombo("display", v.display_spec().c_str())) {
+      for (const Display& d : Display::presets()) {
+        if (ImGui::Selectable(d.name.c_str(), d.name == v.display_spec())) {
+          act([&] { v.set_display(d.name); });
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
+  legend_and_gaze(v);
+  ImGui::TextDisabled("keys: 1-9 technique, Space A/B, S split, O overlay, R reset, Esc quit");
+  ImGui::PopItemWidth();
+  ImGui::End();
+
+  // The split's divider, draggable on the image.
+  if (v.split()) {
+    const float x = static_cast<float>(v.divider()) * W;
+    const ImVec2 m = io.MousePos;
+    const bool near = std::abs(m.x - x) <= 6.0f && m.y >= 0 && m.y < H;
+    if (!io.WantCaptureMouse && near && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+      dragging_ = true;
+    if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
+    if (dragging_) v.set_divider(std::clamp(m.x / W, 0.0f, 1.0f));
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    const ImU32 c =
+        (near || dragging_) ? IM_COL32(255, 255, 80, 255) : IM_COL32(255, 255, 255, 200);
+    dl->AddLine(ImVec2(x, 0), ImVec2(x, H), c, 2.0f);
+    dl->AddRectFilled(ImVec2(x - 4, H * 0.5f - 14), ImVec2(x + 4, H * 0.5f + 14), c, 2.0f);
+    dl->AddText(ImVec2(6, 4), IM_COL32(255, 255, 255, 230), "native");
+    const std::string right = v.technique_name();
+    dl->AddText(ImVec2(W - 6 - ImGui::CalcTextSize(right.c_str()).x, 4),
+                IM_COL32(255, 255, 255, 230), right.c_str());
+  } else {
+    dragging_ = false;
+    if (v.show_native()) {
+      ImGui::GetForegroundDrawList()->AddText(ImVec2(6, 4), IM_COL32(255, 255, 255, 230),
+                                              "native (Space: back to the technique)");
+    }
+  }
+
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDisable(GL_FRAMEBUFFER_SRGB);  // ImGui's colours are sRGB-encoded already
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace foveate::app::viewer

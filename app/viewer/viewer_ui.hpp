@@ -1,0 +1,48 @@
+#pragma once
+// The viewer's panel (Dear ImGui, Debian's libimgui-dev with its GLFW and
+// OpenGL 3 backends) beside the output: technique, parameters with their
+// ranges and units, acuity model, display, A/B and split screen against
+// native, frame time and measured speedup, shaded share, the overlay's legend
+// and the gaze. Every change goes through Viewer's actions.
+#include <map>
+#include <string>
+
+#include "foveate/gpu/context.hpp"
+#include "viewer/viewer.hpp"
+
+namespace foveate::app::viewer {
+
+/// Width of the panel right of the output, in pixels.
+inline constexpr int kPanelWidth = 380;
+
+class Ui {
+ public:
+  /// Binds ImGui to the window (its input callbacks chain to the window's own).
+  explicit Ui(gpu::Window& window);
+  ~Ui();
+  Ui(const Ui&) = delete;
+  Ui& operator=(const Ui&) = delete;
+
+  /// Builds and draws the panel into the window's framebuffer (call after
+  /// Viewer::render_frame, before swapping). Handles the split divider's drag.
+  void draw(Viewer& viewer);
+  /// Whether ImGui takes the mouse (over the panel) or the keyboard (typing).
+  [[nodiscard]] bool wants_mouse() const;
+  [[nodiscard]] bool wants_keyboard() const;
+  /// Whether the mouse is dragging the split divider (the gaze then holds).
+  [[nodiscard]] bool dragging_divider() const { return dragging_; }
+
+ private:
+  void parameters(Viewer& v);
+  void measurements(Viewer& v);
+  void legend_and_gaze(Viewer& v);
+  /// Runs a Viewer action, keeping its error to show.
+  template <class Fn>
+  void act(Fn&& fn);
+
+  std::map<std::string, double> pending_;  // slider values being dragged
+  std::string error_;
+  bool dragging_ = false;
+};
+
+}  // namespace foveate::app::viewer
