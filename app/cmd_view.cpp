@@ -157,8 +157,9 @@ void register_view(CLI::App& app) {
   sub->get_option("--gaze")->description(
       std::string("Gaze source; default the mouse over the image. ") + gaze::gaze_spec_help());
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();
-  sub->add_flag("--overlay,!--no-overlay", a->overlay,
-                "Draw layer/region borders: on by default, --no-overlay hides them (toggle with O)");
+  sub->add_flag(
+      "--overlay,!--no-overlay", a->overlay,
+      "Draw layer/region borders: on by default, --no-overlay hides them (toggle with O)");
   sub->add_option("--frames", a->frames, "Quit after N frames (0 = run until closed)")
       ->capture_default_str();
   sub->add_option("--screenshot", a->screenshot,
