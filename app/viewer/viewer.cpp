@@ -105,29 +105,25 @@ void Viewer::reset_params() {
   rebuild();
 }
 
-void Viewer::set_quality(const std::string& preset) {
+void Viewer::use_acuity(const AcuityModel& next) {
   const AcuityModel before = acuity_;
-  acuity_ = with_flag("quality", [&] { return AcuityModel::quality(preset); });
+  acuity_ = next;
   try {
     rebuild();
   } catch (const Error&) {
-    acuity_ = before;
+    acuity_ = before;  // the technique refused it: keep the one that worked
     rebuild();
     throw;
   }
+}
+
+void Viewer::set_quality(const std::string& preset) {
+  use_acuity(with_flag("quality", [&] { return AcuityModel::quality(preset); }));
   quality_ = std::string(1, char(std::toupper(preset[0])));
 }
 
 void Viewer::set_slope(double m) {
-  const AcuityModel before = acuity_;
-  acuity_ = with_flag("slope", [&] { return AcuityModel::with_slope(m); });
-  try {
-    rebuild();
-  } catch (const Error&) {
-    acuity_ = before;
-    rebuild();
-    throw;
-  }
+  use_acuity(with_flag("slope", [&] { return AcuityModel::with_slope(m); }));
   quality_ = m == kSlopeQualityA ? "A" : m == kSlopeQualityB ? "B" : "custom";
 }
 

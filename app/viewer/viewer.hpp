@@ -84,6 +84,8 @@ class Viewer {
 
  private:
   void rebuild();
+  /// Rebuilds with `next`; restores the previous model when that fails.
+  void use_acuity(const AcuityModel& next);
   std::unique_ptr<Technique> build(const std::string& name) const;
   double timed_render(Technique& t, const FrameInput& input, const GazeState& gaze, bool overlay,
                       FrameStats* stats);
