@@ -167,7 +167,7 @@ void run_plan(const PlanArgs& a) {
   }
   const LayerPlan plan = plan_layers(display, acuity, opt);
   const Vec2d gaze = a.gaze.empty()
-                         ? Vec2d{0.5 * display.width_px, 0.5 * display.height_px}
+                         ? display.principal_point()
                          : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
 
   // Where each layer lands on the screen for this gaze (inner layers are squares
@@ -194,7 +194,8 @@ void run_plan(const PlanArgs& a) {
   const Display& d = plan.display;
   std::cout << "display " << d.name << ": " << d.width_px << 'x' << d.height_px;
   if (d.head_mounted()) {
-    std::cout << ", head-mounted, " << fmt(d.fov_h_deg, 1) << " deg horizontal field of view\n";
+    std::cout << ", head-mounted, " << fmt(d.horizontal_fov_deg(), 1)
+              << " deg horizontal field of view\n";
   } else {
     std::cout << ", " << fmt(d.width_mm, 0) << " mm wide viewed from " << fmt(d.distance_mm, 0)
               << " mm\n";

@@ -148,7 +148,7 @@ void run_rates(const RatesArgs& a) {
   }
   const AcuityModel acuity = acuity_from_options(a.quality, a.slope);
   const Vec2d gaze = a.gaze.empty()
-                         ? Vec2d{0.5 * display.width_px, 0.5 * display.height_px}
+                         ? display.principal_point()
                          : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
   const ShadingRateImage m = shading_rate_image(display, acuity, gaze, opt);
   const std::vector<std::uint8_t> bytes = m.encode(api);

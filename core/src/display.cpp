@@ -16,11 +16,36 @@ namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kRad = std::numbers::pi / 180.0;
 constexpr int kMaxPixels = 65536;
+constexpr double kMaxEdgeDeg = 85.0;  // an edge angle's bound (tan stays finite and sane)
+double tan_deg(double a) { return std::tan(a * kRad); }
+// An edge angle in degrees from a raw projection value (the tangent, as
+// OpenVR's GetProjectionRaw and hmdq report it).
+double edge_deg(double tangent) { return std::atan(tangent) * kDeg; }
 }  // namespace
 
 double Display::eye_distance_px() const {
+  if (fov.set()) return width_px / (tan_deg(fov.right_deg) - tan_deg(fov.left_deg));
   if (head_mounted()) return 0.5 * width_px / std::tan(0.5 * fov_h_deg * kRad);
   return distance_mm * width_px / width_mm;
+}
+
+Vec2d Display::principal_point() const {
+  if (!fov.set()) return {0.5 * width_px, 0.5 * height_px};
+  const double l = tan_deg(fov.left_deg), r = tan_deg(fov.right_deg);
+  const double u = tan_deg(fov.up_deg), d = tan_deg(fov.down_deg);
+  // The left edge is -l focal lengths left of the axis; the top edge u above it.
+  return {width_px * -l / (r - l), height_px * u / (u - d)};
+}
+
+double Display::horizontal_fov_deg() const {
+  if (fov.set()) return fov.right_deg - fov.left_deg;
+  return head_mounted() ? fov_h_deg : 0.0;
+}
+
+Display Display::mirrored() const {
+  Display d = *this;
+  d.fov = fov.mirrored();
+  return d;
 }
 
 double Display::pixels_per_mm() const { return head_mounted() ? 0.0 : width_px / width_mm; }
@@ -39,7 +64,7 @@ double Display::sharpness_deg() const { return std::atan(2.0 / eye_distance_px()
 
 double Display::eccentricity_deg(Vec2d pixel, Vec2d gaze) const {
   const double f = eye_distance_px();
-  const double cx = 0.5 * width_px, cy = 0.5 * height_px;
+  const auto [cx, cy] = principal_point();
   const double ax = pixel.x - cx, ay = pixel.y - cy, az = f;
   const double bx = gaze.x - cx, by = gaze.y - cy, bz = f;
   const double crx = ay * bz - az * by, cry = az * bx - ax * bz, crz = ax * by - ay * bx;
@@ -84,6 +109,35 @@ void Display::validate() const {
   if (height_px < 1 || height_px > kMaxPixels) {
     throw Error(w + ": height_px must be in [1, 65536], got " + std::to_string(height_px));
   }
+  if (!std::isfinite(ipd_mm) || ipd_mm < 0.0 || ipd_mm > 200.0) {
+    throw Error(w + ": ipd_mm must be in (0, 200] (or 0 for a display without stereo), got " +
+                format_number(ipd_mm));
+  }
+  if (fov.set()) {
+    const std::pair<const char*, double> edges[] = {{"left", fov.left_deg},
+                                                    {"right", fov.right_deg},
+                                                    {"up", fov.up_deg},
+                                                    {"down", fov.down_deg}};
+    for (const auto& [key, a] : edges) {
+      if (!std::isfinite(a) || std::abs(a) >= kMaxEdgeDeg) {
+        throw Error(w + ": fov_deg." + key + " must be in (-85, 85) degrees, got " +
+                    format_number(a));
+      }
+    }
+    if (!(fov.right_deg > fov.left_deg)) {
+      throw Error(w + ": fov_deg.right (" + format_number(fov.right_deg) +
+                  ") must be greater than fov_deg.left (" + format_number(fov.left_deg) + ")");
+    }
+    if (!(fov.up_deg > fov.down_deg)) {
+      throw Error(w + ": fov_deg.up (" + format_number(fov.up_deg) +
+                  ") must be greater than fov_deg.down (" + format_number(fov.down_deg) + ")");
+    }
+    if (fov_h_deg != 0.0) throw Error(w + ": give either fov_h_deg or fov_deg, not both");
+    return;
+  }
+  if (ipd_mm > 0.0) {
+    throw Error(w + ": ipd_mm needs the per-eye angles fov_deg (a stereo head-mounted display)");
+  }
   if (head_mounted()) {
     if (!std::isfinite(fov_h_deg) || fov_h_deg >= 179.0) {
       throw Error(w + ": fov_h_deg must be in (0, 179), got " + format_number(fov_h_deg));
@@ -113,6 +167,24 @@ const std::vector<Display>& Display::presets() {
     // Meta Quest 3, one eye: 2064x2208 panel, about 104 degrees horizontally
     // (modelled as a pinhole; real lenses distort).
     v.push_back(Display{"hmd-quest3", 2064, 2208, 0.0, 0.0, 104.0});
+    // Stereo headsets, left eye (the right mirrors it). The figures are the
+    // runtime's own, as recorded with hmdq in risa2000's HMD geometry
+    // database (https://risa2000.github.io/hmdgdb/): the recommended per-eye
+    // render target and the raw projection tangents (left, right, up, down).
+    // Oculus Quest 2, Oculus runtime 1.53 (hmd_cfgs/Quest2_Native_R72.html):
+    // 2352x2368, tangents -1.279942, 1.0, 1.110613, -1.191754 (52, 45, 48 and
+    // 50 degrees), eye offsets +-31.75 mm.
+    v.push_back(Display{
+        "hmd-quest2", 2352, 2368, 0.0, 0.0, 0.0,
+        FovAngles{edge_deg(-1.279942), edge_deg(1.0), edge_deg(1.110613), edge_deg(-1.191754)},
+        63.5});
+    // Pimax Crystal, OpenVR 1.26 (hmd_cfgs/PimaxCrystal_Native_R120.html):
+    // 4312x5100, tangents -1.264092, 0.889501, 1.274264, -1.274264, reported
+    // IPD 68.1 mm.
+    v.push_back(Display{
+        "hmd-pimax-crystal", 4312, 5100, 0.0, 0.0, 0.0,
+        FovAngles{edge_deg(-1.264092), edge_deg(0.889501), edge_deg(1.274264), edge_deg(-1.274264)},
+        68.1});
     return v;
   }();
   return all;
@@ -128,15 +200,36 @@ Display Display::from_json(const nlohmann::json& j, const std::string& where) {
   const bool has_fov = r.number("fov_h_deg", d.fov_h_deg, 1e-6, 178.999);
   const bool has_w = r.number("width_mm", d.width_mm, 1e-6, 1e7);
   const bool has_v = r.number("distance_mm", d.distance_mm, 1e-6, 1e7);
+  const bool has_ipd = r.number("ipd_mm", d.ipd_mm, 1e-6, 200.0);
+  const nlohmann::json* fov = r.get("fov_deg");
+  if (fov) {
+    if (!fov->is_object()) throw Error(r.path("fov_deg") + ": expected an object");
+    JsonReader f(*fov, r.path("fov_deg"));
+    const std::pair<const char*, double*> edges[] = {{"left", &d.fov.left_deg},
+                                                     {"right", &d.fov.right_deg},
+                                                     {"up", &d.fov.up_deg},
+                                                     {"down", &d.fov.down_deg}};
+    for (const auto& [key, out] : edges) {
+      if (!f.number(key, *out, -kMaxEdgeDeg + 1e-9, kMaxEdgeDeg - 1e-9)) {
+        throw Error(f.path(key) + ": required (degrees, OpenXR's XrFovf sign convention)");
+      }
+    }
+    f.finish();
+  }
   r.finish();
   if (!j.contains("width_px")) throw Error(r.path("width_px") + ": required");
   if (!j.contains("height_px")) throw Error(r.path("height_px") + ": required");
-  if (has_fov && (has_w || has_v)) {
-    throw Error(
-        where +
-        ": give either fov_h_deg (head-mounted) or width_mm and distance_mm (flat), not both");
+  if ((has_fov || fov) && (has_w || has_v)) {
+    throw Error(where +
+                ": give either fov_h_deg or fov_deg (head-mounted) or width_mm and distance_mm "
+                "(flat), not both");
   }
-  if (!has_fov) {
+  if (has_fov && fov) throw Error(where + ": give either fov_h_deg or fov_deg, not both");
+  if (has_ipd && !fov) {
+    throw Error(r.path("ipd_mm") +
+                ": needs the per-eye angles fov_deg (a stereo head-mounted display)");
+  }
+  if (!has_fov && !fov) {
     if (!has_w) throw Error(r.path("width_mm") + ": required for a flat display");
     if (!has_v) throw Error(r.path("distance_mm") + ": required for a flat display");
   }
@@ -162,7 +255,13 @@ Display Display::load(const std::string& name_or_path) {
 
 void to_json(nlohmann::json& j, const Display& d) {
   j = nlohmann::json{{"name", d.name}, {"width_px", d.width_px}, {"height_px", d.height_px}};
-  if (d.head_mounted()) {
+  if (d.fov.set()) {
+    j["fov_deg"] = {{"left", d.fov.left_deg},
+                    {"right", d.fov.right_deg},
+                    {"up", d.fov.up_deg},
+                    {"down", d.fov.down_deg}};
+    if (d.ipd_mm > 0.0) j["ipd_mm"] = d.ipd_mm;
+  } else if (d.head_mounted()) {
     j["fov_h_deg"] = d.fov_h_deg;
   } else {
     j["width_mm"] = d.width_mm;

@@ -47,7 +47,7 @@ double max_step_angle(double a0, double a1, double b0, double b1, double f) {
 double min_eccentricity(const Display& d, Vec2d gaze, double x0, double y0, double x1, double y1) {
   if (gaze.x >= x0 && gaze.x <= x1 && gaze.y >= y0 && gaze.y <= y1) return 0.0;
   const double f = d.eye_distance_px(), f2 = f * f;
-  const double cx = 0.5 * d.width_px, cy = 0.5 * d.height_px;
+  const auto [cx, cy] = d.principal_point();
   const double gx = gaze.x - cx, gy = gaze.y - cy;
   double best = 180.0;
   auto consider = [&](double x, double y) {
@@ -214,7 +214,7 @@ ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity,
   const double half_cycle = 0.5 * acuity.mar_deg(e) * kRad;
   // The largest angle of one pixel step along x and along y over the tile.
   const double f = display.eye_distance_px();
-  const double cx = 0.5 * display.width_px, cy = 0.5 * display.height_px;
+  const auto [cx, cy] = display.principal_point();
   const double ax = max_step_angle(x0 - cx, x1 - cx, y0 - cy, y1 - cy, f);
   const double ay = max_step_angle(y0 - cy, y1 - cy, x0 - cx, x1 - cx, f);
   const double kx = half_cycle / ax, ky = half_cycle / ay;  // largest allowed spacings

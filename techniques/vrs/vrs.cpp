@@ -53,11 +53,7 @@ class Vrs final : public Technique {
       o.latency_margin_deg = latency_margin_deg(g);
       o.fovea_scale = std::max(1.0, g.fovea_scale);
     }
-    return shading_rate_image(d, acuity_, centre(g, w, h), o);
-  }
-
-  Vec2d centre(const GazeState& g, int w, int h) const {
-    return fixed_ ? Vec2d{0.5 * w, 0.5 * h} : g.gaze_px;
+    return shading_rate_image(d, acuity_, fixed_ ? d.principal_point() : g.gaze_px, o);
   }
 
   // Radius (pixels) of the disc around the centre that only 1x1 tiles cover.
@@ -157,7 +153,7 @@ class Vrs final : public Technique {
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     const ShadingRateImage m = rates(gaze, display_.width_px, display_.height_px);
-    const Vec2d c = centre(gaze, display_.width_px, display_.height_px);
+    const Vec2d c = fixed_ ? display_.principal_point() : gaze.gaze_px;
     std::vector<OverlayShape> shapes = {
         {OverlayShape::Kind::Circle, c.x, c.y, native_radius(m, c), 0, 1, 0.1f, 0.1f}};
     shapes.push_back(gaze_dot(gaze));
@@ -167,7 +163,7 @@ class Vrs final : public Technique {
  protected:
   std::vector<std::pair<std::string, double>> derived() const override {
     GazeState g;
-    g.gaze_px = {0.5 * display_.width_px, 0.5 * display_.height_px};
+    g.gaze_px = display_.principal_point();
     const ShadingRateImage m = rates(g, display_.width_px, display_.height_px);
     return {{"native_radius_px", native_radius(m, g.gaze_px)},
             {"pixel_ratio", m.pixel_ratio()},
@@ -196,7 +192,8 @@ TechniqueInfo vrs_info() {
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
       param("tile", "shading-rate tile size (8, 16 or 32)", "px", ParamType::Integer, 8, 32, 16),
-      param("fixed", "rates from the screen centre, not the gaze (no eye tracking)", "",
+      param("fixed",
+            "rates from the lens centre (the principal point), not the gaze (no eye tracking)", "",
             ParamType::Boolean, 0, 1, 0),
   };
   t.make = construct<Vrs>();

@@ -4,7 +4,10 @@
 // viewing distance (Guenter et al. eq. 6 and 7); a head-mounted display by its
 // per-eye resolution and horizontal field of view. Both reduce to one number,
 // the distance from the eye to the image plane in pixels (eye_distance_px), from which
-// every angle follows exactly (no small-angle approximation).
+// every angle follows exactly (no small-angle approximation). A head-mounted
+// eye may instead be described by its four edge angles (asymmetric field of
+// view, as OpenXR's XrFovf): then the eye's optical axis meets the image at the
+// principal point, not at the centre, and every angle is taken from there.
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
@@ -14,6 +17,21 @@ namespace foveate {
 struct Vec2d {
   double x = 0.0;
   double y = 0.0;
+};
+
+/// One eye's field of view as OpenXR's XrFovf gives it, in degrees: the angles
+/// of the left, right, top and bottom image edges from the eye's optical axis
+/// (left and down negative for an axis inside the image).
+struct FovAngles {
+  double left_deg = 0.0;
+  double right_deg = 0.0;
+  double up_deg = 0.0;
+  double down_deg = 0.0;
+  [[nodiscard]] bool set() const {
+    return left_deg != 0.0 || right_deg != 0.0 || up_deg != 0.0 || down_deg != 0.0;
+  }
+  /// The other eye's field (left and right swapped and negated).
+  [[nodiscard]] FovAngles mirrored() const { return {-right_deg, -left_deg, up_deg, down_deg}; }
 };
 
 struct Display {
@@ -26,8 +44,24 @@ struct Display {
   // Head-mounted: horizontal field of view per eye; when > 0 it defines the
   // geometry and width_mm / distance_mm are ignored.
   double fov_h_deg = 0.0;
+  /// Head-mounted, asymmetric: the (left) eye's four edge angles; when set
+  /// they define the geometry and fov_h_deg is 0. The horizontal angles give
+  /// the focal length and the principal point's x; the vertical ones the
+  /// principal point's y (as the ratio up : down, pixels being square, so a
+  /// resized display keeps the axis at the same relative height).
+  FovAngles fov{};
+  /// Inter-pupillary distance of a stereo head-mounted display (the eye
+  /// positions for per-eye cameras); 0 = not a stereo display.
+  double ipd_mm = 0.0;
 
-  [[nodiscard]] bool head_mounted() const { return fov_h_deg > 0.0; }
+  [[nodiscard]] bool head_mounted() const { return fov_h_deg > 0.0 || fov.set(); }
+  /// Whether it can be rendered in stereo (four angles and an IPD).
+  [[nodiscard]] bool stereo() const { return fov.set() && ipd_mm > 0.0; }
+  /// Where the eye's optical axis meets the image (pixels, origin top-left):
+  /// the centre unless the four angles say otherwise.
+  [[nodiscard]] Vec2d principal_point() const;
+  /// The full horizontal field of view in degrees (HMDs; 0 for flat panels).
+  [[nodiscard]] double horizontal_fov_deg() const;
   /// Eye-to-image-plane distance measured in pixels (V* D* / W*).
   [[nodiscard]] double eye_distance_px() const;
   /// Pixel density in pixels per millimetre (flat panels only; 0 for HMDs).
@@ -41,13 +75,14 @@ struct Display {
   [[nodiscard]] double sharpness_deg() const;
 
   /// Exact angle in degrees between the rays to `pixel` and to `gaze` (pixel units,
-  /// origin top-left, pixel centres at +0.5).
+  /// origin top-left, pixel centres at +0.5), both from the eye at the
+  /// principal point's normal.
   [[nodiscard]] double eccentricity_deg(Vec2d pixel, Vec2d gaze) const;
   /// Pixels per degree at `pixel`, measured along the direction away from the gaze.
   [[nodiscard]] double pixels_per_degree(Vec2d pixel, Vec2d gaze) const;
   /// Screen distance in pixels from the gaze point that subtends `eccentricity_deg`
   /// (along the ray from the gaze through the display centre's side, exact for a
-  /// gaze at the centre).
+  /// gaze at the principal point).
   [[nodiscard]] double radius_px_at(double eccentricity_deg) const;
 
   /// The same physical display rendered at another resolution (same field of
@@ -57,7 +92,11 @@ struct Display {
   /// Throws foveate::Error naming the field when a value is out of range.
   void validate() const;
 
-  /// Built-in displays: desktop-1080p (the paper's), desktop-27-4k, hmd-quest3.
+  /// The other eye of a stereo display: the four angles mirrored.
+  [[nodiscard]] Display mirrored() const;
+
+  /// Built-in displays: desktop-1080p (the paper's), desktop-27-4k, hmd-quest3,
+  /// and the stereo headsets hmd-quest2 and hmd-pimax-crystal (left eye).
   static const std::vector<Display>& presets();
   /// A preset name or a path to a JSON file.
   static Display load(const std::string& name_or_path);
