@@ -174,7 +174,7 @@ class GuenterScene final : public MeshSceneBase {
     tm.id = 1.0f;
     tm.gloss = 0.05f;
     out.push_back({&terrain_, glm::mat4(1.0f), tm, std::clamp(lod, 0, 2), false});
-    const glm::vec3 eye(pose_.position);
+    const glm::vec3 eye(eye_pose().position);
     const float t = static_cast<float>(frame_.time_s);
     for (const Object& o : objects_) {
       glm::mat4 m = glm::translate(glm::mat4(1.0f), o.centre);

@@ -142,15 +142,39 @@ std::optional<std::uint64_t> MeshSceneBase::image_key() const {
   const double v[] = {pose_.position.x, pose_.position.y,     pose_.position.z,
                       pose_.target.x,   pose_.target.y,       pose_.target.z,
                       pose_.fov_deg,    double(frame_.width), double(frame_.height)};
-  return hash_bytes(1469598103934665603ull, v, sizeof v);
+  const std::uint64_t h = hash_bytes(1469598103934665603ull, v, sizeof v);
+  if (!frame_.eye) return h;
+  const EyeView& e = *frame_.eye;
+  const double w[] = {e.offset_m, e.frustum.left, e.frustum.right, e.frustum.down, e.frustum.up};
+  return hash_bytes(h, w, sizeof w);
 }
 
 double MeshSceneBase::camera_focal_px() const {
+  if (frame_.eye) return frame_.height / (frame_.eye->frustum.up - frame_.eye->frustum.down);
   return 0.5 * frame_.height / std::tan(0.5 * pose_.fov_deg * std::numbers::pi / 180.0);
+}
+
+CameraPose MeshSceneBase::eye_pose() const {
+  if (!frame_.eye || frame_.eye->offset_m == 0.0) return pose_;
+  const glm::dvec3 forward = pose_.target - pose_.position;
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, camera_up(forward)));
+  CameraPose p = pose_;
+  p.position += right * frame_.eye->offset_m;
+  p.target += right * frame_.eye->offset_m;  // parallel eyes, as a headset's views
+  return p;
 }
 
 glm::mat4 MeshSceneBase::view_projection(const View& v) const {
   const double n = std::max(0.01, scene_radius_ * 0.002), f = scene_radius_ * 20.0;
+  if (frame_.eye) {
+    // The eye's off-axis frustum: x in [0, width] spans tangents left..right,
+    // y (origin bottom) down..up.
+    const FrustumTangents& t = frame_.eye->frustum;
+    auto sx = [&](double x) { return n * (t.left + (t.right - t.left) * x / frame_.width); };
+    auto sy = [&](double y) { return n * (t.down + (t.up - t.down) * y / frame_.height); };
+    return glm::mat4(glm::frustum(sx(v.x0), sx(v.x1), sy(v.y0), sy(v.y1), n, f) *
+                     view_matrix(eye_pose()));
+  }
   return glm::mat4(
       projection_for_rect(pose_, frame_.width, frame_.height, v.x0, v.y0, v.x1, v.y1, n, f) *
       view_matrix(pose_));
@@ -214,7 +238,7 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
   p.set_mat4("u_view_proj", glm::value_ptr(view_proj_));
   p.set("u_albedo_tex", 0);
   const double focal = camera_focal_px();
-  const glm::vec3 eye(pose_.position);
+  const glm::vec3 eye(eye_pose().position);
   for (DrawItem& item : items(view, lod)) {
     const GpuMesh& m = *item.mesh;
     const glm::vec3 c = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
@@ -278,7 +302,8 @@ void MeshSceneBase::bind(const gpu::Program& p, const View& v, gpu::Samplers& sa
   const glm::mat4 full = view_projection(View::full(frame_.width, frame_.height));
   const glm::mat4 inv = glm::inverse(full);
   p.set_mat4("u_inv_view_proj", glm::value_ptr(inv));
-  p.set("u_cam_pos", float(pose_.position.x), float(pose_.position.y), float(pose_.position.z));
+  const CameraPose cam = eye_pose();
+  p.set("u_cam_pos", float(cam.position.x), float(cam.position.y), float(cam.position.z));
   p.set("u_time", float(frame_.time_s));
   bind_extra(p);
 }

@@ -108,6 +108,9 @@ class MeshSceneBase : public Scene {
 
   /// Focal length of the full frame in pixels (for screen-space LOD).
   [[nodiscard]] double camera_focal_px() const;
+  /// The camera the frame is rendered from: pose_, or moved to the eye of a
+  /// stereo view (FrameInput::eye) along the camera's right vector.
+  [[nodiscard]] CameraPose eye_pose() const;
   /// Whether a sphere is inside the view's sub-frustum.
   [[nodiscard]] bool visible(const glm::mat4& view_proj, glm::vec3 centre, float radius) const;
 

@@ -54,6 +54,7 @@ FrameInput Renderer::frame_input(int frame) const {
   f.height = options_.height;
   f.mouse_px = options_.mouse_px;
   f.mouse_down = options_.mouse_down;
+  f.eye = options_.eye;
   return f;
 }
 

@@ -20,10 +20,21 @@
 #include <vector>
 
 #include "foveate/core/display.hpp"
+#include "foveate/core/stereo.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
 
 namespace foveate {
+
+/// One view of a stereo pair (a head-mounted display's eye). A scene with a 3D
+/// camera renders from the eye: the camera moved `offset_m` along its right
+/// vector (scene units taken as metres) and an off-axis frustum with the
+/// eye's image-plane tangents in place of the camera's own field of view.
+/// Scenes without a camera (Shadertoy) render the same image for every view.
+struct EyeView {
+  double offset_m = 0.0;
+  FrustumTangents frustum{-1.0, 1.0, -1.0, 1.0};
+};
 
 /// Per-frame inputs, on a fixed clock so that runs are deterministic.
 struct FrameInput {
@@ -34,6 +45,8 @@ struct FrameInput {
   int height = 0;
   Vec2d mouse_px{0.0, 0.0};  ///< pixels, origin top-left (as every position outside GLSL)
   bool mouse_down = false;
+  /// Set when rendering one eye of a stereo pair; empty = the scene's own camera.
+  std::optional<EyeView> eye;
 };
 
 /// A region of the full screen rendered into a target of its own size.

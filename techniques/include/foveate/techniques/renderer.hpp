@@ -6,6 +6,7 @@
 // tests and programs outside the tree all render through it, so the frame
 // loop exists once.
 #include <memory>
+#include <optional>
 
 #include "foveate/core/image.hpp"
 #include "foveate/gpu/pass.hpp"
@@ -21,6 +22,8 @@ struct RendererOptions {
   Vec2d mouse_px{0.0, 0.0};  ///< Shadertoy's mouse, pixels, origin top-left
   bool mouse_down = false;
   bool overlay = false;  ///< draw the technique's layer or region borders
+  /// One eye of a stereo pair (StereoRenderer sets it): every FrameInput carries it.
+  std::optional<EyeView> eye;
 };
 
 class Renderer {
