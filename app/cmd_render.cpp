@@ -1,5 +1,6 @@
 // foveate render / scenes / techniques: render frames of any scene with any
 // technique to PNG, and list what there is.
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -57,20 +58,39 @@ void run_render(const RenderArgs& a) {
     throw CLI::RequiredError("--out, --video or --no-write");
   if (reference > 1 && a.out.empty())
     throw Error("--reference: the reference frames are PNG files; give --out DIR too");
+  if (o.stereo && a.side_by_side) {
+    throw Error(
+        "--side-by-side: not available with --stereo (a stereo frame is already the two eyes "
+        "side by side)");
+  }
+  if (o.stereo && reference > 1) {
+    throw Error(
+        "--reference: the supersampled reference is monocular; not available with --stereo");
+  }
+  const int out_width = o.size.width * (o.stereo ? 2 : 1);
   std::optional<OutputDirLock> out_lock;
   if (!a.out.empty() && !a.no_write) out_lock.emplace(a.out, "--out");
   // Opened before rendering, so that a bad path fails at once.
   std::unique_ptr<VideoWriter> video;
   if (!a.video.empty()) {
     video = with_flag("--video", [&] {
-      return std::make_unique<VideoWriter>(a.video, o.size.width * (a.side_by_side ? 2 : 1),
+      return std::make_unique<VideoWriter>(a.video, out_width * (a.side_by_side ? 2 : 1),
                                            o.size.height, o.fps);
     });
   }
   Session session(o, a.session.gaze);
   Renderer& renderer = session.renderer();
+  StereoRenderer* stereo = session.stereo();
   renderer.set_overlay(a.overlay);
-  auto technique = session.make(a.technique, params);
+  if (stereo) stereo->set_overlay(a.overlay);
+  std::unique_ptr<Technique> technique;
+  std::array<std::unique_ptr<Technique>, 2> eyes;
+  if (stereo) {
+    eyes = session.make_stereo(a.technique, params);
+  } else {
+    technique = session.make(a.technique, params);
+  }
+  std::array<double, 2> eye_shaded{0, 0}, eye_native{0, 0};
   const auto native = a.side_by_side ? session.make("native", params) : nullptr;
   const std::unique_ptr<Reference> supersampled =
       reference > 1 ? session.make_reference(reference) : nullptr;
@@ -85,14 +105,26 @@ void run_render(const RenderArgs& a) {
       native_image = renderer.read_output();
     }
     const std::string frame = "frame " + std::to_string(k) + " (" + a.technique + ")";
-    const FrameStats s =
-        session.watchdog().run(frame, [&] { return renderer.render(*technique, k, gaze); });
+    FrameStats s;
+    if (stereo) {
+      const std::array<GazeState, 2> g = session.eye_gazes(gaze);
+      const std::array<FrameStats, 2> st =
+          session.watchdog().run(frame, [&] { return stereo->render(*eyes[0], *eyes[1], k, g); });
+      for (size_t i = 0; i < 2; ++i) {
+        s.shaded_pixels += st[i].shaded_pixels;
+        s.native_pixels += st[i].native_pixels;
+        eye_shaded[i] += st[i].shaded_pixels;
+        eye_native[i] += st[i].native_pixels;
+      }
+    } else {
+      s = session.watchdog().run(frame, [&] { return renderer.render(*technique, k, gaze); });
+    }
     shaded += s.shaded_pixels;
     native_pixels += s.native_pixels;
     if (a.stats_every > 0 && (k % a.stats_every == 0 || k + 1 == a.frames)) {
       std::cerr << process_stats_line(k) << std::endl;
     }
-    Image image = renderer.read_output();
+    Image image = stereo ? stereo->read_output() : renderer.read_output();
     if (verbose())
       std::fprintf(stderr, "render: frame %d: %s shaded pixels\n", k,
                    format_number(s.shaded_pixels, 0).c_str());
@@ -135,7 +167,7 @@ void run_render(const RenderArgs& a) {
         {"frames", a.frames},
         {"scene", session.scene().info().name},
         {"technique", a.technique},
-        {"size", {o.size.width, o.size.height}},
+        {"size", {out_width, o.size.height}},
         {"out", a.out.empty()
                     ? nlohmann::json(nullptr)
                     : nlohmann::json(std::filesystem::path(a.out).lexically_normal().string())},
@@ -144,11 +176,26 @@ void run_render(const RenderArgs& a) {
         {"native_pixels_per_frame", native_pixels / a.frames},
         {"pixel_ratio", shaded / native_pixels},
         {"gaze_report", session.gaze().report()}};
+    if (stereo) {
+      j["stereo"] = {{"display", session.stereo_display().left.name},
+                     {"eye_size", {o.size.width, o.size.height}},
+                     {"ipd_mm", session.stereo_display().ipd_mm},
+                     {"vergence_m", std::isfinite(o.vergence_m) ? nlohmann::json(o.vergence_m)
+                                                                : nlohmann::json("inf")}};
+      for (Eye e : kEyes) {
+        const size_t i = static_cast<size_t>(e);
+        j["stereo"]["eyes"][eye_name(e)] = {{"shaded_pixels_per_frame", eye_shaded[i] / a.frames},
+                                            {"pixel_ratio", eye_shaded[i] / eye_native[i]}};
+      }
+    }
     std::cout << j.dump(2) << '\n';
     return;
   }
   std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
-            << a.technique << " at " << o.size.width << 'x' << o.size.height
+            << a.technique << " at " << out_width << 'x' << o.size.height
+            << (stereo ? " (two " + std::to_string(o.size.width) + "x" +
+                             std::to_string(o.size.height) + " eyes side by side)"
+                       : std::string())
             << (a.out.empty()
                     ? (a.video.empty() ? std::string(" (not written)") : " to " + a.video)
                     : " to " + (std::filesystem::path(a.out) / "").lexically_normal().string() +
@@ -156,6 +203,10 @@ void run_render(const RenderArgs& a) {
             << "\n";
   std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
             << fmt(100.0 * shaded / native_pixels, 1) << " % of native)\n"
+            << (stereo ? "per eye: left " + fmt(100.0 * eye_shaded[0] / eye_native[0], 1) +
+                             " %, right " + fmt(100.0 * eye_shaded[1] / eye_native[1], 1) +
+                             " % of native\n"
+                       : std::string())
             << session.gaze().report() << "\n";
 }
 
@@ -165,7 +216,7 @@ void register_render(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* sub = app.add_subcommand(
       "render", "Render frames of a scene with a technique to PNG files or a video");
-  add_session_options(sub, a->session, true);
+  add_session_options(sub, a->session, true, kFixedDate, true);
   sub->add_option("--frames", a->frames, "Number of frames")->capture_default_str();
   sub->add_option("--mouse", a->mouse,
                   "Shadertoy iMouse position X,Y (pixels or normalized), button down");

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "foveate/core/parse.hpp"
 #include "foveate/gaze/gaze.hpp"
 
 namespace foveate::app {
@@ -79,7 +80,7 @@ std::map<std::string, double> params_for(const ParamArgs& p, const std::string& 
 }
 
 void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required,
-                         const char* default_date) {
+                         const char* default_date, bool stereo) {
   auto* scene = sub->add_option(
       "--scene", a.scene,
       "Built-in scene name (see 'foveate scenes'), Shadertoy .glsl file or mesh file");
@@ -129,6 +130,15 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required,
                       (std::string_view(default_date) == "now"
                            ? "now"
                            : std::string(default_date) + " (fixed, for reproducible frames)"));
+  if (!stereo) return;
+  sub->add_flag("--stereo", a.stereo,
+                "Render both eyes of a stereo head-mounted display (--display hmd-quest2, "
+                "hmd-pimax-crystal or a JSON file with fov_deg and ipd_mm), side by side, the "
+                "left eye on the left; --size is one eye's, and --gaze the combined gaze (the "
+                "cyclopean eye's, its centre straight ahead)");
+  sub->add_option("--vergence", a.vergence,
+                  "With --stereo: the distance in metres at which both eyes' gaze converges "
+                  "(default inf: parallel, each eye looking the same way)");
 }
 
 SessionOptions to_session_options(const SessionArgs& a, const char* default_date) {
@@ -159,6 +169,19 @@ SessionOptions to_session_options(const SessionArgs& a, const char* default_date
   if (!std::isfinite(a.time)) throw Error("--time: must be finite");
   o.fps = a.fps;
   o.start_time = a.time;
+  o.stereo = a.stereo;
+  if (!a.vergence.empty()) {
+    if (!a.stereo)
+      throw Error("--vergence: only with --stereo (it sets where the two eyes converge)");
+    double v = 0.0;
+    if (a.vergence == "inf") {
+      v = std::numeric_limits<double>::infinity();
+    } else if (!parse_number(a.vergence, v) || !(v > 0.0) || !std::isfinite(v)) {
+      throw Error("--vergence: expected a distance in metres > 0 (or inf), got '" + a.vergence +
+                  "'");
+    }
+    o.vergence_m = v;
+  }
   o.strict_traces = a.strict;
   o.frame_timeout_s = check_frame_timeout(a.frame_timeout);
   return o;
@@ -170,6 +193,10 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   display_ = with_flag("--display", [&] {
                return Display::load(o.display);
              }).resized(o.size.width, o.size.height);
+  if (o.stereo) {
+    stereo_display_ = with_flag("--stereo", [&] { return StereoDisplay::from(display_); });
+    if (o.window) throw Error("--stereo: not available in a window (view); use render or bench");
+  }
   if (o.window) {
     auto w = gpu::create_window(std::max(o.size.width, o.window_size.width),
                                 std::max(o.size.height, o.window_size.height), "foveate");
@@ -185,6 +212,7 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   so.model_memory_limit = o.model_memory_limit;
   so.date = o.date;
   scene_ = load_scene(o.scene, so);
+  if (o.stereo) right_scene_ = load_scene(o.scene, so);
   RendererOptions ro;
   ro.width = o.size.width;
   ro.height = o.size.height;
@@ -192,7 +220,13 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
   ro.start_time_s = o.start_time;
   ro.mouse_px = o.mouse_px;
   ro.mouse_down = o.mouse_down;
-  renderer_ = with_flag("--size", [&] { return std::make_unique<Renderer>(*scene_, ro); });
+  if (o.stereo) {
+    stereo_ = with_flag("--size", [&] {
+      return std::make_unique<StereoRenderer>(*scene_, *right_scene_, stereo_display_, ro);
+    });
+  } else {
+    renderer_ = with_flag("--size", [&] { return std::make_unique<Renderer>(*scene_, ro); });
+  }
   watchdog_ = std::make_unique<FrameWatchdog>(o.frame_timeout_s, scene_->info().name);
   make_tracker();
   if (verbose()) {
@@ -209,7 +243,8 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
 
 void Session::make_tracker() {
   gaze::GazeContext ctx;
-  ctx.display = display_;
+  // Stereo: the combined gaze is a position in the cyclopean view.
+  ctx.display = options_.stereo ? stereo_display_.cyclopean() : display_;
   ctx.strict_traces = options_.strict_traces;
   ctx.warn = [](const std::string& w) {
     std::fprintf(stderr, "foveate: warning: %s\n", w.c_str());
@@ -236,6 +271,24 @@ void Session::set_display(const std::string& display) {
 
 Session::~Session() = default;
 
+std::array<std::unique_ptr<Technique>, 2> Session::make_stereo(
+    const std::string& technique, const ParamArgs& params,
+    std::optional<AcuityModel> acuity) const {
+  if (!stereo_) throw Error("internal: make_stereo on a session without --stereo");
+  const TechniqueInfo& info = technique_info(technique);
+  check_scene(info, scene_->info());
+  std::array<std::unique_ptr<Technique>, 2> out;
+  for (Eye e : kEyes) {
+    TechniqueConfig c;
+    c.display = stereo_display_.eye(e);
+    c.acuity = acuity.value_or(options_.acuity);
+    c.params = params_for(params, technique);
+    out[static_cast<size_t>(e)] =
+        with_flag("--param", [&] { return make_technique(technique, c); });
+  }
+  return out;
+}
+
 std::unique_ptr<Technique> Session::make(const std::string& technique, const ParamArgs& params,
                                          std::optional<AcuityModel> acuity) const {
   const TechniqueInfo& info = technique_info(technique);
@@ -253,6 +306,10 @@ Image Reference::render(const FrameInput& input) {
 }
 
 std::unique_ptr<Reference> Session::make_reference(int factor) const {
+  if (stereo_) {
+    throw Error(
+        "--reference: the supersampled reference is monocular; not available with --stereo");
+  }
   auto r = std::make_unique<Reference>();
   SceneOptions so;
   so.channels = options_.channels;
@@ -267,7 +324,7 @@ std::unique_ptr<Reference> Session::make_reference(int factor) const {
 }
 
 void Session::present() {
-  if (!window_) return;
+  if (!window_ || !renderer_) return;
   const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
   // The output holds sRGB-encoded bytes: copied as they are (no decode on
   // read, no encode on write), whatever the window's framebuffer encoding.

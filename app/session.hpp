@@ -5,6 +5,7 @@
 // registered by each command).
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -14,10 +15,12 @@
 #include "cli_util.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/image.hpp"
+#include "foveate/core/stereo.hpp"
 #include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
 #include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/stereo_renderer.hpp"
 #include "watchdog.hpp"
 
 namespace foveate::app {
@@ -60,6 +63,11 @@ struct SessionOptions {
   /// The window's size when larger than `size` (room for a UI beside the
   /// output); 0 = `size`.
   Size window_size{0, 0};
+  /// Render both eyes of a stereo head-mounted display (--stereo); `size` is
+  /// then one eye's and the output is twice as wide.
+  bool stereo = false;
+  /// The distance the two eyes converge at, metres (--vergence; inf = parallel).
+  double vergence_m = std::numeric_limits<double>::infinity();
 };
 
 /// The options every rendering command has, as typed on the command line.
@@ -80,13 +88,16 @@ struct SessionArgs {
   bool strict = false;
   double frame_timeout = kDefaultFrameTimeoutS;
   std::string date;  ///< --date; empty = the command's default
+  bool stereo = false;
+  std::string vergence;  ///< --vergence; empty = infinity
 };
 /// Registers --scene --size --display --quality --slope --param --gaze
 /// --camera-path --channel --up --model-memory-limit --fps --time --strict --frame-timeout --date
 /// on `sub`. `scene_required` makes --scene mandatory (render). `default_date` is what --date
 /// means when not given ("now" in view; a fixed date elsewhere, for determinism).
+/// `stereo` adds --stereo and --vergence (render and bench).
 void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false,
-                         const char* default_date = kFixedDate);
+                         const char* default_date = kFixedDate, bool stereo = false);
 /// Checks the values and names the flag of any bad one; an empty --date
 /// gives `default_date`.
 SessionOptions to_session_options(const SessionArgs& args, const char* default_date = kFixedDate);
@@ -121,7 +132,20 @@ class Session {
   [[nodiscard]] Scene& scene() { return *scene_; }
   [[nodiscard]] const Display& display() const { return display_; }
   [[nodiscard]] const SessionOptions& options() const { return options_; }
-  [[nodiscard]] Renderer& renderer() { return *renderer_; }
+  /// The frame runner; in stereo the left eye's (its clock is both eyes').
+  [[nodiscard]] Renderer& renderer() { return stereo_ ? stereo_->eye(Eye::Left) : *renderer_; }
+  /// Stereo sessions (--stereo): both eyes, their displays and the
+  /// renderer that puts them side by side; null otherwise.
+  [[nodiscard]] StereoRenderer* stereo() { return stereo_.get(); }
+  [[nodiscard]] const StereoDisplay& stereo_display() const { return stereo_display_; }
+  /// Each eye's gaze for the tracker's combined gaze (stereo sessions).
+  [[nodiscard]] std::array<GazeState, 2> eye_gazes(const GazeState& combined) const {
+    return eye_gaze_states(stereo_display_, combined, options_.vergence_m);
+  }
+  /// One technique per eye, each made for its eye's display (stereo sessions).
+  std::array<std::unique_ptr<Technique>, 2> make_stereo(
+      const std::string& technique, const ParamArgs& params,
+      std::optional<AcuityModel> acuity = std::nullopt) const;
   [[nodiscard]] gaze::GazeTracker& gaze() { return *gaze_; }
   /// Every frame is drawn through it (--frame-timeout).
   [[nodiscard]] FrameWatchdog& watchdog() { return *watchdog_; }
@@ -145,8 +169,11 @@ class Session {
   std::unique_ptr<gpu::Context> context_;
   gpu::Window* window_ = nullptr;
   std::unique_ptr<Scene> scene_;
+  std::unique_ptr<Scene> right_scene_;  ///< stereo: the right eye's own instance
   Display display_;
+  StereoDisplay stereo_display_;
   std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<StereoRenderer> stereo_;
   std::unique_ptr<gaze::GazeTracker> gaze_;
   std::unique_ptr<FrameWatchdog> watchdog_;
   std::string gaze_spec_;
