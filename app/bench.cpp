@@ -70,6 +70,24 @@ void add_passes(std::vector<gpu::PassTime>& sums, const std::vector<gpu::PassTim
   sums.push_back(other);
 }
 
+// The image mirrored left to right: the right eye of a stereo display is the
+// left eye's geometry mirrored, so a mirrored right-eye frame (and gaze) can
+// be judged with the left eye's display, in one series with the left's.
+Image mirrored(const Image& in) {
+  Image out(in.width, in.height);
+  for (int y = 0; y < in.height; ++y) {
+    for (int x = 0; x < in.width; ++x) std::copy_n(in.at(x, y), 4, out.at(in.width - 1 - x, y));
+  }
+  return out;
+}
+
+// One frame of a run: both eyes' images side by side (or the one view) and
+// each eye's image for the metrics.
+struct RunImages {
+  Image out;
+  std::array<Image, 2> eyes;
+};
+
 }  // namespace
 
 Sweep Sweep::parse(const std::string& text) {
@@ -167,6 +185,8 @@ BenchResult run_bench(const BenchOptions& o) {
     }
   }
   out.display = session.display();
+  StereoRenderer* stereo = session.stereo();
+  if (stereo) out.stereo = session.stereo_display();
   out.scene = session.scene().info().name;
   out.environment = capture_environment(invocation().empty() ? o.command_line : invocation());
   out.renderer = out.environment.renderer;
@@ -180,9 +200,13 @@ BenchResult run_bench(const BenchOptions& o) {
     std::string technique;
     double sweep_value = 0;
     AcuityModel acuity;
-    std::unique_ptr<Technique> impl;
+    std::unique_ptr<Technique> impl;   ///< the one view, or the left eye (stereo)
+    std::unique_ptr<Technique> right;  ///< stereo: the right eye's own instance
     TechniqueResult result;
+    /// Against the reference: the one view, or (stereo) both eyes' frames,
+    /// the right eye's mirrored into the left eye's geometry.
     std::unique_ptr<metrics::QualitySeries> series;
+    std::array<std::unique_ptr<metrics::QualitySeries>, 2> eye_series;  ///< stereo
   };
   std::vector<Run> runs;
   auto add_run = [&](const std::string& t, double value, bool swept) {
@@ -196,7 +220,14 @@ BenchResult run_bench(const BenchOptions& o) {
     } else if (swept) {
       params.per_technique[t][o.sweep.param] = value;
     }
-    r.impl = session.make(t, params, r.acuity);
+    if (stereo) {
+      auto eyes = session.make_stereo(t, params, r.acuity);
+      r.impl = std::move(eyes[0]);
+      r.right = std::move(eyes[1]);
+      r.result.eyes.resize(2);
+    } else {
+      r.impl = session.make(t, params, r.acuity);
+    }
     r.result.technique = t;
     r.result.sweep_value = value;
     r.result.parameters = r.impl->parameters();
@@ -204,6 +235,12 @@ BenchResult run_bench(const BenchOptions& o) {
       metrics::QualityOptions qo;
       qo.acuity = r.acuity;
       r.series = std::make_unique<metrics::QualitySeries>(session.display(), qo);
+      if (stereo) {
+        for (Eye e : kEyes) {
+          r.eye_series[static_cast<size_t>(e)] =
+              std::make_unique<metrics::QualitySeries>(stereo->display().eye(e), qo);
+        }
+      }
     }
     runs.push_back(std::move(r));
   };
@@ -235,8 +272,9 @@ BenchResult run_bench(const BenchOptions& o) {
   if (!o.video.empty()) {
     int cols = 0, rows = 0;
     tile_layout(static_cast<int>(shown.size()), cols, rows);
+    const int frame_width = o.session.size.width * (stereo ? 2 : 1);
     video = with_flag("--video", [&] {
-      return std::make_unique<VideoWriter>(o.video, cols * o.session.size.width,
+      return std::make_unique<VideoWriter>(o.video, cols * frame_width,
                                            rows * o.session.size.height, o.session.fps);
     });
   }
@@ -249,6 +287,30 @@ BenchResult run_bench(const BenchOptions& o) {
   Progress progress("bench", "steps", total, o.progress);
   progress.expect("metrics", judged_runs * o.frames);
   gpu::FrameTimer timer;
+  // One frame of a run: the one view, or both eyes (each eye's stats in `eyes`).
+  auto render_run = [&](Run& r, int frame, const GazeState& g,
+                        std::array<FrameStats, 2>* eyes = nullptr) {
+    if (!stereo) return renderer.render(*r.impl, frame, g);
+    const std::array<FrameStats, 2> st =
+        stereo->render(*r.impl, *r.right, frame, session.eye_gazes(g));
+    if (eyes) *eyes = st;
+    FrameStats sum = st[0];
+    sum.shaded_pixels += st[1].shaded_pixels;
+    sum.native_pixels += st[1].native_pixels;
+    for (size_t p = 0; p < sum.parts.size() && p < st[1].parts.size(); ++p)
+      sum.parts[p].pixels += st[1].parts[p].pixels;
+    return sum;
+  };
+  auto read_run = [&] {
+    RunImages im;
+    if (!stereo) {
+      im.out = renderer.read_output();
+      return im;
+    }
+    im.out = stereo->read_output();
+    for (Eye e : kEyes) im.eyes[static_cast<size_t>(e)] = stereo->read_eye(e);
+    return im;
+  };
   std::optional<gpu::PassProfiler> profiler;
   if (o.passes) profiler.emplace();
   // Warm-up: compile shaders, allocate targets, start every cadence.
@@ -257,7 +319,7 @@ BenchResult run_bench(const BenchOptions& o) {
     const GazeState g = gaze.at(t);
     for (Run& r : runs) {
       session.watchdog().run("warm-up frame " + std::to_string(k) + " (" + r.technique + ")",
-                             [&] { renderer.render(*r.impl, k, g); });
+                             [&] { render_run(r, k, g); });
       progress.step("warm-up " + r.technique);
     }
   }
@@ -273,6 +335,7 @@ BenchResult run_bench(const BenchOptions& o) {
     // The image every run is judged against: native, or the supersampled
     // reference (untimed, rendered from a scene of its own).
     Image reference_image;
+    std::array<Image, 2> reference_eyes;  // stereo: native's eyes
     if (reference) {
       reference_image = session.watchdog().run(
           "frame " + std::to_string(frame) + " of the ssaa:" + std::to_string(o.reference) +
@@ -280,17 +343,22 @@ BenchResult run_bench(const BenchOptions& o) {
           [&] { return reference->render(renderer.frame_input(frame)); },
           double(o.reference) * o.reference);
     }
-    std::vector<std::pair<size_t, Image>> images;
+    std::vector<std::pair<size_t, RunImages>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
       Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
       FrameStats s;
+      std::array<FrameStats, 2> eye_stats;
       if (profiler) profiler->begin_frame();
       const double ms =
           session.watchdog().run("frame " + std::to_string(frame) + " (" + r.technique + ")", [&] {
             timer.start();
-            s = renderer.render(*r.impl, frame, g);
+            s = render_run(r, frame, g, &eye_stats);
             return timer.stop();
           });
+      for (size_t e = 0; e < r.result.eyes.size(); ++e) {
+        r.result.eyes[e].shaded_pixels += eye_stats[e].shaded_pixels;
+        r.result.eyes[e].native_pixels += eye_stats[e].native_pixels;
+      }
       r.result.frame_ms.push_back(ms);
       if (profiler) add_passes(r.result.passes, profiler->end_frame(), ms);
       if (std::isfinite(timer.gpu_ms())) r.result.gpu_ms.push_back(timer.gpu_ms());
@@ -302,8 +370,11 @@ BenchResult run_bench(const BenchOptions& o) {
         for (size_t p = 0; p < s.parts.size() && p < r.result.parts.size(); ++p)
           r.result.parts[p].pixels += s.parts[p].pixels;
       if (o.image_metrics || k + 1 == o.frames || video) {
-        Image img = renderer.read_output();
-        if (&r == &runs[0] && !reference) reference_image = img;
+        RunImages img = read_run();
+        if (&r == &runs[0] && !reference) {
+          reference_image = img.out;
+          reference_eyes = img.eyes;
+        }
         images.emplace_back(static_cast<size_t>(&r - &runs[0]), std::move(img));
       }
       progress.step(r.technique + (o.sweep.empty() ? "" : " @" + fmt(r.sweep_value, 4)));
@@ -314,29 +385,57 @@ BenchResult run_bench(const BenchOptions& o) {
       std::vector<const Image*> ptrs;
       for (size_t s = 0; s < shown.size(); ++s) {
         for (const auto& [idx, img] : images) {
-          if (idx == shown[s]) tiles[s] = img;
+          if (idx == shown[s]) tiles[s] = img.out;
         }
-        if (o.side_by_side) mark_gaze(tiles[s], g.gaze_px);
+        if (o.side_by_side && !stereo) mark_gaze(tiles[s], g.gaze_px);
         ptrs.push_back(&tiles[s]);
       }
       video->write(tile(ptrs));
     }
+    const std::array<GazeState, 2> eye_gaze =
+        stereo ? session.eye_gazes(g) : std::array<GazeState, 2>{g, g};
     for (auto& [idx, img] : images) {
       Run& r = runs[idx];
       const bool judged = o.image_metrics && (idx != 0 || reference);
-      if (judged) {
-        r.series->add(reference_image, img, g.gaze_px);
+      if (judged && stereo) {
+        for (size_t e = 0; e < 2; ++e)
+          r.eye_series[e]->add(reference_eyes[e], img.eyes[e], eye_gaze[e].gaze_px);
+        r.series->add(reference_eyes[0], img.eyes[0], eye_gaze[0].gaze_px);
+        const Vec2d mirrored_gaze{o.session.size.width - eye_gaze[1].gaze_px.x,
+                                  eye_gaze[1].gaze_px.y};
+        r.series->add(mirrored(reference_eyes[1]), mirrored(img.eyes[1]), mirrored_gaze);
+        progress.step("metrics " + r.technique, "metrics");
+      } else if (judged) {
+        r.series->add(reference_image, img.out, g.gaze_px);
         progress.step("metrics " + r.technique, "metrics");
       }
       if (k + 1 == o.frames) {
-        if (judged) {
-          r.result.heatmap = metrics::error_heatmap(reference_image, img, 64.0);
+        if (judged && stereo) {
+          std::array<Image, 2> heat, acuity_heat;
+          for (size_t e = 0; e < 2; ++e) {
+            heat[e] = metrics::error_heatmap(reference_eyes[e], img.eyes[e], 64.0);
+            acuity_heat[e] = metrics::acuity_error_heatmap(
+                reference_eyes[e], img.eyes[e], r.eye_series[e]->display(), eye_gaze[e].gaze_px,
+                r.eye_series[e]->options());
+          }
+          r.result.heatmap = tile({&heat[0], &heat[1]});
+          r.result.acuity_heatmap = tile({&acuity_heat[0], &acuity_heat[1]});
+        } else if (judged) {
+          r.result.heatmap = metrics::error_heatmap(reference_image, img.out, 64.0);
           r.result.acuity_heatmap = metrics::acuity_error_heatmap(
-              reference_image, img, r.series->display(), g.gaze_px, r.series->options());
+              reference_image, img.out, r.series->display(), g.gaze_px, r.series->options());
         }
-        r.result.sample = std::move(img);
-        r.result.overlay = r.impl->overlay(g);
-        out.sample_gaze_px = g.gaze_px;
+        r.result.sample = std::move(img.out);
+        r.result.overlay = r.impl->overlay(eye_gaze[0]);
+        if (stereo) {
+          // The right eye's shapes over the right half.
+          for (OverlayShape shape : r.right->overlay(eye_gaze[1])) {
+            shape.x += o.session.size.width;
+            r.result.overlay.push_back(shape);
+          }
+        }
+        out.sample_gaze_px = eye_gaze[0].gaze_px;
+        out.sample_eye_gaze_px = {eye_gaze[0].gaze_px, eye_gaze[1].gaze_px};
       }
     }
     if (k + 1 == o.frames) {
@@ -373,6 +472,14 @@ BenchResult run_bench(const BenchOptions& o) {
     res.pixel_ratio = res.shaded_pixels / res.native_pixels;
     res.bound_share = res.speedup * res.pixel_ratio;
     if (r.series && r.series->frames() > 0) res.metrics = r.series->summary();
+    for (size_t e = 0; e < res.eyes.size(); ++e) {
+      TechniqueResult::Eye& eye = res.eyes[e];
+      eye.shaded_pixels /= o.frames;
+      eye.native_pixels /= o.frames;
+      eye.pixel_ratio = eye.shaded_pixels / eye.native_pixels;
+      if (r.eye_series[e] && r.eye_series[e]->frames() > 0)
+        eye.metrics = r.eye_series[e]->summary();
+    }
     out.results.push_back(std::move(res));
   }
   return out;

@@ -2,6 +2,7 @@
 // The benchmark: the same frames (camera, time, gaze) rendered with each
 // technique in one process, interleaved frame by frame, timed with a steady
 // clock around glFinish, and compared with native for quality.
+#include <array>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
@@ -88,6 +89,15 @@ struct TechniqueResult {
       overlay;  ///< the technique's layers or regions at the last frame's gaze
   Image heatmap;
   Image acuity_heatmap;
+  /// Stereo (--stereo): each eye's pixels and quality (left, right); the
+  /// fields above are then both eyes together (time per stereo frame,
+  /// pixels summed, quality over both eyes' frames) and the images are the
+  /// two eyes side by side.
+  struct Eye {
+    double shaded_pixels = 0, native_pixels = 0, pixel_ratio = 1;
+    std::optional<metrics::QualitySummary> metrics;
+  };
+  std::vector<Eye> eyes;  ///< empty unless stereo
 };
 
 struct BenchResult {
@@ -105,6 +115,9 @@ struct BenchResult {
   std::string video_summary;         ///< one line about the video written (empty = none)
   std::vector<std::string> skipped;  ///< techniques left out of the default list, with the reason
   bool gaze_fallback = false;        ///< the live gaze source never answered (--allow-fallback)
+  /// Stereo runs: both eyes' displays (display above is the left eye's).
+  std::optional<StereoDisplay> stereo;
+  std::array<Vec2d, 2> sample_eye_gaze_px{};  ///< each eye's gaze at the last frame
 };
 
 BenchResult run_bench(const BenchOptions& options);

@@ -58,6 +58,11 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
   o.warmup = a.warmup;
   o.image_metrics = !a.no_metrics;
   o.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
+  if (o.session.stereo && o.reference > 1) {
+    throw Error(
+        "--reference: the supersampled reference is monocular; not available with --stereo "
+        "(each eye is judged against native for that eye)");
+  }
   o.out = a.out;
   o.progress = !quiet() && !a.json;
   o.skip_unfit = !a.techniques_given;
@@ -71,7 +76,7 @@ BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
 }
 
 void add_common(CLI::App* sub, BenchArgs& a) {
-  add_session_options(sub, a.session);
+  add_session_options(sub, a.session, false, kFixedDate, true);
   sub->add_option("--techniques", a.techniques,
                   "Comma-separated techniques (native is always measured as the reference); by "
                   "default every technique the scene can run (lodmask needs meshes)")

@@ -56,6 +56,18 @@ nlohmann::json to_json(const BenchResult& b) {
       j["resolve_share"] = resolve_ms(r) / r.mean_ms;
     }
     if (!b.options.sweep.key.empty()) j["sweep_value"] = r.sweep_value;
+    if (!r.eyes.empty()) {
+      // Stereo: time is per stereo frame and the figures above cover both
+      // eyes; here each eye's own.
+      for (Eye e : kEyes) {
+        const TechniqueResult::Eye& eye = r.eyes[static_cast<size_t>(e)];
+        j["eyes"][eye_name(e)] = {
+            {"shaded_pixels", eye.shaded_pixels},
+            {"native_pixels", eye.native_pixels},
+            {"pixel_ratio", eye.pixel_ratio},
+            {"quality", eye.metrics ? metrics::to_json(*eye.metrics) : nlohmann::json::object()}};
+      }
+    }
     // GPU timer queries only where the renderer reports meaningful ones.
     j["gpu_median_ms"] = nullptr;
     if (!r.gpu_ms.empty()) j["gpu_median_ms"] = quantile(r.gpu_ms, 0.5);
@@ -64,6 +76,19 @@ nlohmann::json to_json(const BenchResult& b) {
   nlohmann::json sweep = nullptr;
   if (!b.options.sweep.key.empty())
     sweep = {{"key", b.options.sweep.key}, {"values", b.options.sweep.values}};
+  nlohmann::json stereo = nullptr;
+  if (b.stereo) {
+    const double v = b.options.session.vergence_m;
+    stereo = {{"ipd_mm", b.stereo->ipd_mm},
+              {"eye_size", {b.options.session.size.width, b.options.session.size.height}},
+              {"output_size", {2 * b.options.session.size.width, b.options.session.size.height}},
+              {"vergence_m", std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf")},
+              {"left", b.stereo->left},
+              {"right", b.stereo->right},
+              {"sample_gaze_px",
+               {{"left", {b.sample_eye_gaze_px[0].x, b.sample_eye_gaze_px[0].y}},
+                {"right", {b.sample_eye_gaze_px[1].x, b.sample_eye_gaze_px[1].y}}}}};
+  }
   return {
       {"schema", "foveate-bench/1"},
       {"command", b.environment.command},
@@ -91,6 +116,7 @@ nlohmann::json to_json(const BenchResult& b) {
       {"warmup", b.warmup},
       {"fps_clock", b.options.session.fps},
       {"sweep", sweep},
+      {"stereo", stereo},
       {"results", results}};
 }
 
@@ -151,6 +177,29 @@ std::string bench_markdown(const BenchResult& b) {
       << fmt(100 * r.bound_share, 0) << " % |";
     for (const QualityColumn& c : kQualityColumns) s << ' ' << quality_cell(r, c) << " |";
     s << '\n';
+  }
+  if (b.stereo) {
+    s << "\nStereo: " << b.options.session.size.width << 'x' << b.options.session.size.height
+      << " per eye, IPD " << fmt(b.stereo->ipd_mm, 1)
+      << " mm. Times above are per stereo frame (both eyes), pixels both eyes' and quality over "
+         "both eyes' frames; per eye:\n\n| technique | eye | shaded px | pixel ratio |";
+    for (const QualityColumn& c : kQualityColumns) s << ' ' << c.title << " |";
+    s << "\n|---|---|---:|---:|";
+    for (size_t i = 0; i < std::size(kQualityColumns); ++i) s << "---:|";
+    s << '\n';
+    for (const TechniqueResult& r : b.results) {
+      for (Eye e : kEyes) {
+        if (r.eyes.size() != 2) continue;
+        const TechniqueResult::Eye& eye = r.eyes[static_cast<size_t>(e)];
+        s << "| " << label(b, r) << " | " << eye_name(e) << " | " << fmt(eye.shaded_pixels, 0)
+          << " | " << fmt(eye.pixel_ratio, 3) << " |";
+        for (const QualityColumn& c : kQualityColumns) {
+          const double v = eye.metrics ? c.get(*eye.metrics) : std::nan("");
+          s << ' ' << (std::isfinite(v) ? fmt(v, c.digits) : std::string("-")) << " |";
+        }
+        s << '\n';
+      }
+    }
   }
   s << passes_markdown(b);
   return s.str();

@@ -326,8 +326,9 @@ std::string report_html(const BenchResult& b) {
     const std::string name = label(b, r);
     std::string where;
     int px = gx < W / 2 ? W - 1 : 0, py = gy < H / 2 ? H - 1 : 0;  // without images: the corner
+    // (Stereo samples hold two eyes side by side: no single display to judge them with.)
     if (!ref.empty() && r.sample.width == ref.width && r.sample.height == ref.height &&
-        b.display.width_px == W && b.display.height_px == H) {
+        r.sample.width == W && b.display.width_px == W && b.display.height_px == H) {
       AcuityModel model = b.options.session.acuity;
       if (b.options.sweep.key == "slope" && r.sweep_value > 0) model.slope = r.sweep_value;
       const metrics::Map err =
