@@ -223,7 +223,8 @@ void register_rates(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "rates", "Write the shading-rate image (variable-rate shading) the acuity model gives");
   sub->add_option("--display", a->display,
-                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3) or JSON file")
+                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, "
+                  "hmd-pimax-crystal) or JSON file")
       ->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");

@@ -80,6 +80,17 @@ void bind_display(py::module_& m) {
       .def_readonly("distance_mm", &Display::distance_mm)
       .def_readonly("fov_h_deg", &Display::fov_h_deg)
       .def_property_readonly("head_mounted", &Display::head_mounted)
+      .def_property_readonly("stereo", &Display::stereo,
+                             "Whether it is one eye of a stereo headset (fov_deg and ipd_mm)")
+      .def_readonly("ipd_mm", &Display::ipd_mm)
+      .def(
+          "principal_point",
+          [](const Display& d) {
+            const Vec2d p = d.principal_point();
+            return py::make_tuple(p.x, p.y);
+          },
+          "Where the eye's optical axis meets the image (x, y) in pixels: the centre unless "
+          "the four per-eye angles say otherwise")
       .def("eye_distance_px", &Display::eye_distance_px)
       .def("pixels_per_mm", &Display::pixels_per_mm)
       .def("long_axis_px", &Display::long_axis_px)
@@ -103,7 +114,8 @@ void bind_display(py::module_& m) {
       .def("resized", &Display::resized, py::arg("width"), py::arg("height"),
            "The same display (field of view) at another resolution")
       .def("to_dict", [](const Display& d) { return as_dict(d); })
-      .def_static("presets", &Display::presets, "desktop-1080p, desktop-27-4k, hmd-quest3")
+      .def_static("presets", &Display::presets,
+                  "desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, hmd-pimax-crystal")
       .def_static("load", &Display::load, py::arg("name_or_path"),
                   "A preset by name or a display JSON file")
       .def_static(

@@ -43,8 +43,25 @@ def test_the_papers_display(fv):
     # The same field of view at another resolution.
     small = d.resized(640, 360)
     assert small.width_px == 640 and small.half_fov_deg() == pytest.approx(d.half_fov_deg())
-    assert [p.name for p in fv.Display.presets()] == ["desktop-1080p", "desktop-27-4k", "hmd-quest3"]
+    assert [p.name for p in fv.Display.presets()] == [
+        "desktop-1080p", "desktop-27-4k", "hmd-quest3", "hmd-quest2", "hmd-pimax-crystal"]
     assert d.to_dict()["width_px"] == 1920
+
+
+def test_asymmetric_eye(fv):
+    # Edges at tangents -1 and 0.6 across 200 px: f = 125 px, the axis 125 px
+    # from the left; up 0.2, down -0.6 over 100 rows: 25 px from the top.
+    d = fv.Display.from_dict({"width_px": 200, "height_px": 100, "ipd_mm": 64, "fov_deg": {
+        "left": -45, "right": math.degrees(math.atan(0.6)),
+        "up": math.degrees(math.atan(0.2)), "down": -math.degrees(math.atan(0.6))}})
+    assert d.stereo and d.ipd_mm == 64
+    assert d.principal_point() == pytest.approx((125.0, 25.0))
+    axis = d.principal_point()
+    assert d.eccentricity_deg((0.0, 25.0), axis) == pytest.approx(45.0)
+    assert d.eccentricity_deg((200.0, 25.0), axis) == pytest.approx(math.degrees(math.atan(0.6)))
+    assert d.to_dict()["fov_deg"]["left"] == -45
+    with pytest.raises(fv.Error, match="ipd_mm"):
+        fv.Display.from_dict({"width_px": 64, "height_px": 64, "fov_h_deg": 90, "ipd_mm": 60})
 
 
 def test_displays_from_dicts_and_errors(fv):
