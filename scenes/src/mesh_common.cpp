@@ -316,9 +316,16 @@ std::optional<std::array<float, 16>> MeshSceneBase::view_projection() const {
 }
 
 std::vector<Vec2d> MeshSceneBase::object_positions() const {
-  const glm::mat4 full = glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, 0, 0,
-                                                       frame_.width, frame_.height, 0.1, 1000.0) *
-                                   view_matrix(pose_));
+  glm::mat4 full = glm::mat4(projection_for_rect(pose_, frame_.width, frame_.height, 0, 0,
+                                                 frame_.width, frame_.height, 0.1, 1000.0) *
+                             view_matrix(pose_));
+  if (frame_.eye) {
+    // A stereo pair: as seen from midway between the eyes (the camera's own
+    // position), the axis at the image centre, with the eye's focal length.
+    const double hx = 0.5 * frame_.width / camera_focal_px() * 0.1;
+    const double hy = 0.5 * frame_.height / camera_focal_px() * 0.1;
+    full = glm::mat4(glm::frustum(-hx, hx, -hy, hy, 0.1, 1000.0) * view_matrix(pose_));
+  }
   std::vector<std::pair<float, Vec2d>> found;
   for (const glm::vec3& c : object_centres()) {
     const glm::vec4 clip = full * glm::vec4(c, 1.0f);

@@ -117,7 +117,9 @@ class Scene {
   virtual void bind(const gpu::Program& program, const View& view, gpu::Samplers& samplers) = 0;
 
   /// Screen positions (pixels, origin top-left) of the scene's objects at the
-  /// current frame, nearest first; empty when the scene has no objects.
+  /// current frame, nearest first; empty when the scene has no objects. For
+  /// an eye of a stereo pair (FrameInput::eye), as seen from midway between
+  /// the eyes with the eye's focal length and the axis at the image centre.
   [[nodiscard]] virtual std::vector<Vec2d> object_positions() const { return {}; }
 
   /// For temporal reverse reprojection: the full frame's view-projection
