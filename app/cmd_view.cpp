@@ -57,7 +57,7 @@ void run_view(const ViewArgs& a) {
   if (!a.script.empty()) script.emplace(read_file(a.script), "--script " + a.script);
   SessionOptions o = to_session_options(a.session, "now");
   o.window = true;
-  o.window_size = {o.size.width + kPanelWidth, std::max(o.size.height, 560)};
+  o.window_size = {o.size.width * (o.stereo ? 2 : 1) + kPanelWidth, std::max(o.size.height, 560)};
   with_flag("--technique", [&] { return technique_info(a.technique); });
   const ParamArgs params = parse_params(a.session.params);
   // Any technique can be switched to: a KEY=VALUE must belong to one of them.
@@ -109,7 +109,16 @@ void run_view(const ViewArgs& a) {
     if (quit) break;
     const bool over_image = in.mouse_inside && in.mouse_x >= 0 && in.mouse_y >= 0 &&
                             in.mouse_x < view.width() && in.mouse_y < view.height();
-    if (over_image && !ui.wants_mouse() && !ui.dragging_divider()) {
+    if (over_image && !ui.wants_mouse() && !ui.dragging_divider() && session.stereo()) {
+      // Over either eye: the combined gaze that puts this eye's gaze (parallel
+      // gaze) under the mouse, as a position in the cyclopean view.
+      const int W = o.size.width, H = o.size.height;
+      const bool right = in.mouse_x >= W;
+      const Vec2d axis =
+          session.stereo_display().eye(right ? Eye::Right : Eye::Left).principal_point();
+      const double x = in.mouse_x - (right ? W : 0);
+      mouse = Vec2d{(0.5 * W + x - axis.x) / W, (0.5 * H + in.mouse_y - axis.y) / H};
+    } else if (over_image && !ui.wants_mouse() && !ui.dragging_divider()) {
       mouse = Vec2d{in.mouse_x / view.width(), in.mouse_y / view.height()};
     } else {
       mouse.reset();
@@ -153,7 +162,7 @@ void register_view(CLI::App& app) {
               "native sampled once a second on the same frame and the speedup; the share of "
               "pixels shaded; what each overlay colour marks; the gaze source and filter.\n\n" +
               viewer::Script::help() + "\n");
-  add_session_options(sub, a->session, false, "now");
+  add_session_options(sub, a->session, false, "now", true);
   sub->get_option("--gaze")->description(
       std::string("Gaze source; default the mouse over the image. ") + gaze::gaze_spec_help());
   sub->add_option("--technique", a->technique, "Technique to start with")->capture_default_str();

@@ -195,7 +195,6 @@ Session::Session(const SessionOptions& o, const std::string& gaze_spec,
              }).resized(o.size.width, o.size.height);
   if (o.stereo) {
     stereo_display_ = with_flag("--stereo", [&] { return StereoDisplay::from(display_); });
-    if (o.window) throw Error("--stereo: not available in a window (view); use render or bench");
   }
   if (o.window) {
     auto w = gpu::create_window(std::max(o.size.width, o.window_size.width),
@@ -261,6 +260,7 @@ void Session::make_tracker() {
 }
 
 void Session::set_display(const std::string& display) {
+  if (stereo_) throw Error("--display: the display of a stereo session is fixed");
   Display d = with_flag("--display", [&] {
                 return Display::load(display);
               }).resized(options_.size.width, options_.size.height);
@@ -324,13 +324,14 @@ std::unique_ptr<Reference> Session::make_reference(int factor) const {
 }
 
 void Session::present() {
-  if (!window_ || !renderer_) return;
+  if (!window_) return;
   const int w = window_->framebuffer_width(), h = window_->framebuffer_height();
   // The output holds sRGB-encoded bytes: copied as they are (no decode on
   // read, no encode on write), whatever the window's framebuffer encoding.
   glDisable(GL_FRAMEBUFFER_SRGB);
-  glBlitNamedFramebuffer(renderer_->output().framebuffer(), 0, 0, 0, options_.size.width,
-                         options_.size.height, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  const gpu::RenderTarget& out = stereo_ ? stereo_->output() : renderer_->output();
+  glBlitNamedFramebuffer(out.framebuffer(), 0, 0, 0, out.width(), out.height(), 0, 0, w, h,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
   window_->swap_buffers();
 }
 

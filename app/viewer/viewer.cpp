@@ -38,16 +38,22 @@ Viewer::Viewer(Session& session, const std::string& technique, const ParamArgs& 
   with_flag("--technique", [&] { return technique_info(technique); });
   params_[technique] = params_for(params, technique);
   technique_ = with_flag("--param", [&] { return build(technique); });
+  right_technique_ = with_flag("--param", [&] { return build_right(technique); });
   native_ = build("native");
+  right_native_ = build_right("native");
 }
 
 Viewer::~Viewer() = default;
 
-std::unique_ptr<Technique> Viewer::build(const std::string& name) const {
+std::unique_ptr<Technique> Viewer::build_right(const std::string& name) const {
+  return session_.options().stereo ? build(name, Eye::Right) : nullptr;
+}
+
+std::unique_ptr<Technique> Viewer::build(const std::string& name, Eye eye) const {
   const TechniqueInfo& info = technique_info(name);
   check_scene(info, session_.scene().info());
   TechniqueConfig c;
-  c.display = session_.display();
+  c.display = session_.options().stereo ? session_.stereo_display().eye(eye) : session_.display();
   c.acuity = acuity_;
   auto it = params_.find(name);
   if (it != params_.end()) c.params = it->second;
@@ -56,6 +62,7 @@ std::unique_ptr<Technique> Viewer::build(const std::string& name) const {
 
 void Viewer::rebuild() {
   technique_ = build(name_);
+  right_technique_ = build_right(name_);
   frames_since_build_ = 0;
 }
 
@@ -66,7 +73,9 @@ void Viewer::set_technique(const std::string& name) {
   const TechniqueInfo& info = technique_info(name);  // names the unknown one
   check_scene(info, session_.scene().info());
   auto t = build(name);
+  auto right = build_right(name);
   technique_ = std::move(t);
+  right_technique_ = std::move(right);
   name_ = name;
   frames_since_build_ = 0;
 }
@@ -128,6 +137,9 @@ void Viewer::set_slope(double m) {
 }
 
 void Viewer::set_display(const std::string& spec) {
+  if (session_.options().stereo) {
+    throw Error("display: the display of a stereo view is fixed (restart with another --display)");
+  }
   const std::string before = session_.options().display;
   session_.set_display(spec);
   try {
@@ -150,7 +162,10 @@ void Viewer::set_divider(double fraction) {
   divider_ = fraction;
 }
 
-void Viewer::set_overlay(bool on) { session_.renderer().set_overlay(on); }
+void Viewer::set_overlay(bool on) {
+  if (StereoRenderer* stereo = session_.stereo()) stereo->set_overlay(on);
+  session_.renderer().set_overlay(on);
+}
 
 std::optional<double> Viewer::speedup() const {
   if (name_ == "native") return 1.0;
@@ -170,14 +185,29 @@ std::vector<LegendEntry> Viewer::legend() const {
   return out;
 }
 
-double Viewer::timed_render(Technique& t, const FrameInput& input, const GazeState& gaze,
-                            bool overlay, FrameStats* stats) {
+double Viewer::timed_render(Technique& t, Technique* right, const FrameInput& input,
+                            const GazeState& gaze, bool overlay, FrameStats* stats) {
   Renderer& r = session_.renderer();
+  StereoRenderer* stereo = session_.stereo();
   const bool was = r.options().overlay;
+  if (stereo) stereo->set_overlay(overlay && was);
   r.set_overlay(overlay && was);
   timer_.start();
-  FrameStats s = r.render(t, input, gaze);
+  FrameStats s;
+  if (stereo && right) {
+    FrameInput in = input;
+    in.eye.reset();  // each eye sets its own
+    const std::array<FrameStats, 2> st = stereo->render(t, *right, in, session_.eye_gazes(gaze));
+    s = st[0];
+    s.shaded_pixels += st[1].shaded_pixels;
+    s.native_pixels += st[1].native_pixels;
+    for (size_t p = 0; p < s.parts.size() && p < st[1].parts.size(); ++p)
+      s.parts[p].pixels += st[1].parts[p].pixels;
+  } else {
+    s = r.render(t, input, gaze);
+  }
   const double ms = timer_.stop();
+  if (stereo) stereo->set_overlay(was);
   r.set_overlay(was);
   if (stats) *stats = std::move(s);
   return ms;
@@ -189,8 +219,10 @@ void Viewer::blit_columns(int x0, int x1) {
   const int fb_h = session_.window() ? session_.window()->framebuffer_height() : H;
   // The output holds sRGB-encoded bytes: copied as they are.
   glDisable(GL_FRAMEBUFFER_SRGB);
-  glBlitNamedFramebuffer(session_.renderer().output().framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H,
-                         x1, fb_h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const gpu::RenderTarget& out =
+      session_.stereo() ? session_.stereo()->output() : session_.renderer().output();
+  glBlitNamedFramebuffer(out.framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H, x1, fb_h,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double wall_s) {
@@ -218,23 +250,23 @@ void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double
   if (native_due) {
     // Native on the same frame, timed alike; its image is not shown.
     next_native_s_ = wall_s + kNativePeriodS;
-    record_native(timed_render(*native_, input, gaze, false, nullptr));
+    record_native(timed_render(*native_, right_native_.get(), input, gaze, false, nullptr));
   }
   const int W = width();
   const int split_px = std::clamp(static_cast<int>(std::lround(divider_ * W)), 0, W);
   if (split_) {
     // Left: native; right: the technique.
-    const double nms = timed_render(*native_, input, gaze, false, nullptr);
+    const double nms = timed_render(*native_, right_native_.get(), input, gaze, false, nullptr);
     record_native(nms);
     blit_columns(0, split_px);
   }
   if (show_native_ && !split_) {
-    const double nms = timed_render(*native_, input, gaze, false, nullptr);
+    const double nms = timed_render(*native_, right_native_.get(), input, gaze, false, nullptr);
     record_native(nms);
     blit_columns(0, W);
   } else {
     FrameStats s;
-    const double ms = timed_render(*technique_, input, gaze, true, &s);
+    const double ms = timed_render(*technique_, right_technique_.get(), input, gaze, true, &s);
     stats_.last = std::move(s);
     stats_.last_ms = ms;
     // The first frames after a (re)build compile shaders and fill history.
@@ -287,6 +319,12 @@ nlohmann::json Viewer::state() const {
                {"y_px", gaze_.gaze_px.y}, {"valid", f.valid},
                {"holding", f.holding},    {"fallback", f.fallback},
                {"saccade", f.in_saccade}, {"latency_ms", gaze_.latency_ms}};
+  if (session_.options().stereo) {
+    // The gaze above is the combined (cyclopean) one; here each eye's.
+    const std::array<GazeState, 2> eyes = session_.eye_gazes(gaze_);
+    j["stereo"] = {{"left_px", {eyes[0].gaze_px.x, eyes[0].gaze_px.y}},
+                   {"right_px", {eyes[1].gaze_px.x, eyes[1].gaze_px.y}}};
+  }
   nlohmann::json legend = nlohmann::json::array();
   for (const LegendEntry& e : this->legend()) {
     char hex[8];

@@ -4,7 +4,8 @@
 // model, the display, the A/B toggle and split screen against native, and the
 // frame loop's measurements (frame time, native sampled periodically, the
 // shaded share). The ImGui panel and the scripted mode (--commands) both drive
-// it through the same calls.
+// it through the same calls. In a stereo session (--stereo) every technique is
+// a pair, one instance per eye, shown side by side.
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -72,7 +73,10 @@ class Viewer {
   [[nodiscard]] std::optional<double> speedup() const;
   [[nodiscard]] const GazeState& gaze() const { return gaze_; }
   [[nodiscard]] std::vector<LegendEntry> legend() const;
-  [[nodiscard]] int width() const { return session_.options().size.width; }
+  /// The image's width: one eye's size twice in stereo.
+  [[nodiscard]] int width() const {
+    return session_.options().size.width * (session_.options().stereo ? 2 : 1);
+  }
   [[nodiscard]] int height() const { return session_.options().size.height; }
   [[nodiscard]] Session& session() { return session_; }
 
@@ -86,9 +90,12 @@ class Viewer {
   void rebuild();
   /// Rebuilds with `next`; restores the previous model when that fails.
   void use_acuity(const AcuityModel& next);
-  std::unique_ptr<Technique> build(const std::string& name) const;
-  double timed_render(Technique& t, const FrameInput& input, const GazeState& gaze, bool overlay,
-                      FrameStats* stats);
+  /// `eye` picks the eye's display in stereo sessions.
+  std::unique_ptr<Technique> build(const std::string& name, Eye eye = Eye::Left) const;
+  /// The right eye's instance (stereo sessions; null otherwise).
+  std::unique_ptr<Technique> build_right(const std::string& name) const;
+  double timed_render(Technique& t, Technique* right, const FrameInput& input,
+                      const GazeState& gaze, bool overlay, FrameStats* stats);
   void blit_columns(int x0, int x1);
 
   Session& session_;
@@ -97,8 +104,10 @@ class Viewer {
   std::string name_;
   std::string quality_ = "A";
   AcuityModel acuity_;
-  std::unique_ptr<Technique> technique_;
+  std::unique_ptr<Technique> technique_;  ///< the one view's, or the left eye's
   std::unique_ptr<Technique> native_;
+  std::unique_ptr<Technique> right_technique_;  ///< stereo: the right eye's own instances
+  std::unique_ptr<Technique> right_native_;
   bool show_native_ = false;
   bool split_ = false;
   double divider_ = 0.5;

@@ -53,6 +53,12 @@ StereoRenderer::~StereoRenderer() = default;
 
 std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& right, int frame,
                                                  const std::array<GazeState, 2>& gaze) {
+  return render(left, right, eyes_[0]->frame_input(frame), gaze);
+}
+
+std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& right,
+                                                 const FrameInput& input,
+                                                 const std::array<GazeState, 2>& gaze) {
   if (&left == &right) {
     throw Error(
         "stereo renderer: each eye needs a technique instance of its own (history, "
@@ -69,7 +75,9 @@ std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& rig
                   ", " + std::to_string(have.y) + " instead of " + std::to_string(want.x) + ", " +
                   std::to_string(want.y) + ")");
     }
-    stats[i] = eyes_[i]->render(t, frame, gaze[i]);
+    FrameInput in = input;
+    in.eye = eyes_[i]->options().eye;
+    stats[i] = eyes_[i]->render(t, in, gaze[i]);
     const gpu::RenderTarget& src = eyes_[i]->output();
     glCopyImageSubData(src.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, output_.color().id(),
                        GL_TEXTURE_2D, 0, static_cast<GLint>(i) * src.width(), 0, 0, src.width(),

@@ -62,6 +62,25 @@ for r in j["results"]:
 PY'
 check "bench Markdown has the per-eye table" 'grep -q "| layered | left |" "$tmp/b/results.md" && grep -q "| layered | right |" "$tmp/b/results.md" && grep -q "per stereo frame" "$tmp/b/results.md"'
 
+# view: both eyes side by side in the window, the combined gaze mapped to each eye.
+if command -v xvfb-run >/dev/null; then
+  xvfb-run -a -s "-screen 0 1280x800x24" "$FOVEATE" view --scene guenter --display hmd-quest2 \
+    --stereo --size 160x120 --technique layered --gaze 0.5,0.5 --vergence 1 \
+    --commands "frames 2; print-state; display desktop-1080p; quit" > "$tmp/view.json" 2> "$tmp/view.err"
+  check "view --stereo shows both eyes and each eye's gaze" 'python3 - "$tmp/view.json" <<PY
+import json, sys
+j = json.loads(open(sys.argv[1]).readline())
+l, r = j["stereo"]["left_px"], j["stereo"]["right_px"]
+# The left eye looks right of its image centre (its axis is right of centre,
+# and it converges inwards at 1 m), the right eye mirrors it.
+assert l[0] > 80 and r[0] < 80 and abs(l[0] + r[0] - 160) < 1e-6, j["stereo"]
+assert j["native_pixels"] == 2 * 160 * 120, j["native_pixels"]
+PY'
+  check "view --stereo refuses a display switch" 'grep -q "display of a stereo view is fixed" "$tmp/view.err"'
+else
+  echo "FAIL: xvfb-run is missing (scripts/setup.sh installs xvfb)"; fail=1
+fi
+
 expect_error() {  # name, exit code, expected text, args...
   local name=$1 code=$2 text=$3; shift 3
   local err rc

@@ -39,6 +39,10 @@ class StereoRenderer {
   /// copies them side by side into the output. Returns each eye's stats.
   std::array<FrameStats, 2> render(Technique& left, Technique& right, int frame,
                                    const std::array<GazeState, 2>& gaze);
+  /// The same with explicit inputs (a live clock): each eye gets `input` with
+  /// its own EyeView.
+  std::array<FrameStats, 2> render(Technique& left, Technique& right, const FrameInput& input,
+                                   const std::array<GazeState, 2>& gaze);
   [[nodiscard]] Renderer& eye(Eye e) { return *eyes_[static_cast<size_t>(e)]; }
   [[nodiscard]] const StereoDisplay& display() const { return display_; }
   /// The side-by-side output, twice the eye's width.
