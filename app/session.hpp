@@ -134,7 +134,7 @@ class Session {
   [[nodiscard]] const SessionOptions& options() const { return options_; }
   /// The frame runner; in stereo the left eye's (its clock is both eyes').
   [[nodiscard]] Renderer& renderer() { return stereo_ ? stereo_->eye(Eye::Left) : *renderer_; }
-  /// Stereo sessions (--stereo): both eyes, their displays and the
+  /// Stereo sessions (--stereo: render, bench, view): both eyes, their displays and the
   /// renderer that puts them side by side; null otherwise.
   [[nodiscard]] StereoRenderer* stereo() { return stereo_.get(); }
   [[nodiscard]] const StereoDisplay& stereo_display() const { return stereo_display_; }
