@@ -60,7 +60,8 @@ py::dict run(const std::string& scene, const std::vector<std::string>& technique
              int frames, int warmup, const std::string& display, const std::string& quality,
              std::optional<double> slope, const py::dict& params, const std::string& gaze,
              const std::string& reference, bool metrics, const std::string& sweep, double fps,
-             const std::string& out, const std::string& video, bool side_by_side, bool images) {
+             const std::string& out, const std::string& video, bool side_by_side, bool images,
+             bool stereo, const std::string& vergence) {
   app::BenchOptions o;
   try {
     app::SessionArgs sa;
@@ -72,6 +73,8 @@ py::dict run(const std::string& scene, const std::vector<std::string>& technique
     sa.params = param_items(params);
     sa.gaze = gaze;
     sa.fps = fps;
+    sa.stereo = stereo;
+    sa.vergence = vergence;
     o.session = app::to_session_options(sa);
     o.techniques = techniques;
     for (const std::string& t : o.techniques)
@@ -128,7 +131,8 @@ void bind_bench(py::module_& m) {
         py::arg("slope") = py::none(), py::arg("params") = py::dict(), py::arg("gaze") = "",
         py::arg("reference") = "native", py::arg("metrics") = true, py::arg("sweep") = "",
         py::arg("fps") = 60.0, py::arg("out") = "", py::arg("video") = "",
-        py::arg("side_by_side") = false, py::arg("images") = false,
+        py::arg("side_by_side") = false, py::arg("images") = false, py::arg("stereo") = false,
+        py::arg("vergence") = "",
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
 entry per technique (median_ms, speedup, speedup_ci95, shaded_pixels, pixel_ratio,
@@ -137,7 +141,9 @@ quality, ...). Arguments as the command's options: size "WxH" or (w, h); params
 "synthetic:7", "trace:FILE"); reference "native" or "ssaa:4"; sweep
 "slope=0.02:0.03:0.005"; out a folder for results.json, .csv, .md, report.html;
 video a file (.mp4) of the frames. images=True adds each technique's last frame
-("image", HxWx3 uint8) and "native_image".)");
+("image", HxWx3 uint8) and "native_image". stereo=True renders both eyes of a
+stereo display (display="hmd-quest2"; size is one eye's; vergence "2" metres or
+"inf"): "stereo" and each result's "eyes" hold the per-eye figures.)");
   m.def(
       "read_results",
       [](const std::string& path) {

@@ -71,3 +71,17 @@ def test_bad_bench_input_raises(fv, tmp_path):
     (tmp_path / "results.json").write_text("{broken")
     with pytest.raises(fv.Error, match="not valid JSON"):
         fv.read_results(str(tmp_path / "results.json"))
+
+
+def test_a_stereo_bench_reports_each_eye(fv):
+    r = tiny(fv, scene="guenter", display="hmd-quest2", size=(48, 48), stereo=True, vergence="2",
+             images=True)
+    s = r["stereo"]
+    assert s["eye_size"] == [48, 48] and s["output_size"] == [96, 48] and s["vergence_m"] == 2
+    layered = r["results"][1]
+    assert layered["image"].shape == (48, 96, 3)  # the two eyes side by side
+    left, right = layered["eyes"]["left"], layered["eyes"]["right"]
+    assert left["shaded_pixels"] + right["shaded_pixels"] == pytest.approx(layered["shaded_pixels"])
+    assert left["quality"]["frames"] == 2 and layered["quality"]["frames"] == 4
+    with pytest.raises(fv.Error, match="not a stereo head-mounted display"):
+        tiny(fv, display="hmd-quest3", stereo=True)
