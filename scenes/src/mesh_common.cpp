@@ -239,11 +239,16 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
   p.set("u_albedo_tex", 0);
   const double focal = camera_focal_px();
   const glm::vec3 eye(eye_pose().position);
+  // A sub-rectangle of the prepass's view culls to its own frustum (the
+  // geometry is still drawn with the prepass's projection).
+  const bool same = view.x0 == last_view_.x0 && view.y0 == last_view_.y0 &&
+                    view.x1 == last_view_.x1 && view.y1 == last_view_.y1;
+  const glm::mat4 cull = same ? view_proj_ : view_projection(view);
   for (DrawItem& item : items(view, lod)) {
     const GpuMesh& m = *item.mesh;
     const glm::vec3 c = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
     const float scale = glm::length(glm::vec3(item.model[0]));
-    if (!visible(view_proj_, c, m.radius * scale)) continue;
+    if (!visible(cull, c, m.radius * scale)) continue;
     int l = item.lod;
     if (item.automatic) {
       // The coarsest LOD whose geometric error projects below one target

@@ -91,6 +91,32 @@ void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
   draw_triangle(program);
 }
 
+const gpu::Program& Kit::over_rects(const std::string& fragment) {
+  const std::string key = "rects|" + fragment;
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  const gpu::Program& p =
+      programs_.emplace(key, compiler_.build("common/rects.vert", fragment)).first->second;
+  pass_names_[p.id()] = pass_name_of(fragment);
+  return p;
+}
+
+void Kit::rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                    const gpu::RenderTarget& target, const gpu::PassState& state,
+                    const SetUniforms& set) {
+  const gpu::ProfileScope timed(pass_name(program));
+  gpu::Samplers samplers;
+  if (set) set(program, samplers);
+  rect_pass_.draw(program, rects, target, state);
+}
+
+void Kit::rect_pass_in_bound(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                             int width, int height, const gpu::PassState& state) {
+  const gpu::ProfileScope timed(pass_name(program));
+  gpu::apply(state);
+  rect_pass_.draw(program, rects, width, height);
+}
+
 void Kit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::apply(state);

@@ -10,6 +10,7 @@
 #include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
 #include "foveate/techniques/technique.hpp"
+#include "rects.hpp"
 
 namespace foveate::tech {
 
@@ -36,6 +37,17 @@ class Kit {
   /// textures `set` asks for.
   void pass(const gpu::Program& program, const gpu::RenderTarget& target,
             const gpu::PassState& state = {}, const SetUniforms& set = {});
+  /// A program of common/rects.vert + `fragment`, cached: passes drawn over
+  /// rectangles only (rect_pass).
+  const gpu::Program& over_rects(const std::string& fragment);
+  /// A pass of an over_rects program into `target` with `state`, covering
+  /// only `rects` (GL pixels of the target).
+  void rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                 const gpu::RenderTarget& target, const gpu::PassState& state = {},
+                 const SetUniforms& set = {});
+  /// The same into whatever framebuffer is bound (of size width x height).
+  void rect_pass_in_bound(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                          int width, int height, const gpu::PassState& state);
   /// A full-screen pass into whatever framebuffer is bound: a scene's
   /// G-buffer between prepass_begin and prepass_end (lodmask's masks).
   void pass_in_bound(const gpu::Program& program, const gpu::PassState& state);
@@ -60,6 +72,7 @@ class Kit {
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
   gpu::Query query_;
+  RectPass rect_pass_;
   std::map<std::string, gpu::Program> programs_;
   std::map<GLuint, std::string> pass_names_;  ///< by program id
 };

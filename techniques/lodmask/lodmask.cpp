@@ -18,6 +18,7 @@
 // moves only with a saccade, when saccadic suppression hides the change. (A
 // band where the two LODs are dithered was the alternative; without temporal
 // accumulation the dither is a visible pattern of its own, and it flickers.)
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -82,21 +83,27 @@ class LodMask final : public Technique {
     // the inner circle, 1 in the ring, 0 outside) before anything is drawn,
     // and each LOD writes only its own pixels: where it has no surface the
     // G-buffer stays cleared and the background shows, as in native.
+    // The masks are drawn over their discs only, and each finer LOD is drawn
+    // for the part of the screen its circle spans (geometry outside it is
+    // culled, and the scissor keeps the rasteriser within it), so no
+    // full-screen pass is paid beyond the coarse LOD's.
     scene.prepass_begin(view);
-    mask(g, r_in, GL_ALWAYS, 2, GL_REPLACE);
-    mask(g, r_out, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1
+    mask(g, r_in, W, H, GL_ALWAYS, 2, GL_REPLACE);
+    mask(g, r_out, W, H, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1
     gpu::PassState draw;
     draw.stencil_func = GL_EQUAL;
     for (int lod = 0; lod < 3; ++lod) {
+      const View part = lod == 2 ? view : bounds(view, g, lod == 0 ? r_in : r_out);
       draw.stencil_ref = 2 - lod;
+      draw.scissor = {int(part.x0), int(part.y0), int(part.x1 - part.x0), int(part.y1 - part.y0)};
       gpu::apply(draw);
-      scene.prepass_draw(view, lod);
+      scene.prepass_draw(part, lod);
     }
     gpu::apply({});
     scene.prepass_end();
-    const double shaded = kit_.shade(
-        scene, view, kMapRect, target,
-        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, {}, true);
+    const double shaded =
+        kit_.shade(scene, view, kMapRect, target,
+                   [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
     // Every pixel is lit (deferred); the parts say how many pixels got their
     // geometry from each LOD: pixel centres inside each stencil circle.
     const double in = pixels_in_disc(g, r_in, W, H), out = pixels_in_disc(g, r_out, W, H);
@@ -125,8 +132,8 @@ class LodMask final : public Technique {
   // Inside the circle, where the stencil test (func, ref) passes, applies
   // `op` to the stencil; nothing else is written. Draws into the G-buffer
   // the prepass bound.
-  void mask(Vec2d g, double radius, GLenum func, int ref, GLenum op) {
-    const gpu::Program& p = kit_.fullscreen("lodmask/mask.frag");
+  void mask(Vec2d g, double radius, int W, int H, GLenum func, int ref, GLenum op) {
+    const gpu::Program& p = kit_.over_rects("lodmask/mask.frag");
     p.set("u_centre", float(g.x), float(g.y));
     p.set("u_radius", float(radius));
     gpu::PassState s;
@@ -135,7 +142,18 @@ class LodMask final : public Technique {
     s.stencil_pass_op = op;
     s.stencil_write = true;
     s.color_off = true;
-    kit_.pass_in_bound(p, s);
+    kit_.rect_pass_in_bound(p, disc_rects(g.x, g.y, radius, W, H), W, H, s);
+  }
+
+  // The part of `full` that the disc of `radius` around `g` (GL pixels)
+  // spans: the view a finer LOD is culled to.
+  static View bounds(const View& full, Vec2d g, double radius) {
+    View v = full;
+    v.x0 = std::clamp(std::floor(g.x - radius) - 1.0, full.x0, full.x1);
+    v.x1 = std::clamp(std::ceil(g.x + radius) + 1.0, full.x0, full.x1);
+    v.y0 = std::clamp(std::floor(g.y - radius) - 1.0, full.y0, full.y1);
+    v.y1 = std::clamp(std::ceil(g.y + radius) + 1.0, full.y0, full.y1);
+    return v;
   }
 
   Display display_;

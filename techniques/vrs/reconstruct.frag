@@ -1,8 +1,9 @@
-// The frame from the rate classes, in linear light (sRGB targets filter
-// decoded values). Each pixel reads its tile's class bilinearly at its own
-// position; a tile next to a finer one fades into that class over one tile,
-// reaching it exactly at their common border, so the finer side (the native
-// fovea included) is untouched and no tile edge shows.
+// The tiles next to a finer class, in linear light (sRGB targets filter
+// decoded values): each pixel reads its tile's class bilinearly at its own
+// position and fades into the finer class over one tile, reaching it exactly
+// at their common border, so the finer side (the native fovea included) is
+// untouched and no tile edge shows. Drawn over those tiles only; every other
+// tile is one bilinear read of its class (reconstruct_copy.frag).
 uniform usampler2D u_classes;  // one texel per tile: index into the rates (GL rows)
 uniform sampler2D u_class0, u_class1, u_class2, u_class3, u_class4, u_class5, u_class6;
 uniform vec2 u_extent[7];  // per class: its target's size in screen pixels (texels x rate)

@@ -4,10 +4,13 @@
 // foveate today. llvmpipe has no VRS, so this is the emulation: every rate
 // class present is shaded into a target of its own reduced resolution (W / rw
 // x H / rh), limited by a stencil mask to its tiles and the coarser tiles
-// next to them (llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
-// nothing), then the frame is put together in linear light: each pixel reads
-// its class bilinearly, and a tile next to a finer one fades into it over one
-// tile, so the 1x1 fovea is native and no tile edge shows. `fixed` takes the
+// next to them, and on mesh scenes its G-buffer is filled only there too.
+// The masks are drawn over those tiles alone (common/rects.hpp) and llvmpipe
+// rejects whole 4x4 blocks before shading, so the other tiles cost nothing.
+// Then the frame is put together in linear light: each pixel reads its class
+// bilinearly, and a tile next to a finer one fades into it over one tile, so
+// the 1x1 fovea is native and no tile edge shows. Every pass is drawn over
+// the tiles that need it, so each output pixel runs one shader once. `fixed` takes the
 // rates from the screen centre instead of the gaze (headsets without eye
 // tracking).
 #include <algorithm>
@@ -28,6 +31,17 @@ constexpr int kClasses = static_cast<int>(kShadingRates.size());
 int class_of(ShadingRate r) {
   return static_cast<int>(std::find(kShadingRates.begin(), kShadingRates.end(), r) -
                           kShadingRates.begin());
+}
+
+// Whether a tile of the 8-neighbourhood of (tx, ty) has class k.
+template <class ClassAt>
+bool touches(int tx, int ty, int k, const ClassAt& class_at, int gx, int gy) {
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (tx + dx >= 0 && tx + dx < gx && ty + dy >= 0 && ty + dy < gy &&
+          class_at(tx + dx, ty + dy) == k)
+        return true;
+  return false;
 }
 
 class Vrs final : public Technique {
@@ -56,6 +70,20 @@ class Vrs final : public Technique {
     return shading_rate_image(d, acuity_, fixed_ ? d.principal_point() : g.gaze_px, o);
   }
 
+  // The part of a class's view that `texels` (of its grid) span.
+  static View bounds(const View& full, const std::vector<PixelRect>& texels, ShadingRate r) {
+    PixelRect box{full.target_width, full.target_height, 0, 0};
+    for (const PixelRect& q : texels)
+      box = {std::min(box[0], q[0]), std::min(box[1], q[1]), std::max(box[2], q[2]),
+             std::max(box[3], q[3])};
+    View v = full;
+    v.x0 = double(box[0] * r.width);
+    v.y0 = double(box[1] * r.height);
+    v.x1 = double(box[2] * r.width);
+    v.y1 = double(box[3] * r.height);
+    return v;
+  }
+
   // Radius (pixels) of the disc around the centre that only 1x1 tiles cover.
   static double native_radius(const ShadingRateImage& m, Vec2d c) {
     double r = 1e9;
@@ -74,6 +102,7 @@ class Vrs final : public Technique {
                     const gpu::RenderTarget& target) override {
     const int W = target.width(), H = target.height();
     const ShadingRateImage m = rates(gaze, W, H);
+    const int gx = m.tiles_x, gy = m.tiles_y;
     std::vector<std::uint8_t> classes(m.rates.size());
     std::array<bool, kClasses> present{};
     for (size_t i = 0; i < m.rates.size(); ++i) {
@@ -81,13 +110,31 @@ class Vrs final : public Technique {
       classes[i] = static_cast<std::uint8_t>(k);
       present[static_cast<size_t>(k)] = true;
     }
-    if (!classes_ || grid_w_ != m.tiles_x || grid_h_ != m.tiles_y) {
-      classes_ = gpu::Texture::create_2d(GL_R8UI, m.tiles_x, m.tiles_y);
-      classes_.set_filter(GL_NEAREST, GL_NEAREST);
-      grid_w_ = m.tiles_x;
-      grid_h_ = m.tiles_y;
+    const auto class_at = [&](int tx, int ty) {
+      return int(classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)]);
+    };
+    // The finest class among a tile's eight neighbours (its own if none is finer).
+    std::vector<std::uint8_t> finest(classes.size());
+    for (int ty = 0; ty < gy; ++ty) {
+      for (int tx = 0; tx < gx; ++tx) {
+        int f = class_at(tx, ty);
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            if (tx + dx >= 0 && tx + dx < gx && ty + dy >= 0 && ty + dy < gy)
+              f = std::min(f, class_at(tx + dx, ty + dy));
+        finest[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] = static_cast<std::uint8_t>(f);
+      }
     }
-    classes_.upload(m.tiles_x, m.tiles_y, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
+    if (!classes_ || grid_w_ != gx || grid_h_ != gy) {
+      classes_ = gpu::Texture::create_2d(GL_R8UI, gx, gy);
+      classes_.set_filter(GL_NEAREST, GL_NEAREST);
+      grid_w_ = gx;
+      grid_h_ = gy;
+    }
+    classes_.upload(gx, gy, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
+    const auto tile_rect = [&](int tx, int ty) -> PixelRect {
+      return {tx * tile_, ty * tile_, std::min(W, (tx + 1) * tile_), std::min(H, (ty + 1) * tile_)};
+    };
 
     FrameStats s;
     s.native_pixels = double(W) * H;
@@ -100,24 +147,37 @@ class Vrs final : public Technique {
     gpu::PassState shade;
     shade.stencil_func = GL_EQUAL;
     shade.stencil_ref = 1;
+    const gpu::Program& mask_program = kit_.over_rects("vrs/mask.frag");
+    const bool meshes = scene.info().has_meshes;
     int first = -1;
     for (int k = 0; k < kClasses; ++k) {
       if (!present[static_cast<size_t>(k)]) continue;
       if (first < 0) first = k;
       const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
       const int tw = (W + r.width - 1) / r.width, th = (H + r.height - 1) / r.height;
+      // The texels the reconstruction may read from this class: over its own
+      // tiles and the coarser tiles that fade into it, each bilinear read
+      // reaching one texel beyond the tile's footprint.
+      std::vector<PixelRect> texels;
+      for (int ty = 0; ty < gy; ++ty) {
+        for (int tx = 0; tx < gx; ++tx) {
+          const int c = class_at(tx, ty);
+          const size_t i = static_cast<size_t>(ty) * size_t(gx) + size_t(tx);
+          if (c != k && !(c > k && finest[i] <= k && touches(tx, ty, k, class_at, gx, gy)))
+            continue;
+          const PixelRect p = tile_rect(tx, ty);
+          texels.push_back({std::max(0, p[0] / r.width - 1), std::max(0, p[1] / r.height - 1),
+                            std::min(tw, (p[2] - 1) / r.width + 2),
+                            std::min(th, (p[3] - 1) / r.height + 2)});
+        }
+      }
+      texels = merge_runs(texels);
       gpu::RenderTarget& t = targets_[static_cast<size_t>(k)];
       t.ensure(tw, th, GL_SRGB8_ALPHA8, true);
       t.color().set_filter(GL_LINEAR, GL_LINEAR);
       t.color().set_wrap(GL_CLAMP_TO_EDGE);
       t.clear(0, 0, 0, 1);
-      kit_.pass(kit_.fullscreen("vrs/mask.frag"), t, mask,
-                [&](const gpu::Program& p, gpu::Samplers& smp) {
-                  smp.bind(p, "u_classes", classes_);
-                  p.set("u_class", k);
-                  p.set("u_rate", float(r.width), float(r.height));
-                  p.set("u_tile", tile_);
-                });
+      kit_.rect_pass(mask_program, texels, t, mask);
       // The class's grid: texel i covers screen pixels [i rw, (i + 1) rw).
       const View view{0,
                       0,
@@ -126,28 +186,71 @@ class Vrs final : public Technique {
                       tw,
                       th,
                       double(std::max(r.width, r.height))};
-      scene.prepass(view);
+      const View box = bounds(view, texels, r);
+      gpu::PassState draw = shade;
+      draw.scissor = {int(box.x0) / r.width, int(box.y0) / r.height, int(box.x1 - box.x0) / r.width,
+                      int(box.y1 - box.y0) / r.height};
+      if (meshes) {
+        // The G-buffer is filled only where this class shades: the same
+        // texels, marked in the G-buffer's stencil before the geometry, and
+        // the geometry is culled and scissored to their bounding box. (The
+        // box is not the view itself: a sub-frustum's projection rounds
+        // differently, and the 1x1 class must rasterise exactly as native.)
+        scene.prepass_begin(view);
+        kit_.rect_pass_in_bound(mask_program, texels, tw, th, mask);
+        gpu::apply(draw);
+        scene.prepass_draw(box, -1);
+        gpu::apply({});
+        scene.prepass_end();
+      } else {
+        scene.prepass(view);
+      }
       const double n = kit_.shade(
           scene, view, kMapRect, t,
-          [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, shade, true);
+          [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, draw, true);
       s.parts.push_back({r.name(), n});
       s.shaded_pixels += n;
     }
-    kit_.pass(kit_.fullscreen("vrs/reconstruct.frag"), target, {},
-              [&](const gpu::Program& p, gpu::Samplers& smp) {
-                smp.bind(p, "u_classes", classes_);
-                for (int k = 0; k < kClasses; ++k) {
-                  const size_t i = static_cast<size_t>(k);
-                  const ShadingRate r = kShadingRates[i];
-                  const gpu::RenderTarget& t = targets_[present[i] ? i : size_t(first)];
-                  const std::string name = "u_class" + std::to_string(k);
-                  smp.bind(p, name.c_str(), t.color());
-                  const std::string e = "u_extent[" + std::to_string(k) + "]";
-                  p.set(e.c_str(), float(((W + r.width - 1) / r.width) * r.width),
-                        float(((H + r.height - 1) / r.height) * r.height));
-                }
-                p.set("u_tile", tile_);
-              });
+    // Put together: a tile with no finer neighbour is one bilinear read of
+    // its class; a tile next to a finer class fades into it.
+    std::array<std::vector<PixelRect>, kClasses> plain;
+    std::vector<PixelRect> fading;
+    for (int ty = 0; ty < gy; ++ty) {
+      for (int tx = 0; tx < gx; ++tx) {
+        const int c = class_at(tx, ty);
+        if (finest[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] < c)
+          fading.push_back(tile_rect(tx, ty));
+        else
+          plain[static_cast<size_t>(c)].push_back(tile_rect(tx, ty));
+      }
+    }
+    const gpu::Program& copy = kit_.over_rects("vrs/reconstruct_copy.frag");
+    for (int k = 0; k < kClasses; ++k) {
+      const size_t i = static_cast<size_t>(k);
+      if (plain[i].empty()) continue;
+      kit_.rect_pass(copy, merge_runs(plain[i]), target, {},
+                     [&](const gpu::Program& p, gpu::Samplers& smp) {
+                       smp.bind(p, "u_src", targets_[i].color());
+                       const ShadingRate r = kShadingRates[i];
+                       p.set("u_extent", float(((W + r.width - 1) / r.width) * r.width),
+                             float(((H + r.height - 1) / r.height) * r.height));
+                     });
+    }
+    kit_.rect_pass(kit_.over_rects("vrs/reconstruct.frag"), merge_runs(fading), target, {},
+                   [&](const gpu::Program& p, gpu::Samplers& smp) {
+                     smp.bind(p, "u_classes", classes_);
+                     for (int k = 0; k < kClasses; ++k) {
+                       const size_t i = static_cast<size_t>(k);
+                       const ShadingRate r = kShadingRates[i];
+                       const gpu::RenderTarget& t = targets_[present[i] ? i : size_t(first)];
+                       const std::string name = "u_class" + std::to_string(k);
+                       smp.bind(p, name.c_str(), t.color());
+                       const std::string e = "u_extent[" + std::to_string(k) + "]";
+                       p.set(e.c_str(), float(((W + r.width - 1) / r.width) * r.width),
+                             float(((H + r.height - 1) / r.height) * r.height));
+                     }
+                     p.set("u_tile", tile_);
+                   });
     return s;
   }
 

@@ -105,7 +105,9 @@ class Scene {
   /// scene's automatic LOD (by distance and view.pixel_scale) when `lod` is
   /// -1 or 0, and at least as coarse as discrete level `lod` (1 about 10 %, 2
   /// about 1 % of the triangles) otherwise, with the depth test it needs and
-  /// the stencil state the caller set; end restores the framebuffer binding
+  /// the stencil state the caller set (a `view` whose rectangle lies within
+  /// begin's culls the geometry to that rectangle, still drawn with begin's
+  /// projection: lodmask's finer LODs); end restores the framebuffer binding
   /// and viewport that begin found. No-ops for screen-space scenes.
   virtual void prepass_begin(const View& view);
   virtual void prepass_draw(const View& view, int lod);

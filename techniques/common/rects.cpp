@@ -1,0 +1,68 @@
+#include "rects.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace foveate::tech {
+
+void RectPass::draw(const gpu::Program& program, const std::vector<PixelRect>& rects, int width,
+                    int height) {
+  if (rects.empty()) return;
+  const auto bytes = static_cast<GLsizeiptr>(rects.size() * sizeof(PixelRect));
+  if (!buffer_ || buffer_.size() < bytes) {
+    // Grows by doubling, so a frame-to-frame change in the count reallocates rarely.
+    buffer_ = gpu::Buffer::create(std::max<GLsizeiptr>(bytes, 2 * buffer_.size()), nullptr,
+                                  GL_DYNAMIC_STORAGE_BIT);
+    vao_ = gpu::VertexArray::create();
+  }
+  buffer_.update(0, bytes, rects.data());
+  program.use();
+  program.set("u_viewport", float(width), float(height));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_.id());
+  glBindVertexArray(vao_.id());
+  glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(rects.size()));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+}
+
+void RectPass::draw(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                    const gpu::RenderTarget& target, const gpu::PassState& state) {
+  target.bind();
+  gpu::apply(state);
+  draw(program, rects, target.width(), target.height());
+}
+
+std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects) {
+  std::vector<PixelRect> out;
+  for (const PixelRect& r : rects) {
+    if (!out.empty()) {
+      PixelRect& last = out.back();
+      if (last[1] == r[1] && last[3] == r[3] && last[2] >= r[0] && last[0] <= r[0]) {
+        last[2] = std::max(last[2], r[2]);
+        continue;
+      }
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
+                                  int band) {
+  std::vector<PixelRect> out;
+  if (radius <= 0.0) return out;
+  const int first = std::max(0, static_cast<int>(std::floor(cy - radius)) / band * band);
+  const int last = std::min(height, static_cast<int>(std::ceil(cy + radius)) + 1);
+  for (int y0 = first; y0 < last; y0 += band) {
+    const int y1 = std::min(height, y0 + band);
+    // The widest chord in the band is at the row centre nearest the disc's.
+    const double dy = std::max(0.0, std::max(y0 + 0.5 - cy, cy - (y1 - 0.5)));
+    if (dy > radius) continue;
+    const double half = std::sqrt(radius * radius - dy * dy);
+    const int x0 = std::max(0, static_cast<int>(std::floor(cx - half - 0.5)));
+    const int x1 = std::min(width, static_cast<int>(std::ceil(cx + half + 0.5)));
+    if (x1 > x0) out.push_back({x0, y0, x1, y1});
+  }
+  return out;
+}
+
+}  // namespace foveate::tech

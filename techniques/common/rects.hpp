@@ -1,0 +1,45 @@
+#pragma once
+// Passes drawn over a list of rectangles instead of the whole screen. On
+// llvmpipe a pass costs in proportion to the pixels it covers, so a pass that
+// only some tiles need (a stencil mask, a reconstruction that differs per
+// tile) is drawn over those tiles alone. The programs are built from
+// common/rects.vert and any fragment shader; the rectangles are one instanced
+// quad each, read from a storage buffer.
+#include <array>
+#include <vector>
+
+#include "foveate/gpu/gl.hpp"
+#include "foveate/gpu/pass.hpp"
+#include "foveate/gpu/shader.hpp"
+
+namespace foveate::tech {
+
+/// A rectangle of pixels [x0, x1) x [y0, y1) in GL coordinates (origin bottom-left).
+using PixelRect = std::array<int, 4>;
+
+class RectPass {
+ public:
+  /// Draws `rects` with `program` into the framebuffer that is bound, whose
+  /// size is `width` x `height`, with the pass state already applied.
+  void draw(const gpu::Program& program, const std::vector<PixelRect>& rects, int width,
+            int height);
+  /// The same into `target` with `state` (binds it and applies the state).
+  void draw(const gpu::Program& program, const std::vector<PixelRect>& rects,
+            const gpu::RenderTarget& target, const gpu::PassState& state);
+
+ private:
+  gpu::Buffer buffer_;
+  gpu::VertexArray vao_;
+};
+
+/// Joins horizontally adjacent rectangles of a row-major tile list that share
+/// their rows (fewer, longer quads; the pixels covered are the same).
+std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects);
+
+/// Rectangles of `band` rows each that together cover every pixel of a
+/// width x height target whose centre lies within `radius` of `centre` (GL
+/// pixels): a disc's area plus a pixel's margin, for masks drawn over a disc.
+std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
+                                  int band = 4);
+
+}  // namespace foveate::tech
