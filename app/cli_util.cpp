@@ -88,7 +88,8 @@ SavingsCheck check_savings(const Display& display, const AcuityModel& acuity) {
     return plan_layers(d, acuity, opt).pixel_ratio();
   };
   c.pixel_bound = bound(display);
-  const Vec2d centre{0.5 * display.width_px, 0.5 * display.height_px};
+  const Vec2d centre =
+      display.principal_point();  // the optical axis (the centre, but on asymmetric HMD eyes)
   c.centre_ppd = display.pixels_per_degree(centre, centre);
   c.nothing_to_save = c.pixel_bound < 1.2;
   if (!c.nothing_to_save) return c;
