@@ -387,7 +387,14 @@ BenchResult run_bench(const BenchOptions& o) {
         for (const auto& [idx, img] : images) {
           if (idx == shown[s]) tiles[s] = img.out;
         }
-        if (o.side_by_side && !stereo) mark_gaze(tiles[s], g.gaze_px);
+        if (o.side_by_side && stereo) {
+          // Each eye's own gaze, in its half.
+          const std::array<GazeState, 2> eg = session.eye_gazes(g);
+          mark_gaze(tiles[s], eg[0].gaze_px);
+          mark_gaze(tiles[s], {eg[1].gaze_px.x + o.session.size.width, eg[1].gaze_px.y});
+        } else if (o.side_by_side) {
+          mark_gaze(tiles[s], g.gaze_px);
+        }
         ptrs.push_back(&tiles[s]);
       }
       video->write(tile(ptrs));
