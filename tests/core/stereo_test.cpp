@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,6 +14,7 @@
 #include <numbers>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/shading_rate.hpp"
 
 namespace foveate {
 namespace {
@@ -140,6 +142,52 @@ TEST(Stereo, CombinedGazeWithVergence) {
   const Display c = s.cyclopean();
   EXPECT_NEAR(c.eye_distance_px(), 125.0, 1e-9);
   EXPECT_NEAR(c.principal_point().x, 100.0, 1e-9);
+}
+
+TEST(Stereo, ShadingRatesFollowEachEyesAxis) {
+  // The right eye's rates for a mirrored gaze are the left eye's mirrored:
+  // the tile rates take their angles from each eye's own principal point.
+  const StereoDisplay s = StereoDisplay::from(Display::load("hmd-quest2").resized(512, 512));
+  const AcuityModel a = AcuityModel::quality("A");
+  const Vec2d gl{300.0, 200.0}, gr{512.0 - 300.0, 200.0};
+  const ShadingRateImage l = shading_rate_image(s.left, a, gl, {});
+  const ShadingRateImage r = shading_rate_image(s.right, a, gr, {});
+  ASSERT_EQ(l.tiles_x, r.tiles_x);
+  int coarse = 0;
+  for (int ty = 0; ty < l.tiles_y; ++ty) {
+    for (int tx = 0; tx < l.tiles_x; ++tx) {
+      const ShadingRate a1 = l.at(tx, ty), b1 = r.at(l.tiles_x - 1 - tx, ty);
+      EXPECT_EQ(a1.width, b1.width) << tx << "," << ty;
+      EXPECT_EQ(a1.height, b1.height) << tx << "," << ty;
+      coarse += a1.pixels() > 1 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(coarse, 0);  // not trivially all 1x1
+  // Gaze on the left eye's axis (off the image centre): angles are symmetric
+  // about the axis, so tiles the same distance left and right of it get the
+  // same rate (taken from the centre they would not: 287 px from the left
+  // edge, the axis is 31 px right of it).
+  const Vec2d axis = s.left.principal_point();
+  ASSERT_GT(axis.x - 256.0, 30.0);
+  int coarse_pairs = 0;
+  for (double d : {40.0, 80.0, 120.0, 160.0, 200.0}) {
+    const std::array<int, 4> lt{int(axis.x - d) - 8, int(axis.y) - 8, int(axis.x - d) + 8,
+                                int(axis.y) + 8};
+    const std::array<int, 4> rt{int(axis.x + d) - 8, int(axis.y) - 8, int(axis.x + d) + 8,
+                                int(axis.y) + 8};
+    const ShadingRate rl = tile_shading_rate(s.left, a, axis, lt, {});
+    const ShadingRate rr = tile_shading_rate(s.left, a, axis, rt, {});
+    EXPECT_EQ(rl.pixels(), rr.pixels())
+        << "at " << d << " px: " << rl.name() << " vs " << rr.name();
+    coarse_pairs += rl.pixels() > 1 ? 1 : 0;
+  }
+  EXPECT_GE(coarse_pairs, 2);
+  // The same gaze pixel in both eyes is not the same direction: the maps differ.
+  const ShadingRateImage same = shading_rate_image(s.right, a, gl, {});
+  int differ = 0;
+  for (size_t i = 0; i < l.rates.size(); ++i)
+    differ += l.rates[i].pixels() != same.rates[i].pixels();
+  EXPECT_GT(differ, 0);
 }
 
 void expect_error(const std::function<void()>& fn, const std::string& part) {

@@ -235,6 +235,25 @@ TEST_F(Stereo, PerEyeHistoryNeverMixes) {
   }
 }
 
+TEST_F(Stereo, FixedFoveationCentresOnEachEyesLens) {
+  // vrs without eye tracking (fixed) takes its rates from the lens centre:
+  // each eye's principal point, mirrored between the eyes, not the image centre.
+  for (Eye e : kEyes) {
+    TechniqueConfig c;
+    c.display = display.eye(e);
+    c.acuity = AcuityModel::quality("A");
+    c.params = {{"fixed", 1.0}};
+    auto t = make_technique("vrs", c);
+    GazeState g;
+    g.gaze_px = {10.0, 10.0};  // ignored when fixed
+    const std::vector<OverlayShape> shapes = t->overlay(g);
+    ASSERT_FALSE(shapes.empty());
+    EXPECT_DOUBLE_EQ(shapes[0].x, display.eye(e).principal_point().x) << eye_name(e);
+    EXPECT_DOUBLE_EQ(shapes[0].y, display.eye(e).principal_point().y) << eye_name(e);
+  }
+  EXPECT_GT(display.left.principal_point().x, kEye / 2.0 + 5.0);
+}
+
 TEST_F(Stereo, ShadertoyScenesRenderTheSameImagePerEye) {
   auto left = load_scene("detail"), right = load_scene("detail");
   StereoRenderer r(*left, *right, display, options());
