@@ -50,6 +50,7 @@ class Vrs final : public Technique {
       : display_(c.display),
         acuity_(c.acuity),
         tile_(v.integer("tile")),
+        min_class_(v.real("min_class")),
         fixed_(v.boolean("fixed")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
@@ -68,6 +69,35 @@ class Vrs final : public Technique {
       o.fovea_scale = std::max(1.0, g.fovea_scale);
     }
     return shading_rate_image(d, acuity_, fixed_ ? d.principal_point() : g.gaze_px, o);
+  }
+
+  // Every rate class costs the emulation passes of its own (on mesh scenes
+  // the geometry once more), so a class with fewer than min_class of the
+  // tiles is shaded at the coarsest class that is as fine in both axes and
+  // large enough (1x1 at worst): finer than the model asks, never coarser.
+  void merge_small_classes(std::vector<std::uint8_t>& classes,
+                           std::array<size_t, kClasses>& count) const {
+    const auto least = static_cast<size_t>(std::ceil(min_class_ * double(classes.size())));
+    std::array<int, kClasses> into{};
+    for (int k = 0; k < kClasses; ++k) into[size_t(k)] = k;
+    for (int k = kClasses - 1; k > 0; --k) {
+      const size_t n = count[size_t(k)];
+      if (n == 0 || n >= least) continue;
+      const ShadingRate r = kShadingRates[size_t(k)];
+      int best = 0;
+      for (int j = 1; j < kClasses; ++j) {
+        const ShadingRate c = kShadingRates[size_t(j)];
+        if (j == k || count[size_t(j)] < least || c.width > r.width || c.height > r.height)
+          continue;
+        if (c.width * c.height >
+            kShadingRates[size_t(best)].width * kShadingRates[size_t(best)].height)
+          best = j;
+      }
+      into[size_t(k)] = best;
+      count[size_t(best)] += n;
+      count[size_t(k)] = 0;
+    }
+    for (std::uint8_t& c : classes) c = static_cast<std::uint8_t>(into[c]);
   }
 
   // The part of a class's view that `texels` (of its grid) span.
@@ -104,12 +134,15 @@ class Vrs final : public Technique {
     const ShadingRateImage m = rates(gaze, W, H);
     const int gx = m.tiles_x, gy = m.tiles_y;
     std::vector<std::uint8_t> classes(m.rates.size());
-    std::array<bool, kClasses> present{};
+    std::array<size_t, kClasses> count{};
     for (size_t i = 0; i < m.rates.size(); ++i) {
       const int k = class_of(m.rates[i]);
       classes[i] = static_cast<std::uint8_t>(k);
-      present[static_cast<size_t>(k)] = true;
+      ++count[static_cast<size_t>(k)];
     }
+    merge_small_classes(classes, count);
+    std::array<bool, kClasses> present{};
+    for (int k = 0; k < kClasses; ++k) present[size_t(k)] = count[size_t(k)] > 0;
     const auto class_at = [&](int tx, int ty) {
       return int(classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)]);
     };
@@ -277,6 +310,7 @@ class Vrs final : public Technique {
   Display display_;
   AcuityModel acuity_;
   int tile_;
+  double min_class_;
   bool fixed_;
   Kit kit_;
   gpu::Texture classes_;
@@ -299,6 +333,12 @@ TechniqueInfo vrs_info() {
             "rates from the lens centre (the principal point), not the gaze (no eye tracking)", "",
             ParamType::Boolean, 0, 1, 0),
   };
+  t.params.push_back(param(
+      "min_class",
+      "a rate class with fewer than this fraction of the tiles is shaded at a finer class "
+      "present (each class costs the emulation a pass, and on mesh scenes the geometry, of its "
+      "own; 0 = every class as the model gives it)",
+      "", ParamType::Real, 0.0, 0.5, 0.02));
   t.make = construct<Vrs>();
   return t;
 }

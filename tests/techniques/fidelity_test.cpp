@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -351,6 +352,41 @@ TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
       EXPECT_GT(s.shaded_pixels, 0.08 * W * H) << name;
     }
   }
+}
+
+TEST_F(Fidelity, VrsShadesSmallRateClassesAtAFinerRate) {
+  // Every rate class costs the emulation passes of its own, so classes with
+  // fewer than min_class of the tiles are shaded at a finer class present:
+  // at 960x540 the model's 1x2, 2x1, 2x4 and 4x2 rings are each under 2 % of
+  // the tiles and go, the 1x1 fovea and the big classes stay, and their tiles
+  // go to a finer class (1x1 and 2x2 shade more, 4x4 the same).
+  const int W = 960, H = 540;
+  auto scene = load_scene("cheap");
+  const Vec2d gaze{480, 270};
+  const auto parts = [](const FrameStats& s) {
+    std::map<std::string, double> m;
+    for (const auto& [name, n] : s.parts) m[name] = n;
+    return m;
+  };
+  FrameStats all, merged;
+  auto every = make_technique("vrs", config(W, H, {{"min_class", 0.0}}));
+  run(*every, *scene, gaze, 0, &all);
+  auto t = make_technique("vrs", config(W, H));
+  const Image img = run(*t, *scene, gaze, 0, &merged);
+  const auto a = parts(all), b = parts(merged);
+  for (const char* small : {"1x2", "2x1", "2x4", "4x2"}) {
+    EXPECT_EQ(a.count(small), 1u) << small;
+    EXPECT_EQ(b.count(small), 0u) << small;
+  }
+  for (const char* kept : {"1x1", "2x2", "4x4"}) EXPECT_EQ(b.count(kept), 1u) << kept;
+  EXPECT_EQ(a.at("4x4"), b.at("4x4"));  // nothing is merged into a coarser class
+  EXPECT_GT(b.at("1x1"), a.at("1x1"));
+  EXPECT_GT(b.at("2x2"), a.at("2x2"));
+  // (Fewer classes also means fewer margins shaded beside them: the total
+  // may fall.)
+  EXPECT_LT(merged.shaded_pixels, 1.05 * all.shaded_pixels);
+  const Image ref = native(*scene, W, H);
+  EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea_px(*t, gaze))));
 }
 
 TEST_F(Fidelity, VrsShowsNoTileStructure) {
