@@ -62,15 +62,15 @@ std::string report_html(const BenchResult& b) {
   if (b.gaze_fallback)
     h << "<p class=warn>The live gaze source never answered: every frame used the fallback gaze "
          "(--allow-fallback).</p>\n";
-  h << "<table id=\"results\"><tr><th>technique</th><th>median ms</th><th>p90 "
+  h << "<table id=\"results\"><tr><th>technique</th><th>mean ms</th><th>median ms</th><th>p90 "
        "ms</th><th>speedup</th><th>95 % CI</th>"
        "<th>shaded px</th><th>pixel ratio</th><th>share of bound</th>";
   for (const QualityColumn& c : kQualityColumns) h << "<th>" << c.title << "</th>";
   h << "</tr>\n";
   for (const TechniqueResult& r : b.results) {
-    h << "<tr><td>" << label(b, r) << "</td><td>" << fmt(r.median_ms, 2) << "</td><td>"
-      << fmt(r.p90_ms, 2) << "</td><td>" << fmt(r.speedup, 2) << "x</td><td>"
-      << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2) << "</td><td>"
+    h << "<tr><td>" << label(b, r) << "</td><td>" << fmt(r.mean_ms, 2) << "</td><td>"
+      << fmt(r.median_ms, 2) << "</td><td>" << fmt(r.p90_ms, 2) << "</td><td>" << fmt(r.speedup, 2)
+      << "x</td><td>" << fmt(r.speedup_lo, 2) << "-" << fmt(r.speedup_hi, 2) << "</td><td>"
       << fmt(r.shaded_pixels, 0) << "</td><td>" << fmt(r.pixel_ratio, 3) << "</td><td>"
       << fmt(100 * r.bound_share, 0) << " %</td>";
     for (const QualityColumn& c : kQualityColumns) h << "<td>" << quality_cell(r, c) << "</td>";

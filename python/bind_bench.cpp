@@ -135,7 +135,7 @@ void bind_bench(py::module_& m) {
         py::arg("vergence") = "",
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
-entry per technique (median_ms, speedup, speedup_ci95, shaded_pixels, pixel_ratio,
+entry per technique (mean_ms, median_ms, speedup (mean over mean), speedup_ci95, shaded_pixels, pixel_ratio,
 quality, ...). Arguments as the command's options: size "WxH" or (w, h); params
 {"layers": 3} or {"layered.layers": 3}; gaze a --gaze spec ("0.3,0.4",
 "synthetic:7", "trace:FILE"); reference "native" or "ssaa:4"; sweep

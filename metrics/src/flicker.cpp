@@ -27,25 +27,31 @@ FlickerTracker::FlickerTracker(Display display, double min_ecc_deg,
 }
 
 void FlickerTracker::reset() {
-  prev_ref_ = {};
-  prev_test_ = {};
+  prev_.clear();
   periphery_ = {};
   std::fill(bands_.begin(), bands_.end(), Sums{});
   pairs_ = 0;
 }
 
-void FlickerTracker::add(const Image& ref, const Image& test, Vec2d gaze_px) {
+void FlickerTracker::add(const Image& ref, const Image& test, Vec2d gaze_px, int stream) {
   detail::check_same_size(ref, test, "flicker");
+  if (stream < 0 || stream > 15) throw Error("flicker: stream must be 0..15");
+  if (prev_.size() <= static_cast<size_t>(stream)) prev_.resize(static_cast<size_t>(stream) + 1);
+  Map& prev_ref = prev_[static_cast<size_t>(stream)].first;
+  Map& prev_test = prev_[static_cast<size_t>(stream)].second;
   if (display_.width_px != ref.width || display_.height_px != ref.height) {
     display_ = display_.resized(ref.width, ref.height);
   }
   Map r = luminance_codes(ref);
   Map t = luminance_codes(test);
-  if (prev_ref_.width == r.width && prev_ref_.height == r.height) {
+  if (prev_ref.width == r.width && prev_ref.height == r.height) {
     // Compare cosines instead of angles: e > a  <=>  cos e < cos a, with
     // cos e = a.b / (|a| |b|) for the rays a (pixel) and b (gaze) of Display.
     const double f = display_.eye_distance_px();
-    const double cx = 0.5 * r.width, cy = 0.5 * r.height;
+    // Rays from the eye on the principal point's normal (the image centre
+    // unless a head-mounted eye's four angles put its axis elsewhere).
+    const Vec2d axis = display_.principal_point();
+    const double cx = axis.x, cy = axis.y;
     const double bx = gaze_px.x - cx, by = gaze_px.y - cy;
     const double bn = std::sqrt(bx * bx + by * by + f * f);
     const double deg = std::numbers::pi / 180.0;
@@ -65,8 +71,8 @@ void FlickerTracker::add(const Image& ref, const Image& test, Vec2d gaze_px) {
         const double c = std::min(
             1.0, (ax * bx + ay * by + f * f) / (std::sqrt(ax * ax + ay * ay + f * f) * bn));
         const size_t i = static_cast<size_t>(y) * r.width + x;
-        const double dr = double(r.values[i]) - prev_ref_.values[i];
-        const double dt = double(t.values[i]) - prev_test_.values[i];
+        const double dr = double(r.values[i]) - prev_ref.values[i];
+        const double dt = double(t.values[i]) - prev_test.values[i];
         const double ar = std::fabs(dr), at = std::fabs(dt), ae = std::fabs(dt - dr);
         if (c < cmin) {
           per.ref += ar, per.test += at, per.excess += ae, per.count += 1;
@@ -92,8 +98,8 @@ void FlickerTracker::add(const Image& ref, const Image& test, Vec2d gaze_px) {
     for (size_t k = 0; k < band.size(); ++k) accumulate(bands_[k], band[k]);
     ++pairs_;
   }
-  prev_ref_ = std::move(r);
-  prev_test_ = std::move(t);
+  prev_ref = std::move(r);
+  prev_test = std::move(t);
 }
 
 namespace {

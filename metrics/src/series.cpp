@@ -122,9 +122,9 @@ QualitySeries::QualitySeries(Display display, QualityOptions options, double fli
   detail::check_options(options_);
 }
 
-void QualitySeries::add(const Image& reference, const Image& test, Vec2d gaze_px) {
+void QualitySeries::add(const Image& reference, const Image& test, Vec2d gaze_px, int stream) {
   QualityReport r = compare(reference, test, display_, gaze_px, options_);
-  flicker_.add(reference, test, gaze_px);
+  flicker_.add(reference, test, gaze_px, stream);
   reports_.push_back(std::move(r));
 }
 

@@ -541,6 +541,28 @@ TEST(Flicker, StaticNativeAndTwinklingPeriphery) {
   EXPECT_EQ(still.ratio(), 1.0);
 }
 
+TEST(Flicker, StreamsOfAStereoPairArePooledButComparedWithinEachStream) {
+  // Two still views (a stereo pair's eyes) that differ from each other, fed
+  // alternately: compared within each stream they never change; compared
+  // frame after frame (one stream) the tracker would see the difference
+  // between the eyes as flicker.
+  const Display d = small_desktop(320, 180);
+  const Image left = grey_noise(320, 180, 0, 255, 31), right = grey_noise(320, 180, 0, 255, 32);
+  const Image left_test = grey_noise(320, 180, 0, 255, 33);
+  FlickerTracker pooled(d, 10.0), mixed(d, 10.0);
+  for (int f = 0; f < 3; ++f) {
+    pooled.add(left, left_test, {160, 90}, 0);
+    pooled.add(right, right, {160, 90}, 1);
+    mixed.add(left, left_test, {160, 90});
+    mixed.add(right, right, {160, 90});
+  }
+  EXPECT_EQ(pooled.frame_pairs(), 4);  // two pairs per stream
+  EXPECT_EQ(pooled.test_change(), 0.0);
+  EXPECT_EQ(pooled.ratio(), 1.0);
+  EXPECT_GT(mixed.test_change(), 50.0);
+  EXPECT_THROW(pooled.add(left, left, {160, 90}, -1), Error);
+}
+
 // ---- Report, JSON, pictures, errors ----------------------------------------------
 
 TEST(Report, JsonConventions) {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json_fwd.hpp>
+#include <utility>
 #include <vector>
 
 #include "foveate/core/acuity.hpp"
@@ -228,7 +229,9 @@ class FlickerTracker {
   /// of view). `band_edges_deg`: lower edges of the bands, ascending.
   explicit FlickerTracker(Display display = {}, double min_ecc_deg = 10.0,
                           std::vector<double> band_edges_deg = {0, 5, 10, 20});
-  void add(const Image& ref, const Image& test, Vec2d gaze_px);
+  /// `stream`: frames of several views (a stereo pair's eyes) pooled in one
+  /// tracker: each frame is compared with the last frame of its own stream.
+  void add(const Image& ref, const Image& test, Vec2d gaze_px, int stream = 0);
   /// Beyond min_ecc_deg: test change / reference change over all frame pairs.
   /// NaN before two frames; 1 when neither changed; +inf when only the test changed.
   [[nodiscard]] double ratio() const;
@@ -250,7 +253,7 @@ class FlickerTracker {
   Display display_;
   double min_ecc_deg_;
   std::vector<double> edges_;
-  Map prev_ref_, prev_test_;
+  std::vector<std::pair<Map, Map>> prev_;  ///< per stream: the last reference and test frames
   Sums periphery_;
   std::vector<Sums> bands_;
   int pairs_ = 0;
@@ -293,8 +296,11 @@ class QualitySeries {
   explicit QualitySeries(Display display, QualityOptions options = {},
                          double flicker_min_ecc_deg = 10.0);
   /// One frame: the reference image and the test image, rendered with the same
-  /// inputs, and the gaze in pixels. Throws like compare().
-  void add(const Image& reference, const Image& test, Vec2d gaze_px);
+  /// inputs, and the gaze in pixels. Throws like compare(). Frames of
+  /// several views (a stereo pair's eyes, the right one mirrored into the
+  /// left's geometry) are pooled in one series with a `stream` each: the
+  /// temporal figures compare each frame with the last of its own stream.
+  void add(const Image& reference, const Image& test, Vec2d gaze_px, int stream = 0);
   [[nodiscard]] QualitySummary summary() const;
   /// The per-frame reports, in the order added.
   [[nodiscard]] const std::vector<QualityReport>& reports() const { return reports_; }
