@@ -209,7 +209,10 @@ class Vrs final : public Technique {
       t.ensure(tw, th, GL_SRGB8_ALPHA8, true);
       t.color().set_filter(GL_LINEAR, GL_LINEAR);
       t.color().set_wrap(GL_CLAMP_TO_EDGE);
-      t.clear(0, 0, 0, 1);
+      // Only the stencil needs clearing: the reconstruction reads no texel
+      // that this frame's mask leaves unshaded.
+      gpu::open_write_masks();
+      glClearNamedFramebufferfi(t.framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
       kit_.rect_pass(mask_program, texels, t, mask);
       // The class's grid: texel i covers screen pixels [i rw, (i + 1) rw).
       const View view{0,
