@@ -63,8 +63,10 @@ PY'
 check "bench Markdown has the per-eye table" 'grep -q "| layered | left |" "$tmp/b/results.md" && grep -q "| layered | right |" "$tmp/b/results.md" && grep -q "per stereo frame" "$tmp/b/results.md"'
 
 # view: both eyes side by side in the window, the combined gaze mapped to each eye.
-if command -v xvfb-run >/dev/null; then
-  xvfb-run -a -s "-screen 0 1280x800x24" "$FOVEATE" view --scene guenter --display hmd-quest2 \
+if command -v Xvfb >/dev/null; then
+  source "$(dirname "$0")/xvfb_server.sh"
+  start_xvfb
+  "$FOVEATE" view --scene guenter --display hmd-quest2 \
     --stereo --size 160x120 --technique layered --gaze 0.5,0.5 --vergence 1 \
     --commands "frames 2; print-state; display desktop-1080p; quit" > "$tmp/view.json" 2> "$tmp/view.err"
   check "view --stereo shows both eyes and each eye's gaze" 'python3 - "$tmp/view.json" <<PY
@@ -78,7 +80,7 @@ assert j["native_pixels"] == 2 * 160 * 120, j["native_pixels"]
 PY'
   check "view --stereo refuses a display switch" 'grep -q "display of a stereo view is fixed" "$tmp/view.err"'
 else
-  echo "FAIL: xvfb-run is missing (scripts/setup.sh installs xvfb)"; fail=1
+  echo "FAIL: Xvfb is missing (scripts/setup.sh installs xvfb)"; fail=1
 fi
 
 expect_error() {  # name, exit code, expected text, args...

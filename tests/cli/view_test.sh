@@ -4,9 +4,10 @@
 # it prints and the screenshots it takes are checked.
 set -u
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-if ! command -v xvfb-run >/dev/null; then echo "FAIL: xvfb-run is missing (scripts/setup.sh installs xvfb)"; exit 1; fi
+source "$(dirname "$0")/xvfb_server.sh"
+start_xvfb
 fail=0
-xvfb() { xvfb-run -a -s "-screen 0 1280x800x24" "$@"; }
+xvfb() { "$@"; }  # every command runs on the script's one Xvfb server
 check() {  # check NAME COMMAND...
   local name=$1; shift
   if out=$("$@" 2>&1); then echo "ok: $name"; else echo "FAIL: $name: $out"; fail=1; fi
@@ -179,6 +180,6 @@ if [[ $rc -eq 0 && -s "$tmp/last.png" ]]; then echo "ok: --screenshot on exit"; 
 err=$(DISPLAY= WAYLAND_DISPLAY= "$FOVEATE" view --scene cheap --frames 1 2>&1); rc=$?
 if [[ $rc -ne 0 && "$err" == *"window"* ]]; then echo "ok: no display gives a clear error"; else echo "FAIL: no display (exit $rc): $err"; fail=1; fi
 # view refuses what render refuses: lodmask on a scene without meshes.
-err=$(xvfb-run -a -s "-screen 0 1024x768x24" "$FOVEATE" view --scene cheap --size 64x36 --technique lodmask --frames 1 2>&1); rc=$?
+err=$(xvfb "$FOVEATE" view --scene cheap --size 64x36 --technique lodmask --frames 1 2>&1); rc=$?
 if [[ $rc -eq 1 && "$err" == *"technique lodmask needs a scene with mesh"* && "$err" == *"has no meshes"* ]]; then echo "ok: view refuses lodmask on a scene without meshes"; else echo "FAIL: view lodmask without meshes (exit $rc): $err"; fail=1; fi
 exit $fail
