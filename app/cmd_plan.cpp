@@ -250,8 +250,8 @@ void run_plan(const PlanArgs& a) {
         "buffer has %.2f and %.2f pixels per panel pixel\n",
         display.lens->panel_width_px, display.lens->panel_height_px,
         a.gaze.empty() ? "any gaze (--gaze plans for one)" : "this gaze",
-        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential,
-        o.radial, o.tangential);
+        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
+        o.tangential);
     std::printf("without the lens:");
     for (const Layer& L : free->layers) std::printf(" s = %.3f", L.sampling_factor);
     std::printf(", P = %.0f, P*/P = %.2fx (the lens saves %.1f %% of the layer pixels)\n",

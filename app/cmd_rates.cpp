@@ -159,7 +159,8 @@ void run_rates(const RatesArgs& a) {
     Display bare = display;
     bare.lens.reset();
     free = shading_rate_image(bare, acuity, gaze, opt);
-    for (size_t i = 0; i < m.rates.size(); ++i) coarser += m.rates[i].pixels() > free->rates[i].pixels();
+    for (size_t i = 0; i < m.rates.size(); ++i)
+      coarser += m.rates[i].pixels() > free->rates[i].pixels();
   }
 
   if (ext == ".bin") {
@@ -230,8 +231,8 @@ void run_rates(const RatesArgs& a) {
         "through the lens: at the gaze (%.1f deg from the lens axis) the panel shows %.1f "
         "(radially) and %.1f (tangentially) pixels per degree, the buffer has %.2f and %.2f "
         "pixels per panel pixel; %d tiles coarser than without the lens (%.4f without it)\n",
-        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential,
-        o.radial, o.tangential, coarser, free->pixel_ratio());
+        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
+        o.tangential, coarser, free->pixel_ratio());
   }
   std::cout << "wrote " << a.out;
   if (!a.preview.empty()) std::cout << " and " << a.preview;

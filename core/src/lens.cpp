@@ -22,9 +22,9 @@ std::vector<double> numbers_at(JsonReader& r, const char* key, size_t min_n, siz
   const nlohmann::json* v = r.get(key);
   if (!v) throw Error(r.path(key) + ": required (" + what + ")");
   if (!v->is_array() || v->size() < min_n || v->size() > max_n) {
-    const std::string count = min_n == max_n ? std::to_string(min_n)
-                                             : std::to_string(min_n) + " to " +
-                                                   std::to_string(max_n);
+    const std::string count = min_n == max_n
+                                  ? std::to_string(min_n)
+                                  : std::to_string(min_n) + " to " + std::to_string(max_n);
     throw Error(r.path(key) + ": expected an array of " + count + " numbers (" + what + ")");
   }
   std::vector<double> out;
@@ -160,7 +160,8 @@ Lens Lens::from_json(const nlohmann::json& j, const std::string& where) {
   }
   l.radius_unit_px = l.px_per_tan;
   r.number("radius_unit_px", l.radius_unit_px, 1e-9, 1e6);
-  const auto k = numbers_at(r, "k", 1, 3, "[k1, k2, k3] of tan = r / px_per_tan * (1 + k1 rho^2 + ...)");
+  const auto k =
+      numbers_at(r, "k", 1, 3, "[k1, k2, k3] of tan = r / px_per_tan * (1 + k1 rho^2 + ...)");
   for (size_t i = 0; i < k.size(); ++i) l.k[i] = k[i];
   r.finish();
   return l;

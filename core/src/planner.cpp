@@ -164,8 +164,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
     int arg = -1;
     for (size_t j = 0; j < cand[m - 1].size(); ++j) {
       if (!std::isfinite(cost[m - 1][j])) continue;
-      const double c =
-          cost[m - 1][j] + w[n - 1] * outer_pixels(g, s_layer(cand[m - 1][j], kInf));
+      const double c = cost[m - 1][j] + w[n - 1] * outer_pixels(g, s_layer(cand[m - 1][j], kInf));
       if (c < best) {
         best = c;
         arg = static_cast<int>(j);

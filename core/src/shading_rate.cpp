@@ -302,8 +302,8 @@ ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& a
   const auto table = lens_table(display);
   for (int ty = 0; ty < img.tiles_y; ++ty) {
     for (int tx = 0; tx < img.tiles_x; ++tx) {
-      img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] =
-          rate_for(display, acuity, gaze, img.tile_rect(tx, ty), options, table ? &*table : nullptr);
+      img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] = rate_for(
+          display, acuity, gaze, img.tile_rect(tx, ty), options, table ? &*table : nullptr);
     }
   }
   return img;

@@ -16,15 +16,16 @@ echo "{\"name\": \"lab\", $body, $lens}" > "$tmp/lens.json"
 echo "{\"name\": \"lab\", $body}" > "$tmp/bare.json"
 
 # Gaze at x = 0.98 * 700 = 686, 336 px right of the axis: tan 0.96 (43.8 deg).
-# There the panel point is r = 255 px out (rho = 0.85) and the buffer has
-# f dtan/dr = 1 + 0.66 rho^2 + 1.2 rho^4 = 2.10 pixels per panel pixel along
-# x, 1.3 along y: the MAR alone needs 1x1 at the gaze, the panel allows 2x1
+# There the panel point is r = 259 px out (rho = 0.863, solving
+# tan = r / 350 (1 + 0.22 rho^2 + 0.24 rho^4)) and the buffer has
+# f dtan/dr = 1 + 0.66 rho^2 + 1.2 rho^4 = 2.16 pixels per panel pixel along
+# x, f tan / r = 1.30 along y: the MAR alone needs 1x1 at the gaze, the panel allows 2x1
 # (Vulkan value 1 << 2 = 4). Tile (686 / 16, 350 / 16) = (42, 21), 44 a row.
 out=$("$FOVEATE" rates --display "$tmp/lens.json" --gaze 0.98,0.5 --out "$tmp/l.bin")
 "$FOVEATE" rates --display "$tmp/bare.json" --gaze 0.98,0.5 --out "$tmp/b.bin" >/dev/null
 check "without the lens the gaze tile is 1x1" '[[ $(byte "$tmp/b.bin" $((21*44+42))) -eq 0 ]]'
 check "through the lens the gaze tile is 2x1" '[[ $(byte "$tmp/l.bin" $((21*44+42))) -eq 4 ]]'
-check "rates prints the panel at the gaze and the tiles it relaxed" '[[ "$out" == *"through the lens: at the gaze (43."*"the buffer has 2.1"*"tiles coarser than without the lens"* ]]'
+check "rates prints the panel at the gaze and the tiles it relaxed" '[[ "$out" == *"through the lens: at the gaze (43."*"the buffer has 2.16 and 1.30"*"tiles coarser than without the lens"* ]]'
 "$FOVEATE" rates --display "$tmp/lens.json" --gaze 0.98,0.5 --out "$tmp/l.json" >/dev/null
 check "rates json: the lens section" 'python3 - "$tmp/l.json" <<PY
 import json, sys

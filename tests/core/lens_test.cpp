@@ -109,8 +109,8 @@ TEST(Lens, DensityAtAnAngleFromThePolynomialsDerivative) {
   EXPECT_NEAR(d.displayed_pixel_angle_deg(px), 1.0 / 6.981513, 1e-6);
   // Without the lens: the buffer's radial pixel, cos^2(53.128 deg) / f rad.
   const double c2 = 1.0 / (1.0 + 1.3332293 * 1.3332293);
-  EXPECT_NEAR(without_lens(d).displayed_pixel_angle_deg(px),
-              c2 / d.eye_distance_px() * 180.0 / kPi, 1e-9);
+  EXPECT_NEAR(without_lens(d).displayed_pixel_angle_deg(px), c2 / d.eye_distance_px() * 180.0 / kPi,
+              1e-9);
 }
 
 TEST(Lens, RightEyeMirrorsTheLensCentre) {
@@ -235,15 +235,21 @@ TEST(Lens, JsonErrorsNameTheField) {
                "display.lens.panel_px: required");
   expect_error(load(with([](auto& j) { j["lens"]["panel_px"] = {600}; })),
                "display.lens.panel_px: expected an array of 2 numbers");
-  expect_error(load(with([](auto& j) { j["lens"]["panel_px"] = {600.5, 600}; })),
+  expect_error(load(with([](auto& j) {
+                 j["lens"]["panel_px"] = {600.5, 600};
+               })),
                "two whole numbers");
   expect_error(load(with([](auto& j) { j["lens"].erase("px_per_tan"); })),
                "display.lens.px_per_tan: required");
-  expect_error(load(with([](auto& j) { j["lens"]["k"] = {0.1, 0.2, 0.3, 0.4}; })),
+  expect_error(load(with([](auto& j) {
+                 j["lens"]["k"] = {0.1, 0.2, 0.3, 0.4};
+               })),
                "display.lens.k: expected an array of 1 to 3 numbers");
   expect_error(load(with([](auto& j) { j["lens"]["k"] = {"a"}; })),
                "display.lens.k: expected numbers");
-  expect_error(load(with([](auto& j) { j["lens"]["center_px"] = {700, 300}; })),
+  expect_error(load(with([](auto& j) {
+                 j["lens"]["center_px"] = {700, 300};
+               })),
                "lens.center_px: must lie on the panel");
   expect_error(load(with([](auto& j) { j["lens"]["colour"] = 1; })), "colour");
   // A k that folds the lens back: tan = r (1 - rho^2) / 350 stops growing
