@@ -82,8 +82,10 @@ struct Lens {
 void to_json(nlohmann::json& j, const Lens& lens);
 
 /// The least oversampling at any view angle at or beyond a given one, from a
-/// table over [0, max_angle_deg] (a conservative bound: each entry covers the
-/// angles from its own up, and a query rounds its angle down to an entry).
+/// table over [0, max_angle_deg] sampled every step_deg (each entry holds the
+/// least of the samples from its own angle up, and a query rounds its angle
+/// down to an entry, so it errs on the finer side but for what the
+/// oversampling does between two samples 0.05 deg apart).
 class OversamplingTable {
  public:
   OversamplingTable(const Lens& lens, double buffer_px_per_tan, double max_angle_deg,
