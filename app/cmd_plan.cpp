@@ -165,10 +165,18 @@ void run_plan(const PlanArgs& a) {
     opt.weights.assign(a.layers, 0.5);
     opt.weights[0] = 1.0;
   }
-  const LayerPlan plan = plan_layers(display, acuity, opt);
   const Vec2d gaze = a.gaze.empty()
                          ? display.principal_point()
                          : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
+  // Through a lens the plan depends on the gaze (without --gaze: any gaze).
+  if (!a.gaze.empty()) opt.gaze = gaze;
+  const LayerPlan plan = plan_layers(display, acuity, opt);
+  std::optional<LayerPlan> free;
+  if (display.lens) {
+    Display bare = display;
+    bare.lens.reset();
+    free = plan_layers(bare, acuity, opt);
+  }
 
   // Where each layer lands on the screen for this gaze (inner layers are squares
   // centred on the gaze; the outer layer is the whole screen).
@@ -183,6 +191,17 @@ void run_plan(const PlanArgs& a) {
   if (a.json) {
     nlohmann::json j = plan;
     j["gaze_px"] = {gaze.x, gaze.y};
+    if (free) {
+      const Oversampling o = display.lens_oversampling(gaze);
+      nlohmann::json s = nlohmann::json::array();
+      for (const Layer& L : free->layers) s.push_back(L.sampling_factor);
+      j["lens"] = {{"planned_for", a.gaze.empty() ? "any gaze" : "this gaze"},
+                   {"oversampling_at_gaze", {{"radial", o.radial}, {"tangential", o.tangential}}},
+                   {"without_lens",
+                    {{"sampling_factors", s},
+                     {"total_pixels", free->total_pixels},
+                     {"pixel_ratio", free->pixel_ratio()}}}};
+    }
     for (size_t i = 0; i < plan.layers.size(); ++i) {
       const auto r = rect(i);
       j["layers"][i]["screen_rect_px"] = {r[0], r[1], r[2], r[3]};
@@ -222,6 +241,23 @@ void run_plan(const PlanArgs& a) {
               plan.total_pixels);
   std::printf("pixel ratio P*/P = %.2fx; with outer layers at half rate = %.2fx\n",
               plan.pixel_ratio(), plan.pixel_ratio_half_rate());
+  if (free) {
+    const Oversampling o = display.lens_oversampling(gaze);
+    const PanelDensity p = display.panel_pixels_per_degree(gaze);
+    std::printf(
+        "\nthrough the lens (panel %dx%d), planned for %s: at the gaze (%.1f deg from the lens "
+        "axis) the panel shows %.1f (radially) and %.1f (tangentially) pixels per degree, the "
+        "buffer has %.2f and %.2f pixels per panel pixel\n",
+        display.lens->panel_width_px, display.lens->panel_height_px,
+        a.gaze.empty() ? "any gaze (--gaze plans for one)" : "this gaze",
+        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
+        o.tangential);
+    std::printf("without the lens:");
+    for (const Layer& L : free->layers) std::printf(" s = %.3f", L.sampling_factor);
+    std::printf(", P = %.0f, P*/P = %.2fx (the lens saves %.1f %% of the layer pixels)\n",
+                free->total_pixels, free->pixel_ratio(),
+                100.0 * (1.0 - plan.total_pixels / free->total_pixels));
+  }
 }
 
 }  // namespace
@@ -235,14 +271,16 @@ void register_plan(CLI::App& app) {
       "plan", "Plan eccentricity layers (Guenter et al. 2012) for a display and acuity slope");
   sub->add_option("--display", a->display,
                   "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, "
-                  "hmd-pimax-crystal) or JSON file")
+                  "hmd-pimax-crystal; with a lens: hmd-rift-dk1, hmd-quest2-lens) or JSON file; "
+                  "through a lens no layer samples finer than the panel shows")
       ->capture_default_str();
   sub->add_option("--quality", a->quality,
                   "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
   sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
   sub->add_option("--gaze", a->gaze,
-                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
+                  "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre (with a "
+                  "lens: the plan then holds for any gaze)");
   sub->add_option("--size", a->size,
                   "Render at WxH with the display's geometry (field of view kept); render's "
                   "default")

@@ -152,6 +152,16 @@ void run_rates(const RatesArgs& a) {
                          : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
   const ShadingRateImage m = shading_rate_image(display, acuity, gaze, opt);
   const std::vector<std::uint8_t> bytes = m.encode(api);
+  // Through a lens: the same rates without it, to show what the panel relaxed.
+  std::optional<ShadingRateImage> free;
+  int coarser = 0;
+  if (display.lens) {
+    Display bare = display;
+    bare.lens.reset();
+    free = shading_rate_image(bare, acuity, gaze, opt);
+    for (size_t i = 0; i < m.rates.size(); ++i)
+      coarser += m.rates[i].pixels() > free->rates[i].pixels();
+  }
 
   if (ext == ".bin") {
     write_file_atomic(a.out,
@@ -186,6 +196,12 @@ void run_rates(const RatesArgs& a) {
     j["grid"] = grid;
     j["shaded_samples"] = m.shaded_samples();
     j["pixel_ratio"] = m.pixel_ratio();
+    if (free) {
+      const Oversampling o = display.lens_oversampling(gaze);
+      j["lens"] = {{"oversampling_at_gaze", {{"radial", o.radial}, {"tangential", o.tangential}}},
+                   {"tiles_coarser_than_without_lens", coarser},
+                   {"pixel_ratio_without_lens", free->pixel_ratio()}};
+    }
     write_file_atomic(a.out, j.dump(1) + "\n");
   }
   if (!a.preview.empty()) write_png(a.preview, preview(m, gaze));
@@ -208,6 +224,16 @@ void run_rates(const RatesArgs& a) {
   }
   std::printf("\nshaded samples / native pixels = %.4f (%.2fx fewer invocations)\n",
               m.pixel_ratio(), 1.0 / m.pixel_ratio());
+  if (free) {
+    const Oversampling o = display.lens_oversampling(gaze);
+    const PanelDensity p = display.panel_pixels_per_degree(gaze);
+    std::printf(
+        "through the lens: at the gaze (%.1f deg from the lens axis) the panel shows %.1f "
+        "(radially) and %.1f (tangentially) pixels per degree, the buffer has %.2f and %.2f "
+        "pixels per panel pixel; %d tiles coarser than without the lens (%.4f without it)\n",
+        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
+        o.tangential, coarser, free->pixel_ratio());
+  }
   std::cout << "wrote " << a.out;
   if (!a.preview.empty()) std::cout << " and " << a.preview;
   std::cout << '\n';
@@ -224,7 +250,8 @@ void register_rates(CLI::App& app) {
       "rates", "Write the shading-rate image (variable-rate shading) the acuity model gives");
   sub->add_option("--display", a->display,
                   "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, "
-                  "hmd-pimax-crystal) or JSON file")
+                  "hmd-pimax-crystal; with a lens: hmd-rift-dk1, hmd-quest2-lens) or JSON file; "
+                  "through a lens no tile is shaded finer than the panel shows")
       ->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");

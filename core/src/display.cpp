@@ -45,7 +45,46 @@ double Display::horizontal_fov_deg() const {
 Display Display::mirrored() const {
   Display d = *this;
   d.fov = fov.mirrored();
+  if (lens) d.lens = lens->mirrored();
   return d;
+}
+
+double Display::max_view_tan() const {
+  const auto [cx, cy] = principal_point();
+  const double dx = std::max(cx, width_px - cx), dy = std::max(cy, height_px - cy);
+  return std::hypot(dx, dy) / eye_distance_px();
+}
+
+namespace {
+// The view tangent of buffer `pixel` from the principal point.
+double view_tan(const Display& d, Vec2d pixel) {
+  const auto [cx, cy] = d.principal_point();
+  return std::hypot(pixel.x - cx, pixel.y - cy) / d.eye_distance_px();
+}
+}  // namespace
+
+PanelDensity Display::panel_pixels_per_degree(Vec2d pixel) const {
+  if (!lens) throw Error("display '" + name + "': has no lens (panel_pixels_per_degree)");
+  return lens->density_at_tan(view_tan(*this, pixel));
+}
+
+Oversampling Display::lens_oversampling(Vec2d pixel) const {
+  if (!lens) return {};
+  return lens->oversampling_at_tan(view_tan(*this, pixel), eye_distance_px());
+}
+
+double Display::displayed_pixel_angle_deg(Vec2d pixel) const {
+  // The buffer's pixel angles at view tangent t: cos^2 / f radially, cos / f
+  // tangentially (radians).
+  const double t = view_tan(*this, pixel), f = eye_distance_px();
+  const double c2 = 1.0 / (1.0 + t * t);
+  double radial = c2 / f * kDeg, tangential = std::sqrt(c2) / f * kDeg;
+  if (lens) {
+    const PanelDensity p = lens->density_at_tan(t);
+    radial = std::max(radial, 1.0 / p.radial);
+    tangential = std::max(tangential, 1.0 / p.tangential);
+  }
+  return std::min(radial, tangential);
 }
 
 double Display::pixels_per_mm() const { return head_mounted() ? 0.0 : width_px / width_mm; }
@@ -102,6 +141,16 @@ Display Display::resized(int width, int height) const {
 }
 
 void Display::validate() const {
+  const std::string w = name.empty() ? "display" : "display '" + name + "'";
+  validate_geometry();
+  if (!lens) return;
+  if (!head_mounted()) {
+    throw Error(w + ": lens needs a head-mounted display (fov_deg or fov_h_deg)");
+  }
+  lens->validate(w, max_view_tan());
+}
+
+void Display::validate_geometry() const {
   const std::string w = name.empty() ? "display" : "display '" + name + "'";
   if (width_px < 1 || width_px > kMaxPixels) {
     throw Error(w + ": width_px must be in [1, 65536], got " + std::to_string(width_px));
@@ -185,6 +234,62 @@ const std::vector<Display>& Display::presets() {
         "hmd-pimax-crystal", 4312, 5100, 0.0, 0.0, 0.0,
         FovAngles{edge_deg(-1.264092), edge_deg(0.889501), edge_deg(1.274264), edge_deg(-1.274264)},
         68.1});
+    // Oculus Rift DK1, left eye, with its published lens: the Oculus SDK
+    // 0.2.x HMDInfo (SDK Overview 0.2.3): a 1280x800 panel 149.76 x 93.6 mm,
+    // EyeToScreenDistance 41 mm, LensSeparationDistance 63.5 mm,
+    // DistortionK {1, 0.22, 0.24, 0}, the distortion radius unit a quarter of
+    // the panel's width (320 px). The eye buffer is the SDK's: 1:1 with the
+    // panel at the lens centre (320 * 41 / 37.44 = 350.43 px per tangent) and
+    // scaled by its DistortionScale, the polynomial's scale at the panel's
+    // outer edge (fit point -1), 1.7147: 1097x1372, 61.0 deg out, 53.0 deg
+    // in, 62.9 deg up and down. The eyes sit on the lens axes (IPD = lens
+    // separation).
+    {
+      Lens dk1;
+      dk1.panel_width_px = 640;
+      dk1.panel_height_px = 800;
+      dk1.radius_unit_px = 320.0;
+      dk1.px_per_tan = 320.0 * 41.0 / (149.76 / 4.0);
+      dk1.center_x_px = 320.0 + (149.76 / 4.0 - 63.5 / 2.0) * 1280.0 / 149.76;
+      dk1.center_y_px = 400.0;
+      dk1.k = {0.22, 0.24, 0.0};
+      const double rho = dk1.center_x_px / dk1.radius_unit_px;  // the panel's outer edge
+      const double scale = 1.0 + rho * rho * (dk1.k[0] + rho * rho * dk1.k[1]);
+      const double t = scale / dk1.px_per_tan;  // view tangent per panel pixel, scaled
+      Display d{"hmd-rift-dk1",
+                static_cast<int>(std::lround(640.0 * scale)),
+                static_cast<int>(std::lround(800.0 * scale)),
+                0.0,
+                0.0,
+                0.0,
+                FovAngles{edge_deg(-dk1.center_x_px * t), edge_deg((640.0 - dk1.center_x_px) * t),
+                          edge_deg(400.0 * t), edge_deg(-400.0 * t)},
+                63.5};
+      d.lens = dk1;
+      v.push_back(d);
+    }
+    // hmd-quest2 with an EXAMPLE lens: Meta publishes no lens coefficients
+    // for the Quest 2. The panel and its centre density are the Oculus
+    // runtime's own (the same hmdq record: distorted viewport 1592x1664,
+    // 1029.04 pixels per tangent at the centre); k1 = 0.778 (radius unit = one
+    // tangent at the centre) is fitted so that the panel's left and right
+    // edges fall on the view's edges (tangents 1.279942 and 1), which puts the
+    // lens centre 856 px from the left edge; its height from the top edge
+    // (tangent 1.110613). A one-coefficient fit, not Meta's lens.
+    {
+      Display d = v[3];  // hmd-quest2
+      d.name = "hmd-quest2-lens";
+      Lens q;
+      q.panel_width_px = 1592;
+      q.panel_height_px = 1664;
+      q.px_per_tan = 1029.04;
+      q.radius_unit_px = 1029.04;
+      q.center_x_px = 856.0;
+      q.center_y_px = 786.0;
+      q.k = {0.778, 0.0, 0.0};
+      d.lens = q;
+      v.push_back(d);
+    }
     return v;
   }();
   return all;
@@ -201,6 +306,8 @@ Display Display::from_json(const nlohmann::json& j, const std::string& where) {
   const bool has_w = r.number("width_mm", d.width_mm, 1e-6, 1e7);
   const bool has_v = r.number("distance_mm", d.distance_mm, 1e-6, 1e7);
   const bool has_ipd = r.number("ipd_mm", d.ipd_mm, 1e-6, 200.0);
+  const nlohmann::json* lens = r.get("lens");
+  if (lens) d.lens = Lens::from_json(*lens, r.path("lens"));
   const nlohmann::json* fov = r.get("fov_deg");
   if (fov) {
     if (!fov->is_object()) throw Error(r.path("fov_deg") + ": expected an object");
@@ -267,6 +374,7 @@ void to_json(nlohmann::json& j, const Display& d) {
     j["width_mm"] = d.width_mm;
     j["distance_mm"] = d.distance_mm;
   }
+  if (d.lens) j["lens"] = *d.lens;
 }
 
 }  // namespace foveate

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
@@ -70,6 +71,34 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   g.e_star = display.half_fov_deg();
   auto s_after = [&](double e) { return sampling_factor_at(e, acuity, display); };
 
+  // Through a lens (lens.hpp): a layer over the eccentricities [a, b) around
+  // the gaze need not sample finer than the panel shows anywhere in that ring,
+  // whose view angles from the lens axis (gamma being the gaze's) are at least
+  // 0 when it holds the axis, gamma - b inside it, a - gamma outside it.
+  std::optional<OversamplingTable> table;
+  double gamma = 0.0;
+  if (display.lens) {
+    table.emplace(*display.lens, display.eye_distance_px(),
+                  std::atan(display.max_view_tan()) * 180.0 / std::numbers::pi);
+    if (opt.gaze) {
+      if (!std::isfinite(opt.gaze->x) || !std::isfinite(opt.gaze->y)) {
+        throw Error("gaze: must be finite");
+      }
+      gamma = display.eccentricity_deg(display.principal_point(), *opt.gaze);
+    }
+  }
+  auto lens_s = [&](double a, double b) {
+    if (!table) return 1.0;
+    double from = 0.0;  // any gaze: the whole buffer
+    if (opt.gaze) from = gamma < a ? a - gamma : (gamma > b ? gamma - b : 0.0);
+    return table->least_beyond(from).least();
+  };
+  // s of the layer over [a, b): the acuity's at a (1 for the first) and the lens's.
+  auto s_layer = [&](double a, double b) {
+    const double s = a > 0.0 ? s_after(a) : 1.0;
+    return table ? std::max(s, lens_s(a, b)) : s;
+  };
+
   // Candidate radii: the grid strictly inside (0, e*), bounded in number.
   const double points = std::floor(g.e_star / opt.grid_step_deg);
   if (!(points <= static_cast<double>(opt.max_grid_points))) {
@@ -113,15 +142,16 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
     std::vector<std::vector<int>> from(m);
     cost[0].resize(cand[0].size());
     for (size_t k = 0; k < cand[0].size(); ++k)
-      cost[0][k] = w[0] * inner_pixels(g, cand[0][k], 1.0);
+      cost[0][k] = w[0] * inner_pixels(g, cand[0][k], s_layer(0.0, cand[0][k]));
     for (int i = 1; i < m; ++i) {
       cost[i].assign(cand[i].size(), kInf);
       from[i].assign(cand[i].size(), -1);
       for (size_t j = 0; j < cand[i - 1].size(); ++j) {
         if (!std::isfinite(cost[i - 1][j])) continue;
-        const double s = s_after(cand[i - 1][j]);
+        const double s0 = s_after(cand[i - 1][j]);
         for (size_t k = 0; k < cand[i].size(); ++k) {
           if (cand[i][k] <= cand[i - 1][j]) continue;
+          const double s = table ? std::max(s0, lens_s(cand[i - 1][j], cand[i][k])) : s0;
           const double c = cost[i - 1][j] + w[i] * inner_pixels(g, cand[i][k], s);
           if (c < cost[i][k]) {
             cost[i][k] = c;
@@ -134,7 +164,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
     int arg = -1;
     for (size_t j = 0; j < cand[m - 1].size(); ++j) {
       if (!std::isfinite(cost[m - 1][j])) continue;
-      const double c = cost[m - 1][j] + w[n - 1] * outer_pixels(g, s_after(cand[m - 1][j]));
+      const double c = cost[m - 1][j] + w[n - 1] * outer_pixels(g, s_layer(cand[m - 1][j], kInf));
       if (c < best) {
         best = c;
         arg = static_cast<int>(j);
@@ -154,16 +184,16 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   plan.display = display;
   plan.acuity = acuity;
   plan.native_pixels = static_cast<double>(display.width_px) * display.height_px;
-  double s = 1.0;
   for (int i = 0; i < n; ++i) {
     Layer L;
+    const double inner = i > 0 ? radii[i - 1] : 0.0;
+    const double s = s_layer(inner, i < n - 1 ? radii[i] : kInf);
     L.sampling_factor = s;
     if (i < n - 1) {
       L.radius_deg = radii[i];
       L.radius_px = g.focal * std::tan(radii[i] * kRad);
       const int d = std::max(1, static_cast<int>(std::lround(2.0 * L.radius_px / s)));
       L.width_px = L.height_px = d;
-      s = s_after(radii[i]);
     } else {
       L.radius_deg = g.e_star;
       L.radius_px = g.focal * std::tan(g.e_star * kRad);

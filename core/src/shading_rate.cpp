@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "foveate/core/error.hpp"
 
@@ -204,8 +205,38 @@ std::vector<std::uint8_t> ShadingRateImage::encode(RateApi api) const {
   return out;
 }
 
-ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity, Vec2d gaze,
-                              const std::array<int, 4>& rect, const ShadingRateOptions& options) {
+namespace {
+// Through the lens: the largest sample spacing along x and along y, in buffer
+// pixels, that is still no coarser than the panel's pixels anywhere in the
+// tile [x0, x1] x [y0, y1]. At a point whose direction from the lens axis makes
+// angle phi with x, a spacing k along x spans k sqrt(cos^2 / m_r^2 + sin^2 /
+// m_t^2) panel pixels (m_r, m_t: buffer pixels per panel pixel radially and
+// tangentially), so k may be 1 / sqrt(...). Bounded over the tile by the
+// least m_r and m_t at any view angle of the tile (from the table) and the
+// largest |cos phi| and |sin phi| of its points.
+std::array<double, 2> panel_spacing(const Display& d, const OversamplingTable& table, double x0,
+                                    double y0, double x1, double y1) {
+  const Vec2d p = d.principal_point();
+  const Oversampling m = table.least_beyond(min_eccentricity(d, p, x0, y0, x1, y1));
+  const double ax0 = x0 - p.x, ax1 = x1 - p.x, ay0 = y0 - p.y, ay1 = y1 - p.y;
+  const double big_x = std::max(std::abs(ax0), std::abs(ax1));
+  const double big_y = std::max(std::abs(ay0), std::abs(ay1));
+  const double small_x = (ax0 <= 0.0 && ax1 >= 0.0) ? 0.0 : std::min(std::abs(ax0), std::abs(ax1));
+  const double small_y = (ay0 <= 0.0 && ay1 >= 0.0) ? 0.0 : std::min(std::abs(ay0), std::abs(ay1));
+  auto most = [](double a, double b) {  // the largest a / hypot(a, b): 1 where both are 0
+    const double h = std::hypot(a, b);
+    return h > 0.0 ? a / h : 1.0;
+  };
+  const double cos_max = most(big_x, small_y), sin_max = most(big_y, small_x);
+  auto spacing = [&](double c, double s) {
+    return 1.0 / std::sqrt(c * c / (m.radial * m.radial) + s * s / (m.tangential * m.tangential));
+  };
+  return {spacing(cos_max, sin_max), spacing(sin_max, cos_max)};
+}
+
+ShadingRate rate_for(const Display& display, const AcuityModel& acuity, Vec2d gaze,
+                     const std::array<int, 4>& rect, const ShadingRateOptions& options,
+                     const OversamplingTable* lens) {
   const double x0 = rect[0], y0 = rect[1], x1 = rect[2], y1 = rect[3];
   // Eccentricity of the tile's point nearest the gaze, less the latency margin.
   const double e =
@@ -217,7 +248,14 @@ ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity,
   const auto [cx, cy] = display.principal_point();
   const double ax = max_step_angle(x0 - cx, x1 - cx, y0 - cy, y1 - cy, f);
   const double ay = max_step_angle(y0 - cy, y1 - cy, x0 - cx, x1 - cx, f);
-  const double kx = half_cycle / ax, ky = half_cycle / ay;  // largest allowed spacings
+  double kx = half_cycle / ax, ky = half_cycle / ay;  // largest allowed spacings
+  if (lens) {
+    // No finer than the panel shows there (lens.hpp): two samples per cycle
+    // the eye resolves or the panel shows, whichever is coarser.
+    const auto [px, py] = panel_spacing(display, *lens, x0, y0, x1, y1);
+    kx = std::max(kx, px);
+    ky = std::max(ky, py);
+  }
 
   ShadingRate best{1, 1};
   double best_headroom = std::min(kx, ky);
@@ -230,6 +268,19 @@ ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity,
     }
   }
   return best;
+}
+
+std::optional<OversamplingTable> lens_table(const Display& d) {
+  if (!d.lens) return std::nullopt;
+  return OversamplingTable(*d.lens, d.eye_distance_px(),
+                           std::atan(d.max_view_tan()) * 180.0 / std::numbers::pi);
+}
+}  // namespace
+
+ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity, Vec2d gaze,
+                              const std::array<int, 4>& rect, const ShadingRateOptions& options) {
+  const auto table = lens_table(display);
+  return rate_for(display, acuity, gaze, rect, options, table ? &*table : nullptr);
 }
 
 ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& acuity, Vec2d gaze,
@@ -248,10 +299,11 @@ ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& a
   img.tiles_x = (display.width_px + options.tile_px - 1) / options.tile_px;
   img.tiles_y = (display.height_px + options.tile_px - 1) / options.tile_px;
   img.rates.resize(static_cast<size_t>(img.tiles_x) * img.tiles_y);
+  const auto table = lens_table(display);
   for (int ty = 0; ty < img.tiles_y; ++ty) {
     for (int tx = 0; tx < img.tiles_x; ++tx) {
-      img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] =
-          tile_shading_rate(display, acuity, gaze, img.tile_rect(tx, ty), options);
+      img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] = rate_for(
+          display, acuity, gaze, img.tile_rect(tx, ty), options, table ? &*table : nullptr);
     }
   }
   return img;

@@ -44,8 +44,12 @@ def test_the_papers_display(fv):
     small = d.resized(640, 360)
     assert small.width_px == 640 and small.half_fov_deg() == pytest.approx(d.half_fov_deg())
     assert [p.name for p in fv.Display.presets()] == [
-        "desktop-1080p", "desktop-27-4k", "hmd-quest3", "hmd-quest2", "hmd-pimax-crystal"]
+        "desktop-1080p", "desktop-27-4k", "hmd-quest3", "hmd-quest2", "hmd-pimax-crystal",
+        "hmd-rift-dk1", "hmd-quest2-lens"]
     assert d.to_dict()["width_px"] == 1920
+    assert "lens" not in d.to_dict()
+    # The DK1's published lens (Oculus SDK 0.2: DistortionK 1, 0.22, 0.24, 0).
+    assert fv.Display.load("hmd-rift-dk1").to_dict()["lens"]["k"] == [0.22, 0.24, 0.0]
 
 
 def test_asymmetric_eye(fv):

@@ -9,8 +9,11 @@
 // view, as OpenXR's XrFovf): then the eye's optical axis meets the image at the
 // principal point, not at the centre, and every angle is taken from there.
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "foveate/core/lens.hpp"
 
 namespace foveate {
 
@@ -53,6 +56,12 @@ struct Display {
   /// Inter-pupillary distance of a stereo head-mounted display (the eye
   /// positions for per-eye cameras); 0 = not a stereo display.
   double ipd_mm = 0.0;
+  /// Head-mounted: the lens and panel behind the eye buffer (lens.hpp). When
+  /// set, the planner and the shading rates sample no finer than the panel
+  /// shows through the lens; eccentricities stay the buffer's pinhole angles
+  /// (the lens shows each buffer pixel at its pinhole angle). Absent: the
+  /// panel is taken to be as fine as the buffer everywhere.
+  std::optional<Lens> lens = std::nullopt;
 
   [[nodiscard]] bool head_mounted() const { return fov_h_deg > 0.0 || fov.set(); }
   /// Whether it can be rendered in stereo (four angles and an IPD).
@@ -85,22 +94,43 @@ struct Display {
   /// gaze at the principal point).
   [[nodiscard]] double radius_px_at(double eccentricity_deg) const;
 
+  /// Through the lens: the panel's pixels per degree at the view direction of
+  /// buffer `pixel` (radially from the lens axis and across). Throws
+  /// foveate::Error for a display without a lens.
+  [[nodiscard]] PanelDensity panel_pixels_per_degree(Vec2d pixel) const;
+  /// Buffer pixels per panel pixel at `pixel` (1 and 1 without a lens).
+  [[nodiscard]] Oversampling lens_oversampling(Vec2d pixel) const;
+  /// The finest detail displayed at buffer `pixel`, as the angle of one
+  /// displayed pixel in degrees: along the radial and the tangential
+  /// direction the larger of the buffer's and the panel's pixel angle, and of
+  /// those two the smaller. Without a lens the buffer's (radial) pixel angle.
+  [[nodiscard]] double displayed_pixel_angle_deg(Vec2d pixel) const;
+  /// The view tangent of the buffer's corner farthest from the principal point.
+  [[nodiscard]] double max_view_tan() const;
+
   /// The same physical display rendered at another resolution (same field of
   /// view): used to run at small test sizes with the real angular geometry.
+  /// A lens (its panel) stays as it is: a smaller buffer has fewer pixels per
+  /// panel pixel, so the lens relaxes less.
   [[nodiscard]] Display resized(int width, int height) const;
 
   /// Throws foveate::Error naming the field when a value is out of range.
   void validate() const;
 
-  /// The other eye of a stereo display: the four angles mirrored.
+  /// The other eye of a stereo display: the four angles (and the lens centre) mirrored.
   [[nodiscard]] Display mirrored() const;
 
   /// Built-in displays: desktop-1080p (the paper's), desktop-27-4k, hmd-quest3,
-  /// and the stereo headsets hmd-quest2 and hmd-pimax-crystal (left eye).
+  /// the stereo headsets hmd-quest2 and hmd-pimax-crystal (left eye), and
+  /// with a lens hmd-rift-dk1 (the Oculus SDK's published lens) and
+  /// hmd-quest2-lens (hmd-quest2 with an example lens, see the README).
   static const std::vector<Display>& presets();
   /// A preset name or a path to a JSON file.
   static Display load(const std::string& name_or_path);
   static Display from_json(const nlohmann::json& j, const std::string& where = "display");
+
+ private:
+  void validate_geometry() const;  // everything but the lens
 };
 
 void to_json(nlohmann::json& j, const Display& d);

@@ -25,6 +25,13 @@ struct PlannerOptions {
   /// O(layers * G^2) time, so a finer step is refused with an error naming the
   /// limit (foveate plan --max-grid raises it).
   int max_grid_points = 10000;
+  /// For a display with a lens: where the gaze is (pixels). The panel's
+  /// resolution depends on where the layers fall, so every layer's sampling
+  /// factor is at least the least buffer-pixels-per-panel-pixel (the finer of
+  /// the panel's two directions) over the view angles its ring around this
+  /// gaze covers. Without a gaze the plan must hold for any gaze: the least
+  /// over the whole buffer. Ignored without a lens.
+  std::optional<Vec2d> gaze;
 };
 
 struct Layer {
@@ -56,7 +63,8 @@ struct LayerPlan {
 LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
                       const PlannerOptions& options = {});
 
-/// Sampling factor s_{i+1} for a layer just outside eccentricity e (eq. 2), >= 1.
+/// Sampling factor s_{i+1} for a layer just outside eccentricity e (eq. 2), >= 1
+/// (the acuity term alone: the lens term depends on the gaze, see PlannerOptions::gaze).
 double sampling_factor_at(double eccentricity_deg, const AcuityModel& acuity, const Display& d);
 
 void to_json(nlohmann::json& j, const LayerPlan& plan);

@@ -21,6 +21,13 @@
 // flat image plane a pixel subtends less off the display centre, and less
 // along the direction away from it, so away from the centre a horizontal step
 // and a vertical step differ and anisotropic rates (2x1, 4x2, ...) can win.
+// Through a lens (Display::lens, lens.hpp) the spacing may also be as coarse
+// as one panel pixel where that is coarser than half the MAR (two samples per
+// cycle the eye resolves or the panel shows): a spacing k along x at a point
+// whose direction from the lens axis makes angle phi with x spans
+// k sqrt(cos^2 phi / m_r^2 + sin^2 phi / m_t^2) panel pixels (m_r, m_t: buffer
+// pixels per panel pixel radially and across), bounded over the tile by the
+// least m_r, m_t of its view angles and its largest |cos phi|, |sin phi|.
 // The chosen rate is the supported one with the fewest invocations (largest
 // rw * rh) that is allowed; ties go to the rate with more headroom. 1x1 is
 // always allowed (it is native).
