@@ -91,7 +91,11 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
     if (!table) return 1.0;
     double from = 0.0;  // any gaze: the whole buffer
     if (opt.gaze) from = gamma < a ? a - gamma : (gamma > b ? gamma - b : 0.0);
-    return table->least_beyond(from).least();
+    // Less than 5 % of oversampling is not worth a resampled layer: it would
+    // save under 10 % of the layer's pixels and cost the fovea its exactness
+    // (a layer at s > 1 is jittered and resolved, not native).
+    const double s = table->least_beyond(from).least();
+    return s < 1.05 ? 1.0 : s;
   };
   // s of the layer over [a, b): the acuity's at a (1 for the first) and the lens's.
   auto s_layer = [&](double a, double b) {

@@ -207,6 +207,19 @@ TEST(Lens, PlanCoarserOffAxisIdenticalOnAxis) {
               t.least_beyond(gamma - off.layers[0].radius_deg).least(), 1e-12);
 }
 
+TEST(Lens, OversamplingUnderFivePercentKeepsTheFoveaNative) {
+  // hmd-quest2-lens: at its full size the buffer is 0.25 % finer than the
+  // panel at the axis; a fovea layer resampled by 1.0025 would save nothing
+  // worth its lost exactness, so the plan keeps it native.
+  const Display d = Display::load("hmd-quest2-lens");
+  const OversamplingTable t(*d.lens, d.eye_distance_px(), 80.0);
+  ASSERT_GT(t.least_beyond(0.0).least(), 1.0);
+  ASSERT_LT(t.least_beyond(0.0).least(), 1.05);
+  PlannerOptions o;
+  o.gaze = d.principal_point();
+  EXPECT_EQ(plan_layers(d, AcuityModel::quality("A"), o).layers[0].sampling_factor, 1.0);
+}
+
 TEST(Lens, JsonRoundTrip) {
   const Display d = Display::load("hmd-quest2-lens");
   const nlohmann::json j = d;
