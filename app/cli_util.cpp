@@ -141,4 +141,18 @@ std::string format_duration(double seconds) {
   return buf;
 }
 
+std::string lens_at_gaze(const Display& display, Vec2d gaze) {
+  const Oversampling o = display.lens_oversampling(gaze);
+  const PanelDensity p = display.panel_pixels_per_degree(gaze);
+  char s[320];
+  std::snprintf(
+      s, sizeof s,
+      "at the gaze (%.1f deg from the lens axis) the panel shows %.1f (radially) and %.1f "
+      "(tangentially) pixels per degree, the buffer has %.2f and %.2f pixels per panel "
+      "pixel",
+      display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
+      o.tangential);
+  return s;
+}
+
 }  // namespace foveate::app

@@ -56,4 +56,10 @@ std::uint64_t parse_byte_size(const std::string& text, const std::string& option
 /// Formats a number with `digits` decimals (no exponent).
 std::string fmt(double value, int digits);
 
+/// What a display's lens does at `gaze` (plan and rates print it): "at the
+/// gaze (E deg from the lens axis) the panel shows R (radially) and T
+/// (tangentially) pixels per degree, the buffer has R' and T' pixels per
+/// panel pixel". The display must have a lens.
+std::string lens_at_gaze(const Display& display, Vec2d gaze);
+
 }  // namespace foveate::app

@@ -242,16 +242,10 @@ void run_plan(const PlanArgs& a) {
   std::printf("pixel ratio P*/P = %.2fx; with outer layers at half rate = %.2fx\n",
               plan.pixel_ratio(), plan.pixel_ratio_half_rate());
   if (free) {
-    const Oversampling o = display.lens_oversampling(gaze);
-    const PanelDensity p = display.panel_pixels_per_degree(gaze);
-    std::printf(
-        "\nthrough the lens (panel %dx%d), planned for %s: at the gaze (%.1f deg from the lens "
-        "axis) the panel shows %.1f (radially) and %.1f (tangentially) pixels per degree, the "
-        "buffer has %.2f and %.2f pixels per panel pixel\n",
-        display.lens->panel_width_px, display.lens->panel_height_px,
-        a.gaze.empty() ? "any gaze (--gaze plans for one)" : "this gaze",
-        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
-        o.tangential);
+    std::printf("\nthrough the lens (panel %dx%d), planned for %s: %s\n",
+                display.lens->panel_width_px, display.lens->panel_height_px,
+                a.gaze.empty() ? "any gaze (--gaze plans for one)" : "this gaze",
+                lens_at_gaze(display, gaze).c_str());
     std::printf("without the lens:");
     for (const Layer& L : free->layers) std::printf(" s = %.3f", L.sampling_factor);
     std::printf(", P = %.0f, P*/P = %.2fx (the lens saves %.1f %% of the layer pixels)\n",

@@ -225,14 +225,8 @@ void run_rates(const RatesArgs& a) {
   std::printf("\nshaded samples / native pixels = %.4f (%.2fx fewer invocations)\n",
               m.pixel_ratio(), 1.0 / m.pixel_ratio());
   if (free) {
-    const Oversampling o = display.lens_oversampling(gaze);
-    const PanelDensity p = display.panel_pixels_per_degree(gaze);
-    std::printf(
-        "through the lens: at the gaze (%.1f deg from the lens axis) the panel shows %.1f "
-        "(radially) and %.1f (tangentially) pixels per degree, the buffer has %.2f and %.2f "
-        "pixels per panel pixel; %d tiles coarser than without the lens (%.4f without it)\n",
-        display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
-        o.tangential, coarser, free->pixel_ratio());
+    std::printf("through the lens: %s; %d tiles coarser than without the lens (%.4f without it)\n",
+                lens_at_gaze(display, gaze).c_str(), coarser, free->pixel_ratio());
   }
   std::cout << "wrote " << a.out;
   if (!a.preview.empty()) std::cout << " and " << a.preview;

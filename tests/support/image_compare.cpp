@@ -1,6 +1,7 @@
 #include "image_compare.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -80,6 +81,32 @@ std::string check_golden(const Image& actual, const std::string& reference_path,
   }
   m << "; actual: " << actual_path << ", difference: " << diff_path;
   return m.str();
+}
+
+Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
+  Comparison c;
+  c.size_matches = a.width == b.width && a.height == b.height;
+  if (!c.size_matches) return c;
+  const int threshold = Tolerance{}.pixel_threshold;
+  double sum = 0;
+  size_t n = 0, off = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      if (std::hypot(x + 0.5 - centre.x, y + 0.5 - centre.y) > radius) continue;
+      int worst = 0;
+      for (int ch = 0; ch < 3; ++ch) {
+        const int e = std::abs(int(a.at(x, y)[ch]) - int(b.at(x, y)[ch]));
+        worst = std::max(worst, e);
+        sum += e;
+      }
+      c.max_error = std::max(c.max_error, worst);
+      off += worst > threshold ? 1 : 0;
+      ++n;
+    }
+  }
+  c.mean_error = n ? sum / (3.0 * double(n)) : 0.0;
+  c.fraction = n ? double(off) / double(n) : 0.0;
+  return c;
 }
 
 }  // namespace foveate::test

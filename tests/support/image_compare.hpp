@@ -6,6 +6,7 @@
 // FOVEATE_UPDATE_GOLDEN=1 the reference is rewritten instead.
 #include <string>
 
+#include "foveate/core/display.hpp"  // Vec2d
 #include "foveate/core/image.hpp"
 
 namespace foveate::test {
@@ -29,6 +30,9 @@ struct Comparison {
 };
 
 Comparison compare_images(const Image& expected, const Image& actual, int pixel_threshold);
+/// The same over the pixels whose centres lie within `radius` of `centre`
+/// (the golden tolerance's pixel threshold): a technique's fovea against native.
+Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius);
 /// Absolute difference, amplified 4x, for inspection.
 Image difference_image(const Image& expected, const Image& actual);
 
