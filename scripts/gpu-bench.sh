@@ -83,5 +83,22 @@ for size in "${size_list[@]}"; do
     cp "$dir/results.json" "$out/results/$slug-$name-$size.json"
   done
 done
+# vrs: the driver's shading-rate image (GL_NV_shading_rate_image, where the
+# renderer has it) against the emulation, with quality against native. On a
+# renderer without the extension both rows are the emulation (the results'
+# parameters say hardware_path 0).
+dir="$work/vrs-hardware"
+echo "gpu-bench.sh: vrs hardware against emulation" >&2
+"$bin" bench --scene guenter --size 1920x1080 --techniques native,vrs --sweep vrs.hardware=0:1:1 \
+  --frames "$frames" --passes --quiet --out "$dir" >/dev/null
+{
+  echo "## vrs: hardware rates against the emulation (guenter at 1920x1080)"
+  echo
+  echo "\`foveate bench --scene guenter --size 1920x1080 --techniques native,vrs --sweep vrs.hardware=0:1:1 --frames $frames --passes\`"
+  echo
+  cat "$dir/results.md"
+  echo
+} >> "$tmpdoc"
+cp "$dir/results.json" "$out/results/$slug-vrs-hardware.json"
 mv "$tmpdoc" "$doc"
 echo "gpu-bench.sh: wrote $doc" >&2

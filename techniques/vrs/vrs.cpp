@@ -51,6 +51,7 @@ class Vrs final : public Technique {
         acuity_(c.acuity),
         tile_(v.integer("tile")),
         min_class_(v.real("min_class")),
+        hardware_(v.boolean("hardware") && hardware_available(v.integer("tile"))),
         fixed_(v.boolean("fixed")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
@@ -100,6 +101,53 @@ class Vrs final : public Technique {
     for (std::uint8_t& c : classes) c = static_cast<std::uint8_t>(into[c]);
   }
 
+  // Whether the driver shades at the rates itself (GL_NV_shading_rate_image)
+  // with tiles of this size: then no emulation is needed.
+  static bool hardware_available(int tile) {
+    if (!epoxy_has_gl_extension("GL_NV_shading_rate_image")) return false;
+    GLint w = 0, h = 0;
+    glGetIntegerv(GL_SHADING_RATE_IMAGE_TEXEL_WIDTH_NV, &w);
+    glGetIntegerv(GL_SHADING_RATE_IMAGE_TEXEL_HEIGHT_NV, &h);
+    return w == tile && h == tile;
+  }
+
+  // The hardware path: the class of each tile is the index into a palette
+  // of the extension's rates (gl_nv_palette), bound as the shading-rate
+  // image while the frame is shaded once at native resolution: the driver
+  // runs one invocation per coarse pixel, coverage and depth stay per pixel.
+  // Not run here (no NVIDIA GPU was lent): scripts/gpu-bench.sh benches it
+  // beside the emulation (vrs.hardware=0) where one is.
+  FrameStats render_hardware(Scene& scene, const ShadingRateImage& m,
+                             const std::vector<std::uint8_t>& classes,
+                             const gpu::RenderTarget& target) {
+    const int W = target.width(), H = target.height();
+    if (!classes_ || grid_w_ != m.tiles_x || grid_h_ != m.tiles_y) {
+      classes_ = gpu::Texture::create_2d(GL_R8UI, m.tiles_x, m.tiles_y);
+      classes_.set_filter(GL_NEAREST, GL_NEAREST);
+      grid_w_ = m.tiles_x;
+      grid_h_ = m.tiles_y;
+    }
+    classes_.upload(m.tiles_x, m.tiles_y, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
+    const View view = View::full(W, H);
+    scene.prepass(view);
+    const auto& palette = gl_nv_palette();
+    const std::vector<GLenum> rates(palette.begin(), palette.end());
+    glShadingRateImagePaletteNV(0, 0, static_cast<GLsizei>(rates.size()), rates.data());
+    glBindShadingRateImageNV(classes_.id());
+    glEnable(GL_SHADING_RATE_IMAGE_NV);
+    kit_.shade(scene, view, kMapRect, target,
+               [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
+    glDisable(GL_SHADING_RATE_IMAGE_NV);
+    glBindShadingRateImageNV(0);
+    // The occlusion query counts pixels, not invocations: the shaded samples
+    // are the model's.
+    FrameStats s;
+    s.native_pixels = double(W) * H;
+    s.shaded_pixels = m.pixel_ratio() * s.native_pixels;
+    s.parts.push_back({"hardware rates", s.shaded_pixels});
+    return s;
+  }
+
   // The part of a class's view that `texels` (of its grid) span.
   static View bounds(const View& full, const std::vector<PixelRect>& texels, ShadingRate r) {
     PixelRect box{full.target_width, full.target_height, 0, 0};
@@ -140,6 +188,7 @@ class Vrs final : public Technique {
       classes[i] = static_cast<std::uint8_t>(k);
       ++count[static_cast<size_t>(k)];
     }
+    if (hardware_) return render_hardware(scene, m, classes, target);
     merge_small_classes(classes, count);
     std::array<bool, kClasses> present{};
     for (int k = 0; k < kClasses; ++k) present[size_t(k)] = count[size_t(k)] > 0;
@@ -306,7 +355,8 @@ class Vrs final : public Technique {
     const ShadingRateImage m = rates(g, display_.width_px, display_.height_px);
     return {{"native_radius_px", native_radius(m, g.gaze_px)},
             {"pixel_ratio", m.pixel_ratio()},
-            {"fraction_4x4", m.fraction({4, 4})}};
+            {"fraction_4x4", m.fraction({4, 4})},
+            {"hardware_path", hardware_ ? 1.0 : 0.0}};
   }
 
  private:
@@ -314,6 +364,7 @@ class Vrs final : public Technique {
   AcuityModel acuity_;
   int tile_;
   double min_class_;
+  bool hardware_;
   bool fixed_;
   Kit kit_;
   gpu::Texture classes_;
@@ -327,8 +378,9 @@ TechniqueInfo vrs_info() {
   TechniqueInfo t;
   t.name = "vrs";
   t.summary =
-      "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4), emulated: each "
-      "rate class shaded at its reduced resolution over its tiles, reconstructed in linear light.";
+      "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4): the driver's "
+      "(GL_NV_shading_rate_image) where it has it, else emulated: each rate class shaded at its "
+      "reduced resolution over its tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
       param("tile", "shading-rate tile size (8, 16 or 32)", "px", ParamType::Integer, 8, 32, 16),
@@ -342,6 +394,11 @@ TechniqueInfo vrs_info() {
       "present (each class costs the emulation a pass, and on mesh scenes the geometry, of its "
       "own; 0 = every class as the model gives it)",
       "", ParamType::Real, 0.0, 0.5, 0.02));
+  t.params.push_back(param("hardware",
+                           "shade with the driver's variable-rate shading "
+                           "(GL_NV_shading_rate_image) where it has the extension with this "
+                           "tile size; 0 = always the emulation",
+                           "", ParamType::Boolean, 0, 1, 1));
   t.make = construct<Vrs>();
   return t;
 }
