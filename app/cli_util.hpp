@@ -22,7 +22,7 @@ inline constexpr const char* kDefaultSize = "1920x1080";
 /// The techniques bench and demo measure unless told otherwise; those a scene
 /// cannot run (lodmask without meshes) are skipped with a note.
 inline constexpr const char* kDefaultTechniques =
-    "native,layered,logpolar,checkerboard,lodmask,inset";
+    "native,layered,logpolar,checkerboard,lodmask,inset,vrs";
 
 /// --quiet / --verbose, registered on every command (register_all_commands).
 enum class Verbosity { Quiet, Normal, Verbose };

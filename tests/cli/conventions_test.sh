@@ -36,7 +36,7 @@ check "bench --json prints results.json" 'json_ok "$tmp/b.json" && cmp -s <(pyth
 check "the default list skips lodmask on cheap, with a note" \
   'grep -q "skipping lodmask" "$tmp/b.err" && python3 -c "
 import json,sys; j=json.load(open(sys.argv[1])); t=[r[\"technique\"] for r in j[\"results\"]]
-sys.exit(0 if t==[\"native\",\"layered\",\"logpolar\",\"checkerboard\",\"inset\"] and \"lodmask\" in j[\"skipped\"][0] else 1)" "$tmp/b.json"'
+sys.exit(0 if t==[\"native\",\"layered\",\"logpolar\",\"checkerboard\",\"inset\",\"vrs\"] and \"lodmask\" in j[\"skipped\"][0] else 1)" "$tmp/b.json"'
 check "results.json records the full command line" \
   'python3 -c "import json,sys; c=json.load(open(sys.argv[1]))[\"command\"]; sys.exit(0 if \"--size 64x36\" in c and \"--frames 1\" in c and \"--json\" in c else 1)" "$tmp/b.json"'
 "$FOVEATE" bench --scene cheap --size 64x36 --frames 1 --warmup 0 --no-metrics --techniques lodmask --out "$tmp/b2" > /dev/null 2> "$tmp/err.txt"; rc=$?
