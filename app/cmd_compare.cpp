@@ -157,9 +157,8 @@ void register_compare(CLI::App& app) {
   sub->add_option("reference", a->reference, "Reference image (the native frame), PNG")->required();
   sub->add_option("test", a->test, "Test image (e.g. the foveated frame), same size")->required();
   sub->add_option("--display", a->display,
-                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, "
-                  "hmd-pimax-crystal, hmd-rift-dk1, hmd-quest2-lens) or JSON file; its "
-                  "field of view is kept at the images' size")
+                  "Display preset (" + Display::preset_names() +
+                      ") or JSON file; its field of view is kept at the images' size")
       ->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5), inside the images; default "

@@ -264,9 +264,9 @@ void register_plan(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "plan", "Plan eccentricity layers (Guenter et al. 2012) for a display and acuity slope");
   sub->add_option("--display", a->display,
-                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, "
-                  "hmd-pimax-crystal; with a lens: hmd-rift-dk1, hmd-quest2-lens) or JSON file; "
-                  "through a lens no layer samples finer than the panel shows")
+                  "Display preset (" + Display::preset_names() +
+                      ") or JSON file; through a lens (hmd-rift-dk1, hmd-quest2-lens) no layer "
+                      "samples finer than the panel shows")
       ->capture_default_str();
   sub->add_option("--quality", a->quality,
                   "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");

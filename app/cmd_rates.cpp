@@ -243,9 +243,9 @@ void register_rates(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "rates", "Write the shading-rate image (variable-rate shading) the acuity model gives");
   sub->add_option("--display", a->display,
-                  "Display preset (desktop-1080p, desktop-27-4k, hmd-quest3, hmd-quest2, "
-                  "hmd-pimax-crystal; with a lens: hmd-rift-dk1, hmd-quest2-lens) or JSON file; "
-                  "through a lens no tile is shaded finer than the panel shows")
+                  "Display preset (" + Display::preset_names() +
+                      ") or JSON file; through a lens (hmd-rift-dk1, hmd-quest2-lens) no tile is "
+                      "shaded finer than the panel shows")
       ->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");

@@ -94,7 +94,8 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required,
                   "1280x720 on a desktop display foveation has little to save, and a note says so)")
       ->capture_default_str();
   sub->add_option("--display", a.display,
-                  "Display preset or JSON file (its field of view is kept at --size)")
+                  "Display preset (" + Display::preset_names() +
+                      ") or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
   sub->add_option("--quality", a.quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", a.slope, "Custom MAR slope m (instead of --quality)");
@@ -132,10 +133,11 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required,
                            : std::string(default_date) + " (fixed, for reproducible frames)"));
   if (!stereo) return;
   sub->add_flag("--stereo", a.stereo,
-                "Render both eyes of a stereo head-mounted display (--display hmd-quest2, "
-                "hmd-pimax-crystal or a JSON file with fov_deg and ipd_mm), side by side, the "
-                "left eye on the left; --size is one eye's, and --gaze the combined gaze (the "
-                "cyclopean eye's, its centre straight ahead)");
+                "Render both eyes of a stereo head-mounted display (--display " +
+                    Display::preset_names(true) +
+                    " or a JSON file with fov_deg and ipd_mm), side by side, the left eye on the "
+                    "left; --size is one eye's, and --gaze the combined gaze (the cyclopean "
+                    "eye's, its centre straight ahead)");
   sub->add_option("--vergence", a.vergence,
                   "With --stereo: the distance in metres at which both eyes' gaze converges "
                   "(default inf: parallel, each eye looking the same way)");

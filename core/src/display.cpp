@@ -295,6 +295,16 @@ const std::vector<Display>& Display::presets() {
   return all;
 }
 
+std::string Display::preset_names(bool stereo_only) {
+  std::string out;
+  for (const Display& d : presets()) {
+    if (stereo_only && !d.stereo()) continue;
+    if (!out.empty()) out += ", ";
+    out += d.name;
+  }
+  return out;
+}
+
 Display Display::from_json(const nlohmann::json& j, const std::string& where) {
   JsonReader r(j, where);
   Display d;

@@ -13,7 +13,8 @@ StereoDisplay StereoDisplay::from(const Display& left_eye) {
   if (!left_eye.fov.set()) {
     throw Error(w +
                 ": not a stereo head-mounted display (it has no per-eye angles fov_deg; stereo "
-                "presets: hmd-quest2, hmd-pimax-crystal, hmd-rift-dk1, hmd-quest2-lens)");
+                "presets: " +
+                Display::preset_names(true) + ")");
   }
   if (!(left_eye.ipd_mm > 0.0)) {
     throw Error(w + ": a stereo display needs an inter-pupillary distance ipd_mm > 0, got " +

@@ -205,6 +205,11 @@ TEST(Stereo, BadInputIsNamed) {
   expect_error([&] { (void)stereo_gaze(s, {100, 50}, -1.0); }, "got -1");
   expect_error([] { (void)StereoDisplay::from(Display::load("hmd-quest3")); },
                "display 'hmd-quest3': not a stereo head-mounted display");
+  // The error lists the stereo presets, from the preset table itself.
+  expect_error([] { (void)StereoDisplay::from(Display::load("hmd-quest3")); },
+               "stereo presets: hmd-quest2, hmd-pimax-crystal, hmd-rift-dk1, hmd-quest2-lens)");
+  EXPECT_EQ(Display::preset_names().find("desktop-1080p, "), 0u);
+  EXPECT_EQ(Display::preset_names(true).find("desktop"), std::string::npos);
   Display d = test_eye();
   d.ipd_mm = 0.0;
   expect_error([&] { (void)StereoDisplay::from(d); }, "ipd_mm > 0");

@@ -125,6 +125,9 @@ struct Display {
   /// with a lens hmd-rift-dk1 (the Oculus SDK's published lens) and
   /// hmd-quest2-lens (hmd-quest2 with an example lens, see the README).
   static const std::vector<Display>& presets();
+  /// The presets' names, comma-separated, in order (only the stereo ones
+  /// when `stereo_only`): for help texts and error messages.
+  static std::string preset_names(bool stereo_only = false);
   /// A preset name or a path to a JSON file.
   static Display load(const std::string& name_or_path);
   static Display from_json(const nlohmann::json& j, const std::string& where = "display");
