@@ -43,7 +43,9 @@ class Inset final : public Technique {
     // Periphery: the whole screen at `scale` per axis.
     const int pw = std::max(1, static_cast<int>(std::lround(W * scale_)));
     const int ph = std::max(1, static_cast<int>(std::lround(H * scale_)));
-    const View pv{0, 0, double(W), double(H), pw, ph, 1.0 / scale_};
+    // Native's geometric LOD (pixel scale 1): a coarser mesh would move
+    // silhouettes by more than the periphery's MAR hides.
+    const View pv{0, 0, double(W), double(H), pw, ph, 1.0};
     scene.prepass(pv);
     periphery_.ensure(pw, ph);
     const double np =

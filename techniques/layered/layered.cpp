@@ -61,8 +61,10 @@ class Layered final : public Technique {
         jitter_(v.boolean("jitter")),
         samples_(v.integer("samples")),
         history_(v.real("history")),
+        history_screen_(v.real("history_screen")),
         reproject_(v.boolean("reproject")),
-        msaa_(v.integer("msaa")) {
+        msaa_(v.integer("msaa")),
+        layer_lod_(v.boolean("lod")) {
     PlannerOptions po;
     po.layers = v.integer("layers");
     po.grid_step_deg = v.real("grid_step");
@@ -140,7 +142,10 @@ class Layered final : public Technique {
       }
       const double s = L.sampling_factor;
       View v;  // unjittered
-      v.pixel_scale = s;
+      // Geometric LOD: native's unless asked for. A coarser mesh moves
+      // silhouettes and normals by more than the layer's MAR allows.
+      const double lod_scale = layer_lod_ ? s : 1.0;
+      v.pixel_scale = lod_scale;
       if (i + 1 < n) {
         const InnerSize sz = inner_size(i, gaze);
         // Origins on the native pixel grid: a layer at s = 1 samples exactly
@@ -152,7 +157,7 @@ class Layered final : public Technique {
         v.target_width = v.target_height = sz.side;
         st.radius = sz.blend_from;
       } else {
-        v = View{0, 0, double(W), double(H), L.width_px, L.height_px, s};
+        v = View{0, 0, double(W), double(H), L.width_px, L.height_px, lod_scale};
         st.radius = 0;
       }
       st.centre = g;
@@ -180,7 +185,7 @@ class Layered final : public Technique {
           });
       stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
       stats.shaded_pixels += shaded;
-      if (slots_i > 1 || (history_ > 0 && s > 1.0)) {
+      if (slots_i > 1 || (std::max(history_, history_screen_) > 0 && s > 1.0)) {
         accumulate(scene, st, jv, rect, slots_i, phase, !moved && key && key == st.image_key);
       }
       keep_positions(scene, st, jv, rect, i > 0 && half_rate_);
@@ -188,7 +193,7 @@ class Layered final : public Technique {
       st.rect = rect;
       st.side = {v.target_width, v.target_height};
       st.slot_count = slots_i;
-      st.temporal = slots_i > 1 || (history_ > 0 && s > 1.0);
+      st.temporal = slots_i > 1 || (std::max(history_, history_screen_) > 0 && s > 1.0);
       ++st.updates;
       st.valid = true;
     }
@@ -303,7 +308,9 @@ class Layered final : public Technique {
       p.set("u_same_image", same_image ? 1 : 0);
       p.set("u_rect", float(rect[0]), float(rect[1]), float(rect[2]), float(rect[3]));
       p.set("u_prev_rect", float(prev[0]), float(prev[1]), float(prev[2]), float(prev[3]));
-      p.set("u_blend", float(1.0 - history_));
+      // Without the scene's camera and depth the history is found at the
+      // same screen position and trails the motion: it gets less weight.
+      p.set("u_blend", float(1.0 - (reproject ? history_ : history_screen_)));
       if (reproject) {
         p.set_mat4("u_view_proj", vp->data());
         p.set_mat4("u_prev_view_proj", st.view_proj.data());
@@ -424,8 +431,10 @@ class Layered final : public Technique {
   bool half_rate_, jitter_;
   int samples_;
   double history_;
+  double history_screen_;
   bool reproject_;
   int msaa_;
+  bool layer_lod_;
   LayerPlan plan_;
   Kit kit_;
   std::array<LayerState, kMaxLayers> state_;
@@ -458,7 +467,12 @@ TechniqueInfo layered_info() {
             "", ParamType::Integer, 0, kMaxSlots, 0),
       param("history",
             "weight of the reprojected history when the image moves (1 - the new sample's weight)",
-            "", ParamType::Real, 0, 0.95, 0.75),
+            "", ParamType::Real, 0, 0.95, 0.5),
+      param("history_screen",
+            "the same where history is not reprojected (reproject=0, or Shadertoy scenes, which "
+            "have no camera and depth to reproject by): found at the same screen position, it "
+            "trails the motion",
+            "", ParamType::Real, 0, 0.95, 0.25),
       param("reproject",
             "reverse-reproject history through the scene camera and depth when the scene has them "
             "(0 = screen space)",
@@ -467,6 +481,11 @@ TechniqueInfo layered_info() {
             "MSAA samples of mesh scenes' layers (1 = off; 4 as in the paper; native has none, so "
             "off by default; at most what the GL implementation supports, checked at run time)",
             "samples", ParamType::Integer, 1, 8, 1),
+      param("lod",
+            "coarsen mesh scenes' geometric LOD by each layer's sampling factor (0 = native's LOD "
+            "in every layer, as the paper's inner and middle layers: coarser meshes move "
+            "silhouettes and normals by more than the MAR hides)",
+            "", ParamType::Boolean, 0, 1, 0),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
   t.make = construct<Layered>();

@@ -30,6 +30,38 @@ vec3 to_ycocg(vec3 c) {
 }
 vec3 from_ycocg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
 
+// The previous resolve at `uv`, Catmull-Rom filtered: a bilinear fetch would
+// soften the history a little more at every reprojection, so that under
+// motion it drifts towards a blur the eye can see. Nine bilinear taps (the
+// two middle weights of each axis folded into one), negative lobes clamped.
+// Alpha (the sample count) comes from the middle tap: exact on the unmoved
+// grid, where the weights are (0, 1, 0, 0).
+vec4 history_catmull_rom(vec2 uv) {
+  vec2 size = vec2(textureSize(u_prev, 0));
+  vec2 p = uv * size - 0.5;
+  vec2 base = floor(p);
+  vec2 f = p - base;
+  vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+  vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+  vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+  vec2 w3 = f * f * (-0.5 + 0.5 * f);
+  vec2 w12 = w1 + w2;
+  vec2 t0 = (base - 0.5) / size;
+  vec2 t12 = (base + 0.5 + w2 / w12) / size;
+  vec2 t3 = (base + 2.5) / size;
+  vec4 mid = texture(u_prev, t12);
+  vec3 c = mid.rgb * (w12.x * w12.y);
+  c += texture(u_prev, vec2(t0.x, t12.y)).rgb * (w0.x * w12.y);
+  c += texture(u_prev, vec2(t3.x, t12.y)).rgb * (w3.x * w12.y);
+  c += texture(u_prev, vec2(t12.x, t0.y)).rgb * (w12.x * w0.y);
+  c += texture(u_prev, vec2(t12.x, t3.y)).rgb * (w12.x * w3.y);
+  c += texture(u_prev, t0).rgb * (w0.x * w0.y);
+  c += texture(u_prev, vec2(t3.x, t0.y)).rgb * (w3.x * w0.y);
+  c += texture(u_prev, vec2(t0.x, t3.y)).rgb * (w0.x * w3.y);
+  c += texture(u_prev, t3).rgb * (w3.x * w3.y);
+  return vec4(max(c, vec3(0.0)), mid.a);
+}
+
 vec4 foveate_temporal(vec2 prev_screen) {
   ivec2 size = textureSize(u_sample, 0);
   ivec2 ip = ivec2(gl_FragCoord.xy);
@@ -38,7 +70,7 @@ vec4 foveate_temporal(vec2 prev_screen) {
   vec2 huv = (prev_screen - u_prev_rect.xy) / u_prev_rect.zw;
   if (any(lessThan(huv, vec2(0.0))) || any(greaterThan(huv, vec2(1.0))))
     return vec4(x, 1.0 / 255.0);
-  vec4 prev = texture(u_prev, huv);
+  vec4 prev = history_catmull_rom(huv);
   if (u_same_image != 0) {
     int n = u_slot_count;
     float count = floor(prev.a * 255.0 + 0.5);

@@ -264,13 +264,8 @@ class Vrs final : public Technique {
       glClearNamedFramebufferfi(t.framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
       kit_.rect_pass(mask_program, texels, t, mask);
       // The class's grid: texel i covers screen pixels [i rw, (i + 1) rw).
-      const View view{0,
-                      0,
-                      double(tw * r.width),
-                      double(th * r.height),
-                      tw,
-                      th,
-                      double(std::max(r.width, r.height))};
+      const View view{0,  0,  double(tw * r.width), double(th * r.height), tw,
+                      th, 1.0};  // native's geometric LOD, as hardware VRS keeps
       const View box = bounds(view, texels, r);
       gpu::PassState draw = shade;
       draw.scissor = {int(box.x0) / r.width, int(box.y0) / r.height, int(box.x1 - box.x0) / r.width,

@@ -56,8 +56,11 @@ struct View {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   int target_width = 0;
   int target_height = 0;
-  /// Size of one target pixel in native pixels (a layer's sampling factor s):
-  /// geometric LOD sees it.
+  /// Geometric LOD scale: the scene draws meshes as coarse as for a target
+  /// whose pixels are this many native pixels (a layer's sampling factor s).
+  /// Techniques pass 1 (native's LOD) unless coarser geometry is their
+  /// point: a coarser mesh moves silhouettes and normals by more than a
+  /// subsampled layer's MAR hides.
   double pixel_scale = 1.0;
   /// Multisample antialiasing of the prepass (mesh scenes): 1 = off. With
   /// more, the scene's shading GLSL is compiled with FOVEATE_GBUFFER_SAMPLES
