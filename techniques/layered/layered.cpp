@@ -64,7 +64,7 @@ class Layered final : public Technique {
         history_screen_(v.real("history_screen")),
         reproject_(v.boolean("reproject")),
         msaa_(v.integer("msaa")),
-        layer_lod_(v.boolean("lod")) {
+        layer_lod_(v.integer("lod")) {
     PlannerOptions po;
     po.layers = v.integer("layers");
     po.grid_step_deg = v.real("grid_step");
@@ -144,7 +144,7 @@ class Layered final : public Technique {
       View v;  // unjittered
       // Geometric LOD: native's unless asked for. A coarser mesh moves
       // silhouettes and normals by more than the layer's MAR allows.
-      const double lod_scale = layer_lod_ ? s : 1.0;
+      const double lod_scale = layer_lod_ == 2 || (layer_lod_ == 1 && i + 1 == n) ? s : 1.0;
       v.pixel_scale = lod_scale;
       if (i + 1 < n) {
         const InnerSize sz = inner_size(i, gaze);
@@ -434,7 +434,7 @@ class Layered final : public Technique {
   double history_screen_;
   bool reproject_;
   int msaa_;
-  bool layer_lod_;
+  int layer_lod_;
   LayerPlan plan_;
   Kit kit_;
   std::array<LayerState, kMaxLayers> state_;
@@ -482,10 +482,11 @@ TechniqueInfo layered_info() {
             "off by default; at most what the GL implementation supports, checked at run time)",
             "samples", ParamType::Integer, 1, 8, 1),
       param("lod",
-            "coarsen mesh scenes' geometric LOD by each layer's sampling factor (0 = native's LOD "
-            "in every layer, as the paper's inner and middle layers: coarser meshes move "
-            "silhouettes and normals by more than the MAR hides)",
-            "", ParamType::Boolean, 0, 1, 0),
+            "geometric LOD of mesh scenes' subsampled layers: 0 = native's in every layer; 1 = "
+            "the outer layer's coarsened by its sampling factor (the paper coarsens only the outer "
+            "layer); 2 = every subsampled layer's. Coarser meshes move silhouettes and bend "
+            "normals by more than the MAR hides",
+            "", ParamType::Integer, 0, 2, 0),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
   t.make = construct<Layered>();
