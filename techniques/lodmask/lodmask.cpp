@@ -2,8 +2,8 @@
 // (full, about 10 % and 1 % of the triangles) fill the G-buffer through
 // stencil masks around the gaze (full inside the inner circle, mid in the
 // ring to the outer one, coarse beyond), and lighting is deferred. The
-// circles come from the acuity model: the eye resolves half the display's
-// detail beyond e where w(e) = 2 w*, a quarter beyond w(e) = 4 w*.
+// circles come from the acuity model: a LOD may show where half a resolvable
+// cycle covers its silhouette error (the params below say how).
 //
 // The stencil marks every pixel's LOD before any is drawn and each LOD writes
 // only its own pixels, so that inside the full-detail circle the image is
@@ -175,19 +175,33 @@ TechniqueInfo lodmask_info() {
   t.source = "Knapik and McGowen, Foveal Rendering, 2016";
   t.needs.meshes = true;
   t.needs.mesh_lods = true;
-  // The eye resolves half the display's detail beyond e where w(e) = 2 w*, a
-  // quarter beyond w(e) = 4 w*.
+  // A coarser LOD moves silhouettes by its geometric (chord) error. Each LOD
+  // has about a tenth of the previous one's triangles (Knapik and McGowen),
+  // and on a smooth surface the chord error grows as 1 / triangles, so LOD k
+  // errs by about kNativeErrorPx * 10^k pixels if native's LOD errs by half a
+  // pixel. It may be drawn only where that is at most half a resolvable cycle
+  // (the rule that places checkerboard's regions): w(e) ppd >= 2 * error, that
+  // is w(e) >= error * w* (w* = 2 / ppd degrees per cycle).
+  constexpr double kNativeErrorPx = 0.5, kLevelRatio = 10.0;
+  const auto radius_for = [](const TechniqueConfig& c, int level) {
+    const double error_px = kNativeErrorPx * std::pow(kLevelRatio, level);
+    return std::min(90.0, c.acuity.eccentricity_for_mar(error_px * c.display.sharpness_deg()));
+  };
   t.params = {
-      {"inner_deg", "radius of the full-detail circle; default where w(e) = 2 w*", "deg",
-       ParamType::Real, 0.0, 90.0, 3.0,
-       [](const TechniqueConfig& c, const ParamValues&) {
-         return std::max(0.5, c.acuity.eccentricity_for_mar(2.0 * c.display.sharpness_deg()));
+      {"inner_deg",
+       "radius of the full-detail circle; default where half a resolvable cycle covers the mid "
+       "LOD's silhouette error (about 10 x native's half pixel: w(e) = 5 w*)",
+       "deg", ParamType::Real, 0.0, 90.0, 3.0,
+       [radius_for](const TechniqueConfig& c, const ParamValues&) {
+         return std::max(2.5, radius_for(c, 1));
        }},
-      {"outer_deg", "radius of the mid-detail circle; default where w(e) = 4 w*", "deg",
-       ParamType::Real, 0.0, 90.0, 6.0,
-       [](const TechniqueConfig& c, const ParamValues& v) {
-         return std::max(v.real("inner_deg"),
-                         c.acuity.eccentricity_for_mar(4.0 * c.display.sharpness_deg()));
+      {"outer_deg",
+       "radius of the mid-detail circle; default where half a resolvable cycle covers the "
+       "coarse LOD's (100 x: w(e) = 50 w*; beyond the screen on the built-in displays, so the "
+       "coarse LOD is not drawn)",
+       "deg", ParamType::Real, 0.0, 90.0, 6.0,
+       [radius_for](const TechniqueConfig& c, const ParamValues& v) {
+         return std::max(v.real("inner_deg"), radius_for(c, 2));
        }},
   };
   t.params.push_back(param(

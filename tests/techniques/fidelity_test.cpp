@@ -128,6 +128,11 @@ TEST_F(Fidelity, CheckerboardKeptQuadsDoNotStandOut) {
 
 // ---------------------------------------------------------------- lodmask
 
+// At 640x360 the default circles cover the screen (its pixels are coarse
+// enough that a coarser LOD's silhouettes would show): radii that put the
+// borders on screen, as the defaults do at 1920x1080.
+const std::map<std::string, double> kLodBorders = {{"inner_deg", 10}, {"outer_deg", 20}};
+
 TEST_F(Fidelity, LodmaskFullDetailCircleIsNativeBackgroundIncluded) {
   // A torus seen face on: its coarse LODs cut the hole with chords and cover
   // background that the full-detail mesh leaves open. Inside the full-detail
@@ -142,7 +147,7 @@ TEST_F(Fidelity, LodmaskFullDetailCircleIsNativeBackgroundIncluded) {
                         Case{"guenter", {150, 250}}}) {
     auto scene = load_scene(c.scene);
     const Image ref = native(*scene, W, H);
-    auto t = make_technique("lodmask", config(W, H));
+    auto t = make_technique("lodmask", config(W, H, kLodBorders));
     const Image img = run(*t, *scene, c.gaze);
     const double inner = t->display().radius_px_at(t->values().real("inner_deg"));
     EXPECT_GE(inner, t->display().radius_px_at(2.5));
@@ -158,7 +163,7 @@ TEST_F(Fidelity, LodmaskBordersHoldStillUnderSmallGazeMoves) {
   // (a saccade) moves them, and the fovea around the new gaze is native.
   const int W = 640, H = 360;
   auto scene = load_scene("guenter");
-  auto t = make_technique("lodmask", config(W, H));
+  auto t = make_technique("lodmask", config(W, H, kLodBorders));
   const double hold = t->display().radius_px_at(t->values().real("hold_deg"));
   const Vec2d g0{300, 190};
   const Image first = run(*t, *scene, g0);
@@ -176,7 +181,8 @@ TEST_F(Fidelity, LodmaskBordersHoldStillUnderSmallGazeMoves) {
   const double inner = t->display().radius_px_at(t->values().real("inner_deg"));
   EXPECT_TRUE(within_golden(compare_disc(native(*scene, W, H), moved, far, inner)));
   // Without holding, the same small moves move the borders.
-  auto follow = make_technique("lodmask", config(W, H, {{"hold_deg", 0}}));
+  auto follow = make_technique(
+      "lodmask", config(W, H, {{"hold_deg", 0}, {"inner_deg", 10}, {"outer_deg", 20}}));
   const Image a = run(*follow, *scene, g0);
   const Image b = run(*follow, *scene, {g0.x + 0.6 * hold, g0.y});
   EXPECT_GT(test::compare_images(a, b, 0).max_error, 0);

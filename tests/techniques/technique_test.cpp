@@ -443,7 +443,7 @@ TEST_F(Techniques, GazeAtCornersAndOffScreen) {
 TEST_F(Techniques, LodmaskFoveaMatchesNativeOnMeshes) {
   auto scene = load_scene("guenter");
   const Image ref = native(*scene);
-  auto t = make_technique("lodmask", config());
+  auto t = make_technique("lodmask", config({{"inner_deg", 10}, {"outer_deg", 20}}));
   const Vec2d gaze{320, 200};
   FrameStats s;
   const Image img = run(*t, *scene, gaze, &s);
@@ -612,7 +612,7 @@ TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
 
 TEST_F(Techniques, LodmaskSaysItNeedsMeshes) {
   auto scene = load_scene("raymarch");
-  auto t = make_technique("lodmask", config());
+  auto t = make_technique("lodmask", config({{"inner_deg", 10}, {"outer_deg", 20}}));
   try {
     run(*t, *scene, {320, 180});
     FAIL() << "expected an error";
@@ -649,6 +649,25 @@ TEST_F(Techniques, DefaultsComeFromTheAcuityModel) {
   EXPECT_GT(get("inset", a, "fovea_deg"), get("inset", b, "fovea_deg"));
   EXPECT_LT(get("logpolar", a, "sigma"), get("logpolar", b, "sigma"));
   EXPECT_GT(get("lodmask", a, "inner_deg"), get("lodmask", b, "inner_deg"));
+}
+
+TEST_F(Techniques, LodmaskCirclesLieWhereHalfACycleCoversTheLodsSilhouetteError) {
+  // LOD k errs by about 0.5 px * 10^k (a tenth of the triangles per level,
+  // chord error ~ 1 / triangles); it may show where w(e) ppd >= 2 * error,
+  // i.e. w(e) >= error * w*. Quality A: w(e) = 0.0275 e + 1/48.
+  auto e_for = [](double w) { return (w - 1.0 / 48.0) / 0.0275; };
+  for (const Size& sz : {Size{1920, 1080}, Size{640, 360}}) {
+    TechniqueConfig c = config();
+    c.display = Display::load("desktop-1080p").resized(sz.w, sz.h);
+    const ParamValues v = resolve_parameters(technique_info("lodmask"), c);
+    const double ws = c.display.sharpness_deg();
+    EXPECT_NEAR(v.real("inner_deg"), e_for(5 * ws), 1e-9) << sz.w;
+    EXPECT_EQ(v.real("outer_deg"), 90.0) << sz.w;  // 50 w*: beyond the screen
+  }
+  // 1920x1080: w* = 0.0516 deg, the mid LOD from 8.6 deg out.
+  TechniqueConfig c = config();
+  c.display = Display::load("desktop-1080p");
+  EXPECT_NEAR(resolve_parameters(technique_info("lodmask"), c).real("inner_deg"), 8.63, 0.02);
 }
 
 TEST_F(Techniques, EveryDeclaredDefaultLiesInItsRange) {
@@ -719,7 +738,7 @@ TEST_F(Techniques, LatencyGrowsEveryFovea) {
 
 TEST_F(Techniques, LodmaskCountsPixelsPerLod) {
   auto scene = load_scene("guenter");
-  auto t = make_technique("lodmask", config());
+  auto t = make_technique("lodmask", config({{"inner_deg", 10}, {"outer_deg", 20}}));
   const Vec2d gaze{600, 20};  // near a corner: the circles are clipped by the screen
   FrameStats s;
   run(*t, *scene, gaze, &s);
