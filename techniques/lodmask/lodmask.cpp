@@ -87,14 +87,19 @@ class LodMask final : public Technique {
     // for the part of the screen its circle spans (geometry outside it is
     // culled, and the scissor keeps the rasteriser within it), so no
     // full-screen pass is paid beyond the coarse LOD's.
+    // Where the outer circle covers the screen (the default on the built-in
+    // displays: the coarse LOD's error would show everywhere), the ring is
+    // everything outside the inner circle and the coarse LOD is not drawn.
+    const bool outer_covers =
+        std::max(std::hypot(std::max(g.x, W - g.x), std::max(g.y, H - g.y)), 0.0) <= r_out;
     scene.prepass_begin(view);
     mask(g, r_in, W, H, GL_ALWAYS, 2, GL_REPLACE);
-    mask(g, r_out, W, H, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1
+    if (!outer_covers) mask(g, r_out, W, H, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1
     gpu::PassState draw;
     draw.stencil_func = GL_EQUAL;
-    for (int lod = 0; lod < 3; ++lod) {
+    for (int lod = 0; lod < (outer_covers ? 2 : 3); ++lod) {
       const View part = lod == 2 ? view : bounds(view, g, lod == 0 ? r_in : r_out);
-      draw.stencil_ref = 2 - lod;
+      draw.stencil_ref = outer_covers && lod == 1 ? 0 : 2 - lod;
       draw.scissor = {int(part.x0), int(part.y0), int(part.x1 - part.x0), int(part.y1 - part.y0)};
       gpu::apply(draw);
       scene.prepass_draw(part, lod);
