@@ -17,6 +17,7 @@
 #include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "gl_fixture.hpp"
+#include "image_compare.hpp"
 #include "srgb.hpp"
 
 using namespace foveate;
@@ -229,6 +230,26 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
                native_error = acuity_rmse(native(*scene, 32));
   EXPECT_LE(layered_error, native_error + 1.0) << layered_error << " vs native " << native_error;
   std::filesystem::remove(path);
+}
+
+TEST_F(Techniques, LayeredShowsAMovingImageWithoutDepthAsRendered) {
+  // raymarch orbits and has no camera and depth to reproject history by:
+  // jitter would be noise and history lag, so while it moves the layers are
+  // shown as rendered, unjittered: the frames equal those of a layered with
+  // jitter off. With screen-space history they would not.
+  auto scene = load_scene("raymarch");
+  auto a = make_technique("layered", config());
+  auto b = make_technique("layered", config({{"jitter", 0}}));
+  auto c = make_technique("layered", config({{"history_screen", 0.25}}));
+  const Vec2d gaze{kW / 2.0, kH / 2.0};
+  double differs = 0;
+  for (int k = 0; k < 4; ++k) {
+    const Image ia = run(*a, *scene, gaze, nullptr, k), ib = run(*b, *scene, gaze, nullptr, k),
+                ic = run(*c, *scene, gaze, nullptr, k);
+    EXPECT_EQ(test::compare_images(ia, ib, 0).max_error, 0) << k;
+    differs = std::max(differs, double(test::compare_images(ia, ic, 0).max_error));
+  }
+  EXPECT_GT(differs, 0);
 }
 
 TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
