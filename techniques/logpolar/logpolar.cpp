@@ -30,7 +30,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <optional>
 #include <tuple>
 
 #include "../common/kit.hpp"
@@ -199,7 +201,17 @@ class LogPolar final : public Technique {
     if (buffer_.width() != bw || buffer_.height() != bh) valid_ = false;
     buffer_.ensure(bw, bh);
     buffer_.clear(0, 0, 0, 0);
-    const bool jitter = history_ > 0.0;
+    // Temporal antialiasing needs history that lines up: reprojected through
+    // the scene's camera and depth, or an image that holds still. A moving
+    // image with neither (Shadertoy scenes) would only get jitter noise and
+    // lag (acuity error 3.56 -> 2.29 codes on raymarch without it): its
+    // buffer is shown as shaded, with no temporal pass.
+    const auto vp = scene.view_projection();
+    const std::optional<std::uint64_t> key = scene.image_key();
+    const bool still = key && key == last_key_;
+    const bool temporal = history_ > 0.0 && (vp.has_value() || still);
+    last_key_ = key;
+    const bool jitter = temporal;
     const double jx = jitter ? halton(frame.frame, 2) - 0.5 : 0.0;
     const double jy = jitter ? halton(frame.frame, 3) - 0.5 : 0.0;
     const auto set_mapping = [&](const gpu::Program& p) {
@@ -250,8 +262,7 @@ class LogPolar final : public Technique {
     const int next = 1 - latest_;
     gpu::RenderTarget& out = history_targets_[static_cast<size_t>(next)];
     out.ensure(bw, bh, GL_RGBA16F);
-    const bool blend = history_ > 0.0 && valid_;
-    const auto vp = scene.view_projection();
+    const bool blend = temporal && valid_;
     const bool reproject = blend && vp && has_view_proj_;
     const auto set_temporal = [&](const gpu::Program& p, gpu::Samplers& samplers) {
       samplers.bind(p, "u_current", buffer_.color());
@@ -276,11 +287,14 @@ class LogPolar final : public Technique {
     if (reproject) {
       kit_.scene_pass(scene, native, kit_.scene_program(scene, "logpolar/temporal_reproject.frag"),
                       out, {}, set_temporal);
-    } else {
+    } else if (temporal) {
       kit_.pass(kit_.fullscreen("logpolar/temporal.frag"), out, {}, set_temporal);
     }
-    latest_ = next;
-    valid_ = true;
+    if (temporal) latest_ = next;
+    const gpu::RenderTarget& shown = temporal ? out : buffer_;
+    // Without a temporal pass this frame leaves no history: the next one that
+    // has a still image (or a camera to reproject by) starts afresh.
+    valid_ = temporal;
     prev_gaze_ = g;
     prev_L_ = L;
     has_view_proj_ = vp.has_value();
@@ -290,9 +304,9 @@ class LogPolar final : public Technique {
     //    the native disc.
     kit_.pass(kit_.fullscreen("logpolar/inverse.frag"), target, {},
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                samplers.bind(p, "u_buffer", out.color());
+                samplers.bind(p, "u_buffer", shown.color());
                 // Without a disc on the screen the buffer stands in (never read).
-                samplers.bind(p, "u_fovea", has_fovea ? fovea_.color() : out.color());
+                samplers.bind(p, "u_fovea", has_fovea ? fovea_.color() : shown.color());
                 p.set("u_has_fovea", has_fovea ? 1 : 0);
                 p.set("u_fovea_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
                 p.set("u_disc", float(r_native), float(band), float(r_native));
@@ -342,6 +356,7 @@ class LogPolar final : public Technique {
   std::array<gpu::RenderTarget, 2> history_targets_;
   int latest_ = 0;
   bool valid_ = false;
+  std::optional<std::uint64_t> last_key_;
   Vec2d prev_gaze_{};
   float prev_L_ = 1.0f;
   bool has_view_proj_ = false;

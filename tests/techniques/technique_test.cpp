@@ -252,6 +252,26 @@ TEST_F(Techniques, LayeredShowsAMovingImageWithoutDepthAsRendered) {
   EXPECT_GT(differs, 0);
 }
 
+TEST_F(Techniques, LogpolarShowsAMovingImageWithoutDepthAsShaded) {
+  // The same for logpolar's temporal level: on raymarch while it moves the
+  // buffer is shown as shaded (frames equal to temporal=0); on a mesh scene,
+  // whose history is reprojected, the temporal level runs.
+  const Vec2d gaze{kW / 2.0, kH / 2.0};
+  auto frames_differ = [&](Scene& scene) {
+    auto a = make_technique("logpolar", config());
+    auto b = make_technique("logpolar", config({{"temporal", 0}}));
+    int worst = 0;
+    for (int k = 0; k < 4; ++k) {
+      worst = std::max(worst, test::compare_images(run(*a, scene, gaze, nullptr, k),
+                                                   run(*b, scene, gaze, nullptr, k), 0)
+                                  .max_error);
+    }
+    return worst;
+  };
+  EXPECT_EQ(frames_differ(*load_scene("raymarch")), 0);
+  EXPECT_GT(frames_differ(*load_scene("guenter")), 0);
+}
+
 TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
   auto scene = load_scene("cheap");
   auto t = make_technique("layered", config());
