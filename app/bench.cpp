@@ -22,19 +22,13 @@ namespace foveate::app {
 
 namespace {
 
-double mean_of(const std::vector<double>& v) {
-  double sum = 0;
-  for (double x : v) sum += x;
-  return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
-}
-
 // 95 % bootstrap interval of mean(native) / mean(technique), resampling
 // frames in pairs (the same frames were rendered by both), fixed seed.
 std::pair<double, double> speedup_interval(const std::vector<double>& native,
                                            const std::vector<double>& tech) {
   const size_t n = std::min(native.size(), tech.size());
   if (n < 2) {
-    const double s = mean_of(native) / mean_of(tech);
+    const double s = mean(native) / mean(tech);
     return {s, s};
   }
   std::mt19937 rng(12345);
@@ -47,7 +41,7 @@ std::pair<double, double> speedup_interval(const std::vector<double>& native,
       a[k] = native[i];
       b[k] = tech[i];
     }
-    ratios.push_back(mean_of(a) / mean_of(b));
+    ratios.push_back(mean(a) / mean(b));
   }
   return {quantile(ratios, 0.025), quantile(ratios, 0.975)};
 }
@@ -469,14 +463,14 @@ BenchResult run_bench(const BenchOptions& o) {
   // Speedups are ratios of mean frame times (throughput): a technique whose
   // cost alternates from frame to frame (half-rate layers) is judged by its
   // average, where a median would pick one phase.
-  const double native_mean = mean_of(native_ms);
+  const double native_mean = mean(native_ms);
   for (size_t i = 0; i < runs.size(); ++i) {
     Run& r = runs[i];
     TechniqueResult& res = r.result;
     if (i == 0 && !native_listed) continue;
     res.median_ms = quantile(res.frame_ms, 0.5);
     res.p90_ms = quantile(res.frame_ms, 0.9);
-    res.mean_ms = mean_of(res.frame_ms);
+    res.mean_ms = mean(res.frame_ms);
     res.speedup = native_mean / res.mean_ms;
     std::tie(res.speedup_lo, res.speedup_hi) = speedup_interval(native_ms, res.frame_ms);
     res.shaded_pixels /= o.frames;

@@ -55,6 +55,11 @@ double Display::max_view_tan() const {
   return std::hypot(dx, dy) / eye_distance_px();
 }
 
+std::optional<OversamplingTable> Display::lens_oversampling_table() const {
+  if (!lens) return std::nullopt;
+  return OversamplingTable(*lens, eye_distance_px(), std::atan(max_view_tan()) * kDeg);
+}
+
 namespace {
 // The view tangent of buffer `pixel` from the principal point.
 double view_tan(const Display& d, Vec2d pixel) {

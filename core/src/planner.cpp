@@ -75,11 +75,9 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   // the gaze need not sample finer than the panel shows anywhere in that ring,
   // whose view angles from the lens axis (gamma being the gaze's) are at least
   // 0 when it holds the axis, gamma - b inside it, a - gamma outside it.
-  std::optional<OversamplingTable> table;
+  const std::optional<OversamplingTable> table = display.lens_oversampling_table();
   double gamma = 0.0;
-  if (display.lens) {
-    table.emplace(*display.lens, display.eye_distance_px(),
-                  std::atan(display.max_view_tan()) * 180.0 / std::numbers::pi);
+  if (table) {
     if (opt.gaze) {
       if (!std::isfinite(opt.gaze->x) || !std::isfinite(opt.gaze->y)) {
         throw Error("gaze: must be finite");
@@ -99,8 +97,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   };
   // s of the layer over [a, b): the acuity's at a (1 for the first) and the lens's.
   auto s_layer = [&](double a, double b) {
-    const double s = a > 0.0 ? s_after(a) : 1.0;
-    return table ? std::max(s, lens_s(a, b)) : s;
+    return std::max(a > 0.0 ? s_after(a) : 1.0, lens_s(a, b));
   };
 
   // Candidate radii: the grid strictly inside (0, e*), bounded in number.
@@ -155,7 +152,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
         const double s0 = s_after(cand[i - 1][j]);
         for (size_t k = 0; k < cand[i].size(); ++k) {
           if (cand[i][k] <= cand[i - 1][j]) continue;
-          const double s = table ? std::max(s0, lens_s(cand[i - 1][j], cand[i][k])) : s0;
+          const double s = std::max(s0, lens_s(cand[i - 1][j], cand[i][k]));
           const double c = cost[i - 1][j] + w[i] * inner_pixels(g, cand[i][k], s);
           if (c < cost[i][k]) {
             cost[i][k] = c;

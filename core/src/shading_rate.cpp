@@ -270,16 +270,11 @@ ShadingRate rate_for(const Display& display, const AcuityModel& acuity, Vec2d ga
   return best;
 }
 
-std::optional<OversamplingTable> lens_table(const Display& d) {
-  if (!d.lens) return std::nullopt;
-  return OversamplingTable(*d.lens, d.eye_distance_px(),
-                           std::atan(d.max_view_tan()) * 180.0 / std::numbers::pi);
-}
 }  // namespace
 
 ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity, Vec2d gaze,
                               const std::array<int, 4>& rect, const ShadingRateOptions& options) {
-  const auto table = lens_table(display);
+  const auto table = display.lens_oversampling_table();
   return rate_for(display, acuity, gaze, rect, options, table ? &*table : nullptr);
 }
 
@@ -299,7 +294,7 @@ ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& a
   img.tiles_x = (display.width_px + options.tile_px - 1) / options.tile_px;
   img.tiles_y = (display.height_px + options.tile_px - 1) / options.tile_px;
   img.rates.resize(static_cast<size_t>(img.tiles_x) * img.tiles_y);
-  const auto table = lens_table(display);
+  const auto table = display.lens_oversampling_table();
   for (int ty = 0; ty < img.tiles_y; ++ty) {
     for (int tx = 0; tx < img.tiles_x; ++tx) {
       img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] = rate_for(

@@ -13,4 +13,10 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + f * (v[i + 1] - v[i]) : v[i];
 }
 
+double mean(const std::vector<double>& values) {
+  double sum = 0;
+  for (double x : values) sum += x;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
 }  // namespace foveate

@@ -25,10 +25,14 @@ Kit::Kit()
       query_(gpu::Query::create(GL_SAMPLES_PASSED)) {}
 
 const gpu::Program& Kit::fullscreen(const std::string& fragment) {
-  auto it = programs_.find(fragment);
+  return built(fragment, "fullscreen.vert", fragment);
+}
+
+const gpu::Program& Kit::built(const std::string& key, const std::string& vertex,
+                               const std::string& fragment) {
+  auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
-  const gpu::Program& p =
-      programs_.emplace(fragment, compiler_.build("fullscreen.vert", fragment)).first->second;
+  const gpu::Program& p = programs_.emplace(key, compiler_.build(vertex, fragment)).first->second;
   pass_names_[p.id()] = pass_name_of(fragment);
   return p;
 }
@@ -92,13 +96,7 @@ void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
 }
 
 const gpu::Program& Kit::over_rects(const std::string& fragment) {
-  const std::string key = "rects|" + fragment;
-  auto it = programs_.find(key);
-  if (it != programs_.end()) return it->second;
-  const gpu::Program& p =
-      programs_.emplace(key, compiler_.build("common/rects.vert", fragment)).first->second;
-  pass_names_[p.id()] = pass_name_of(fragment);
-  return p;
+  return built("rects|" + fragment, "common/rects.vert", fragment);
 }
 
 void Kit::rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,

@@ -64,6 +64,9 @@ class Kit {
                const gpu::PassState& state = {}, bool early = false);
 
  private:
+  /// A program of two files from the technique shaders, cached under `key`.
+  const gpu::Program& built(const std::string& key, const std::string& vertex,
+                            const std::string& fragment);
   const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
                                          const std::string& main, int samples = 1);
   void draw_triangle(const gpu::Program& program) const;

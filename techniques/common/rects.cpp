@@ -13,8 +13,8 @@ void RectPass::draw(const gpu::Program& program, const std::vector<PixelRect>& r
     // Grows by doubling, so a frame-to-frame change in the count reallocates rarely.
     buffer_ = gpu::Buffer::create(std::max<GLsizeiptr>(bytes, 2 * buffer_.size()), nullptr,
                                   GL_DYNAMIC_STORAGE_BIT);
-    vao_ = gpu::VertexArray::create();
   }
+  if (!vao_) vao_ = gpu::VertexArray::create();
   buffer_.update(0, bytes, rects.data());
   program.use();
   program.set("u_viewport", float(width), float(height));

@@ -127,6 +127,7 @@ class Layered final : public Technique {
     const size_t n = plan_.layers.size();
     const Vec2d g = to_gl(gaze.gaze_px, H);
     const std::optional<std::uint64_t> key = scene.image_key();
+    const bool can_reproject = reproject_ && scene.view_projection().has_value();
     FrameStats stats;
     stats.native_pixels = double(W) * H;
     for (size_t i = 0; i < n; ++i) {
@@ -172,7 +173,6 @@ class Layered final : public Technique {
       // the image moves and history can only be found at the same screen
       // position (no camera and depth), it is noise: 2.64 -> 2.41 codes on
       // raymarch without it.
-      const bool can_reproject = reproject_ && scene.view_projection().has_value();
       View jv = v;  // this update's samples
       if (slots_i > 1 && (same_image || can_reproject)) {
         const double jx = (halton(phase + 1, 2) - 0.5) * s, jy = (halton(phase + 1, 3) - 0.5) * s;

@@ -90,8 +90,7 @@ class LodMask final : public Technique {
     // Where the outer circle covers the screen (the default on the built-in
     // displays: the coarse LOD's error would show everywhere), the ring is
     // everything outside the inner circle and the coarse LOD is not drawn.
-    const bool outer_covers =
-        std::max(std::hypot(std::max(g.x, W - g.x), std::max(g.y, H - g.y)), 0.0) <= r_out;
+    const bool outer_covers = std::hypot(std::max(g.x, W - g.x), std::max(g.y, H - g.y)) <= r_out;
     scene.prepass_begin(view);
     mask(g, r_in, W, H, GL_ALWAYS, 2, GL_REPLACE);
     if (!outer_covers) mask(g, r_out, W, H, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1

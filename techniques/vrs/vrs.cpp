@@ -15,6 +15,7 @@
 // tracking).
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <string>
 
@@ -33,16 +34,26 @@ int class_of(ShadingRate r) {
                           kShadingRates.begin());
 }
 
-// Whether a tile of the 8-neighbourhood of (tx, ty) has class k.
-template <class ClassAt>
-bool touches(int tx, int ty, int k, const ClassAt& class_at, int gx, int gy) {
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx)
-      if (tx + dx >= 0 && tx + dx < gx && ty + dy >= 0 && ty + dy < gy &&
-          class_at(tx + dx, ty + dy) == k)
-        return true;
-  return false;
+// Per tile, the classes found in its 3x3 neighbourhood (itself included),
+// bit k for class k, over a gx x gy grid of classes in row-major order.
+std::vector<std::uint8_t> neighbourhood_classes(const std::vector<std::uint8_t>& classes, int gx,
+                                                int gy) {
+  static_assert(kClasses <= 8);
+  std::vector<std::uint8_t> out(classes.size());
+  for (int ty = 0; ty < gy; ++ty) {
+    for (int tx = 0; tx < gx; ++tx) {
+      unsigned bits = 0;
+      for (int y = std::max(0, ty - 1); y <= std::min(gy - 1, ty + 1); ++y)
+        for (int x = std::max(0, tx - 1); x <= std::min(gx - 1, tx + 1); ++x)
+          bits |= 1u << classes[static_cast<size_t>(y) * size_t(gx) + size_t(x)];
+      out[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] = static_cast<std::uint8_t>(bits);
+    }
+  }
+  return out;
 }
+
+// The lowest class in a neighbourhood's bits: the finest class nearby.
+int finest_of(unsigned bits) { return std::countr_zero(bits); }
 
 class Vrs final : public Technique {
  public:
@@ -195,18 +206,9 @@ class Vrs final : public Technique {
     const auto class_at = [&](int tx, int ty) {
       return int(classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)]);
     };
-    // The finest class among a tile's eight neighbours (its own if none is finer).
-    std::vector<std::uint8_t> finest(classes.size());
-    for (int ty = 0; ty < gy; ++ty) {
-      for (int tx = 0; tx < gx; ++tx) {
-        int f = class_at(tx, ty);
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx)
-            if (tx + dx >= 0 && tx + dx < gx && ty + dy >= 0 && ty + dy < gy)
-              f = std::min(f, class_at(tx + dx, ty + dy));
-        finest[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] = static_cast<std::uint8_t>(f);
-      }
-    }
+    // The classes around each tile: its finest neighbour, and which classes
+    // it borders.
+    const std::vector<std::uint8_t> near = neighbourhood_classes(classes, gx, gy);
     if (!classes_ || grid_w_ != gx || grid_h_ != gy) {
       classes_ = gpu::Texture::create_2d(GL_R8UI, gx, gy);
       classes_.set_filter(GL_NEAREST, GL_NEAREST);
@@ -243,10 +245,10 @@ class Vrs final : public Technique {
       std::vector<PixelRect> texels;
       for (int ty = 0; ty < gy; ++ty) {
         for (int tx = 0; tx < gx; ++tx) {
+          // Its own tiles, and coarser tiles that border it (they fade into it).
           const int c = class_at(tx, ty);
-          const size_t i = static_cast<size_t>(ty) * size_t(gx) + size_t(tx);
-          if (c != k && !(c > k && finest[i] <= k && touches(tx, ty, k, class_at, gx, gy)))
-            continue;
+          const unsigned bits = near[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)];
+          if (c != k && !(c > k && (bits >> k & 1u))) continue;
           const PixelRect p = tile_rect(tx, ty);
           texels.push_back({std::max(0, p[0] / r.width - 1), std::max(0, p[1] / r.height - 1),
                             std::min(tw, (p[2] - 1) / r.width + 2),
@@ -298,12 +300,17 @@ class Vrs final : public Technique {
     for (int ty = 0; ty < gy; ++ty) {
       for (int tx = 0; tx < gx; ++tx) {
         const int c = class_at(tx, ty);
-        if (finest[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] < c)
+        if (finest_of(near[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)]) < c)
           fading.push_back(tile_rect(tx, ty));
         else
           plain[static_cast<size_t>(c)].push_back(tile_rect(tx, ty));
       }
     }
+    // A class target's size in screen pixels (its texels times its rate).
+    const auto set_extent = [&](const gpu::Program& p, const char* name, ShadingRate r) {
+      p.set(name, float(((W + r.width - 1) / r.width) * r.width),
+            float(((H + r.height - 1) / r.height) * r.height));
+    };
     const gpu::Program& copy = kit_.over_rects("vrs/reconstruct_copy.frag");
     for (int k = 0; k < kClasses; ++k) {
       const size_t i = static_cast<size_t>(k);
@@ -311,9 +318,7 @@ class Vrs final : public Technique {
       kit_.rect_pass(copy, merge_runs(plain[i]), target, {},
                      [&](const gpu::Program& p, gpu::Samplers& smp) {
                        smp.bind(p, "u_src", targets_[i].color());
-                       const ShadingRate r = kShadingRates[i];
-                       p.set("u_extent", float(((W + r.width - 1) / r.width) * r.width),
-                             float(((H + r.height - 1) / r.height) * r.height));
+                       set_extent(p, "u_extent", kShadingRates[i]);
                      });
     }
     kit_.rect_pass(kit_.over_rects("vrs/reconstruct.frag"), merge_runs(fading), target, {},
@@ -321,13 +326,11 @@ class Vrs final : public Technique {
                      smp.bind(p, "u_classes", classes_);
                      for (int k = 0; k < kClasses; ++k) {
                        const size_t i = static_cast<size_t>(k);
-                       const ShadingRate r = kShadingRates[i];
                        const gpu::RenderTarget& t = targets_[present[i] ? i : size_t(first)];
                        const std::string name = "u_class" + std::to_string(k);
                        smp.bind(p, name.c_str(), t.color());
                        const std::string e = "u_extent[" + std::to_string(k) + "]";
-                       p.set(e.c_str(), float(((W + r.width - 1) / r.width) * r.width),
-                             float(((H + r.height - 1) / r.height) * r.height));
+                       set_extent(p, e.c_str(), kShadingRates[i]);
                      }
                      p.set("u_tile", tile_);
                    });

@@ -83,11 +83,11 @@ std::string check_golden(const Image& actual, const std::string& reference_path,
   return m.str();
 }
 
-Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
+Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius,
+                        int threshold) {
   Comparison c;
   c.size_matches = a.width == b.width && a.height == b.height;
   if (!c.size_matches) return c;
-  const int threshold = Tolerance{}.pixel_threshold;
   double sum = 0;
   size_t n = 0, off = 0;
   for (int y = 0; y < a.height; ++y) {

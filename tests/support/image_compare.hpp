@@ -31,8 +31,10 @@ struct Comparison {
 
 Comparison compare_images(const Image& expected, const Image& actual, int pixel_threshold);
 /// The same over the pixels whose centres lie within `radius` of `centre`
-/// (the golden tolerance's pixel threshold): a technique's fovea against native.
-Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius);
+/// (by default with the golden tolerance's pixel threshold): a technique's
+/// fovea against native.
+Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double radius,
+                        int pixel_threshold = Tolerance{}.pixel_threshold);
 /// Absolute difference, amplified 4x, for inspection.
 Image difference_image(const Image& expected, const Image& actual);
 

@@ -48,28 +48,9 @@ struct Diff {
 
 // Channel differences (0..255) over the pixels within `radius` of `centre` (top-left px).
 Diff compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
-  Diff d;
-  double sum = 0;
-  int n = 0;
-  for (int y = 0; y < a.height; ++y) {
-    for (int x = 0; x < a.width; ++x) {
-      if (std::hypot(x + 0.5 - centre.x, y + 0.5 - centre.y) > radius) continue;
-      double worst = 0;
-      for (int c = 0; c < 3; ++c) {
-        const double e = std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c]));
-        worst = std::max(worst, e);
-        sum += e;
-        ++n;
-      }
-      d.max = std::max(d.max, worst);
-      d.off += worst > 8 ? 1 : 0;
-    }
-  }
-  d.mean = n ? sum / n : 0;
-  d.off = n ? d.off / (n / 3) : 0;
-  return d;
+  const test::Comparison c = test::compare_disc(a, b, centre, radius, 8);
+  return {double(c.max_error), c.mean_error, c.fraction};
 }
-
 Diff compare_all(const Image& a, const Image& b) { return compare_disc(a, b, {0, 0}, 1e9); }
 
 // Every registered technique but the reference, optionally only those that

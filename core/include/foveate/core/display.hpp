@@ -107,6 +107,9 @@ struct Display {
   [[nodiscard]] double displayed_pixel_angle_deg(Vec2d pixel) const;
   /// The view tangent of the buffer's corner farthest from the principal point.
   [[nodiscard]] double max_view_tan() const;
+  /// The lens's least oversampling beyond each view angle, out to the
+  /// buffer's farthest corner (lens.hpp); none without a lens.
+  [[nodiscard]] std::optional<OversamplingTable> lens_oversampling_table() const;
 
   /// The same physical display rendered at another resolution (same field of
   /// view): used to run at small test sizes with the real angular geometry.

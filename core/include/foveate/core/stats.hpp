@@ -8,4 +8,7 @@ namespace foveate {
 /// closest ranks; 0 for no values.
 double quantile(std::vector<double> values, double q);
 
+/// The arithmetic mean of `values`; 0 for no values.
+double mean(const std::vector<double>& values);
+
 }  // namespace foveate
