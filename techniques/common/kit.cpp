@@ -99,6 +99,10 @@ const gpu::Program& Kit::over_rects(const std::string& fragment) {
   return built("rects|" + fragment, "common/rects.vert", fragment);
 }
 
+const gpu::Program& Kit::over_regions(const std::string& fragment) {
+  return built("regions|" + fragment, "common/region.vert", fragment);
+}
+
 void Kit::rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
                     const gpu::RenderTarget& target, const gpu::PassState& state,
                     const SetUniforms& set) {

@@ -40,6 +40,10 @@ class Kit {
   /// A program of common/rects.vert + `fragment`, cached: passes drawn over
   /// rectangles only (rect_pass).
   const gpu::Program& over_rects(const std::string& fragment);
+  /// A program of common/region.vert + `fragment`, cached: one region of a
+  /// pass split by DepthRegions (the fragment shader declares
+  /// layout(early_fragment_tests)).
+  const gpu::Program& over_regions(const std::string& fragment);
   /// A pass of an over_rects program into `target` with `state`, covering
   /// only `rects` (GL pixels of the target).
   void rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,

@@ -416,9 +416,7 @@ class Layered final : public Technique {
     // test keeps each pixel to the first region that covers it (early, so
     // llvmpipe skips the 4x4 blocks already written).
     const gpu::ProfileScope timed("composite");
-    if (!region_program_)
-      region_program_ = kit_.compiler().build("common/region.vert", "layered/composite.frag");
-    const gpu::Program& prog = region_program_;
+    const gpu::Program& prog = kit_.over_regions("layered/composite.frag");
     regions_.begin(target, n);
     gpu::Samplers samplers;
     set(prog, samplers);
@@ -433,7 +431,6 @@ class Layered final : public Technique {
     }
   }
 
-  gpu::Program region_program_;
   DepthRegions regions_;
 
   Display display_;
