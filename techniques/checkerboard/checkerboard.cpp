@@ -17,6 +17,9 @@
 // pixel is a valid pixel), as wide as a fraction of the region's gap. Kept and
 // dropped pixels of regions 1-3 alike come out of it, so no kept quad stands
 // out sharp in a blurred field; region 0 is the shaded frame, native. The
+// Gaussian is computed at 1/3 resolution by default (the `scale` param) and
+// read back bilinearly, and each pixel of the last pass reads only what its
+// region needs (native fovea, blend band, filtered rest). The
 // Gaussian widens smoothly towards each next region, and between the native
 // fovea and the first dropped quads a band (blend, in degrees) is shaded in
 // full and fades from native to the filtered image, so that no border shows.
@@ -27,7 +30,9 @@
 #include <tuple>
 
 #include "../common/kit.hpp"
+#include "../common/regions.hpp"
 #include "../common/registry.hpp"
+#include "foveate/gpu/profiler.hpp"
 
 namespace foveate::tech {
 
@@ -52,6 +57,20 @@ class Checkerboard final : public Technique {
     pat.validate();
     for (int k = 0; k < 3; ++k) {
       sigmas_[static_cast<size_t>(k)] = v.real("filter") * checkerboard_gap_px(k + 1, block_);
+    }
+    // By default the filtering runs at the coarsest scale f (pixels per
+    // texel, 2 to 4) at which the narrowest Gaussian still has 0.75 texel of
+    // its own after the f x f block average and the bilinear read-back
+    // (variances (f^2 - 1) / 12 and f^2 / 6 pixel^2): a narrower one leaves
+    // the read-back's f-pixel period visible. The default widths give f = 3.
+    scale_ = v.integer("scale");
+    if (scale_ == 0) {
+      const double narrowest = *std::min_element(sigmas_.begin(), sigmas_.end());
+      scale_ = 2;
+      for (int f = 4; f > 2 && scale_ == 2; --f) {
+        const double rest = narrowest * narrowest - (f * f - 1) / 12.0 - f * f / 6.0;
+        if (rest >= 0.75 * 0.75 * f * f) scale_ = f;
+      }
     }
     stencil_export_ =
         v.boolean("export_stencil") && epoxy_has_gl_extension("GL_ARB_shader_stencil_export");
@@ -140,55 +159,74 @@ class Checkerboard final : public Technique {
           {"region " + std::to_string(k) + " (drops " + std::to_string(k) + " of 4)", n});
       stats.shaded_pixels += n;
     }
-    // 3. Reconstruction into the target (filter.glsl): the 2x2 block average,
-    //    the horizontal and the vertical Gaussian at half resolution, then the
-    //    division by coverage at full resolution. Outside the screen there are
-    //    no samples (a transparent border).
-    const int hw = (W + 1) / 2, hh = (H + 1) / 2;
+    // 3. Reconstruction into the target (filter.glsl): the f x f block
+    //    average, the horizontal and the vertical Gaussian at 1/f resolution,
+    //    then the division by coverage at full resolution. Outside the screen
+    //    there are no samples (a transparent border).
+    const int f = scale_;
     frame_.color().set_wrap(GL_CLAMP_TO_BORDER);
-    for (gpu::RenderTarget& h : half_) {
-      h.ensure(hw, hh, GL_RGBA16F);  // weighted sums: more than 8 bits
-      h.color().set_wrap(GL_CLAMP_TO_BORDER);
+    for (gpu::RenderTarget& r : reduced_) {
+      r.ensure((W + f - 1) / f, (H + f - 1) / f, GL_RGBA16F);  // weighted sums: over 8 bits
+      r.color().set_wrap(GL_CLAMP_TO_BORDER);
     }
     const auto set_filter = [&](const gpu::Program& p, gpu::Samplers& s) {
+      p.allow_missing({"u_block", "u_thresholds", "u_sigmas", "u_blend", "u_gaze_top_left",
+                       "u_height", "u_frame", "u_filtered", "u_scale"});
       set_pattern(p, s);
       p.set("u_sigmas", float(sigmas_[0]), float(sigmas_[1]), float(sigmas_[2]));
       p.set("u_blend", float(b.fovea), float(b.band));
+      p.set("u_scale", float(f));
     };
-    // The last pass reads blocks up to 2 pixels (the bilinear read-back) from
-    // pixels beyond the native fovea, the vertical pass rows up to 3 sigma (+ 1
-    // for the bilinear pair) from those, the horizontal pass columns as far.
+    // Blocks that no later pass reads (well inside the native fovea) are
+    // skipped: the last pass reads a texel and its bilinear neighbour beyond
+    // the fovea, the vertical pass 3 sigma and a bilinear pair from those, the
+    // horizontal pass as far again.
     const double sigma_max = *std::max_element(sigmas_.begin(), sigmas_.end());
-    const double reach = 2.0 * (3.0 * sigma_max / 2.0 + 2.0) + 4.0;
+    const double reach = 3.0 * sigma_max + 2.0 * f;
     const auto skip = [&](const gpu::Program& p, double r) {
-      p.set("u_skip_radius", float(std::max(0.0, b.fovea - r)));
+      p.set("u_skip_radius", float(std::max(0.0, b.fovea - 2.0 * f - r)));
     };
-    kit_.pass(kit_.fullscreen("checkerboard/reconstruct_down.frag"), half_[0], {},
+    kit_.pass(kit_.fullscreen("checkerboard/reconstruct_down.frag"), reduced_[0], {},
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                // (it only needs the gaze, to skip the fovea)
-                p.allow_missing({"u_block", "u_thresholds", "u_sigmas", "u_blend"});
                 set_filter(p, samplers);
                 samplers.bind(p, "u_frame", frame_.color());
                 skip(p, 2.0 * reach);
               });
     const gpu::Program& axis = kit_.fullscreen("checkerboard/reconstruct_h.frag");
     for (int k = 0; k < 2; ++k) {
-      kit_.pass(axis, half_[static_cast<size_t>(k + 1)], {},
+      kit_.pass(axis, reduced_[static_cast<size_t>(k + 1)], {},
                 [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                  p.allow_missing({"u_block"});  // the width is by distance, not region
                   set_filter(p, samplers);
-                  samplers.bind(p, "u_input", half_[static_cast<size_t>(k)].color());
+                  samplers.bind(p, "u_input", reduced_[static_cast<size_t>(k)].color());
                   p.set("u_axis", k == 0 ? 1.0f : 0.0f, k == 0 ? 0.0f : 1.0f);
-                  skip(p, (2 - k) * reach);
+                  skip(p, (1 - k) * reach);
                 });
     }
-    kit_.pass(kit_.fullscreen("checkerboard/reconstruct.frag"), target, {},
-              [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                p.allow_missing({"u_sigmas"});  // the filtering is done
-                set_filter(p, samplers);
-                samplers.bind(p, "u_frame", frame_.color());
-                samplers.bind(p, "u_filtered", half_[2].color());
-              });
+    const auto set_last = [&](const gpu::Program& p, gpu::Samplers& samplers) {
+      set_filter(p, samplers);
+      samplers.bind(p, "u_frame", frame_.color());
+      samplers.bind(p, "u_filtered", reduced_[2].color());
+    };
+    if (!DepthRegions::usable(target)) {
+      kit_.pass(kit_.fullscreen("checkerboard/reconstruct.frag"), target, {}, set_last);
+      return stats;
+    }
+    // Each pixel runs only what it needs: the native fovea one read of the
+    // frame, the blend band both reads, the rest one read of the filtered
+    // image (on llvmpipe a shader pays for every fetch it contains).
+    const gpu::ProfileScope timed("reconstruct");
+    const Vec2d g = to_gl(gaze.gaze_px, H);
+    regions_.begin(target, 3);
+    gpu::Samplers samplers;
+    const gpu::Program& fovea = kit_.over_regions("checkerboard/reconstruct_fovea.frag");
+    set_last(fovea, samplers);
+    regions_.disc(fovea, g, b.fovea, true);
+    const gpu::Program& band = kit_.over_regions("checkerboard/reconstruct.frag");
+    set_last(band, samplers);
+    regions_.disc(band, g, b.fovea + b.band + 1.0, false);
+    const gpu::Program& outer = kit_.over_regions("checkerboard/reconstruct_outer.frag");
+    set_last(outer, samplers);
+    regions_.rest(outer);
     return stats;
   }
 
@@ -217,7 +255,9 @@ class Checkerboard final : public Technique {
   std::array<double, 3> sigmas_{};  // reconstruction Gaussian of regions 1..3, pixels
   Kit kit_;
   gpu::RenderTarget frame_;
-  std::array<gpu::RenderTarget, 3> half_;  // block average, horizontal, vertical
+  int scale_ = 2;                             // f: pixels per texel of the filtered images
+  std::array<gpu::RenderTarget, 3> reduced_;  // block average, horizontal, vertical
+  DepthRegions regions_;                      // of the last pass
   bool stencil_export_ = false;
 };
 
@@ -264,6 +304,12 @@ TechniqueInfo checkerboard_info() {
             "width of the reconstruction Gaussian (sigma) as a fraction of the region's largest "
             "gap between kept pixels",
             "", ParamType::Real, 0.3, 2.0, 0.55),
+      param("scale",
+            "pixels per texel at which the reconstruction Gaussian is computed (then read back "
+            "bilinearly); 0 = the coarsest, up to 4, at which the narrowest Gaussian keeps 0.75 "
+            "texel of its own beyond the block average and the read-back (3 with the default "
+            "filter), so that the scale's own period does not show",
+            "px", ParamType::Integer, 0, 4, 0),
       param("blend",
             "band beyond r1, shaded in full, over which the image fades from native to the "
             "reconstruction filter (and the filter widens towards each next region); regions 1-3 "

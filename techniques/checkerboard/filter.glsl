@@ -6,12 +6,13 @@
 // gap between kept samples (u_sigmas = filter fraction * checkerboard_gap_px),
 // wide enough that the kept quads leave no pattern: at the pattern's
 // fundamental frequency, 1 / (2n), the Gaussian passes a few per cent.
-// At half resolution, since the blur is wider than 2 pixels anyway: the frame
-// is averaged in 2x2 blocks (coverage too), filtered by a separable Gaussian
-// (a horizontal, then a vertical pass, each reading its input bilinearly
-// between pairs of texels: one fetch for two taps) and read back bilinearly;
-// the Gaussian's width is what remains of sigma after the block average and
-// the bilinear read-back (variances 1/4 and 2/3 pixel^2 per axis).
+// At a reduced scale f (2 or 4 pixels per texel), since the blur is wider
+// than that anyway: the frame is averaged in f x f blocks (coverage too),
+// filtered by a separable Gaussian (a horizontal, then a vertical pass, each
+// reading its input bilinearly between pairs of texels: one fetch for two
+// taps) and read back bilinearly; the Gaussian's width is what remains of
+// sigma after the block average and the bilinear read-back (variances
+// (f^2 - 1) / 12 and f^2 / 6 pixel^2 per axis: 1/4 and 2/3 at f = 2).
 // The width grows smoothly with the distance d from the gaze: it reaches
 // each region's width at the region's threshold, ramping up over the blend
 // band before it, so that the blur has no step where the tiles' regions
@@ -19,6 +20,7 @@
 #include "checkerboard/pattern.glsl"
 uniform vec3 u_sigmas;  // Gaussian sigma of regions 1..3, pixels
 uniform vec2 u_blend;   // radius of the native fovea, width of the blend band (pixels)
+uniform float u_scale;  // f: full-resolution pixels per texel of the filtered image
 
 // The width at a full-resolution position.
 float filter_sigma(vec2 frag_gl) {
@@ -45,6 +47,10 @@ vec4 filter_axis(sampler2D tex, ivec2 ip, vec2 axis, float sigma) {
   return acc;
 }
 
-// The width of the half-resolution Gaussian (in half-resolution pixels) that
-// gives sigma at full resolution with the block average and read-back.
-float half_sigma(float sigma) { return 0.5 * sqrt(max(sigma * sigma - 0.25 - 2.0 / 3.0, 0.25)); }
+// The width of the reduced-scale Gaussian (in its texels) that gives sigma
+// at full resolution with the block average and the read-back.
+float scaled_sigma(float sigma) {
+  float f = u_scale;
+  float rest = sigma * sigma - (f * f - 1.0) / 12.0 - f * f / 6.0;
+  return max(sqrt(max(rest, 0.0)) / f, 0.25);
+}
