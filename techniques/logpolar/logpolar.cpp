@@ -25,8 +25,14 @@
 //    radially: the two balance near 1.25 at 1080p.
 //  * Two-level antialiasing (Meng et al.), in linear light: temporal
 //    antialiasing in the buffer (jittered samples, reprojected history,
-//    neighbourhood clamping), then a Gaussian in the inverse mapping whose
-//    width grows from zero at the native disc with eccentricity.
+//    neighbourhood clamping), then a Gaussian whose width grows from zero
+//    at the native disc with eccentricity. Its width depends only on the
+//    buffer column, so it is applied in the buffer (blur.frag) and the
+//    inverse mapping reads the result once per pixel; the inverse mapping's
+//    bilinear read is itself a blur of sigma 0.41 texel, so only a wider
+//    Gaussian than that is a pass of its own (the default 0.4 is not).
+//  * The inverse mapping is split into regions (native disc, blend band,
+//    the rest) so that each pixel reads only what it shows.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -36,7 +42,9 @@
 #include <tuple>
 
 #include "../common/kit.hpp"
+#include "../common/regions.hpp"
 #include "../common/registry.hpp"
+#include "foveate/gpu/profiler.hpp"
 
 namespace foveate::tech {
 
@@ -300,20 +308,65 @@ class LogPolar final : public Technique {
     has_view_proj_ = vp.has_value();
     if (vp) prev_view_proj_ = *vp;
 
-    // 4. Inverse mapping with the second level (the growing Gaussian), and
-    //    the native disc.
-    kit_.pass(kit_.fullscreen("logpolar/inverse.frag"), target, {},
-              [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                samplers.bind(p, "u_buffer", shown.color());
-                // Without a disc on the screen the buffer stands in (never read).
-                samplers.bind(p, "u_fovea", has_fovea ? fovea_.color() : shown.color());
-                p.set("u_has_fovea", has_fovea ? 1 : 0);
-                p.set("u_fovea_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
-                p.set("u_disc", float(r_native), float(band), float(r_native));
-                set_mapping(p);
-                p.set("u_blur", float(blur_));
-              });
+    // 4. Second level: the growing Gaussian, in the buffer (blur.frag), where
+    //    it is wider than the inverse mapping's bilinear read already is.
+    const gpu::RenderTarget& read = blur_pass() ? blurred_ : shown;
+    if (blur_pass()) {
+      blurred_.ensure(bw, bh, GL_RGBA16F);
+      blurred_.color().set_wrap(GL_CLAMP_TO_EDGE);
+      glTextureParameteri(blurred_.color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+      kit_.pass(kit_.fullscreen("logpolar/blur.frag"), blurred_, {},
+                [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                  samplers.bind(p, "u_buffer", shown.color());
+                  p.allow_missing({"u_lp_gaze"});
+                  set_mapping(p);
+                  p.set("u_disc", float(r_native), float(band), float(r_native));
+                  p.set("u_blur", float(blur_));
+                });
+    }
+
+    // 5. Inverse mapping, and the native disc.
+    const auto set_inverse = [&](const gpu::Program& p, gpu::Samplers& samplers) {
+      p.allow_missing({"u_buffer", "u_fovea", "u_fovea_rect", "u_has_fovea", "u_disc", "u_lp_gaze",
+                       "u_lp_L", "u_lp_alpha", "u_lp_buffer"});
+      samplers.bind(p, "u_buffer", read.color());
+      // Without a disc on the screen the buffer stands in (never read).
+      samplers.bind(p, "u_fovea", has_fovea ? fovea_.color() : read.color());
+      p.set("u_has_fovea", has_fovea ? 1 : 0);
+      p.set("u_fovea_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
+      p.set("u_disc", float(r_native), float(band));
+      set_mapping(p);
+    };
+    if (!has_fovea || !DepthRegions::usable(target)) {
+      kit_.pass(kit_.fullscreen("logpolar/inverse.frag"), target, {}, set_inverse);
+      return stats;
+    }
+    // Each pixel runs only what it needs: inside the disc one read of native
+    // pixels, in the band both, beyond it one read of the buffer (on llvmpipe
+    // a shader pays for every fetch it contains, on both sides of a branch).
+    const gpu::ProfileScope timed("inverse");
+    regions_.begin(target, 3);
+    gpu::Samplers samplers;
+    const gpu::Program& inside = kit_.over_regions("logpolar/inverse_fovea.frag");
+    set_inverse(inside, samplers);
+    regions_.disc(inside, g, r_native, true);
+    const gpu::Program& fade = kit_.over_regions("logpolar/inverse.frag");
+    set_inverse(fade, samplers);
+    regions_.disc(fade, g, r_native + band + 1.0, false);
+    const gpu::Program& outside = kit_.over_regions("logpolar/inverse_outer.frag");
+    set_inverse(outside, samplers);
+    regions_.rest(outside);
     return stats;
+  }
+
+  // Whether the second level's Gaussian needs a pass of its own: the
+  // inverse mapping reads the buffer bilinearly, which blurs by a tent's
+  // variance (1/6 texel^2 per axis, sigma 0.41 texel); a Gaussian no wider
+  // than that is already there (blur.frag applies only what exceeds it).
+  // The 3-tap kernel's variance at the full width, as blur.frag computes it.
+  bool blur_pass() const {
+    const double w1 = blur_ > 0.0 ? std::exp(-0.5 / (blur_ * blur_)) : 0.0;
+    return 2.0 * w1 / (1.0 + 2.0 * w1) > 1.0 / 6.0;
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
@@ -353,6 +406,8 @@ class LogPolar final : public Technique {
   KernelPlan plan_;
   Kit kit_;
   gpu::RenderTarget buffer_, fovea_;
+  gpu::RenderTarget blurred_;  // the shown buffer with the second level's Gaussian
+  DepthRegions regions_;       // of the inverse mapping
   std::array<gpu::RenderTarget, 2> history_targets_;
   int latest_ = 0;
   bool valid_ = false;
@@ -395,7 +450,8 @@ TechniqueInfo logpolar_info() {
        }},
       param("blur",
             "antialiasing Gaussian sigma in buffer texels, reached one disc radius beyond the "
-            "native disc (it grows from 0 there; 0 = off)",
+            "native disc (it grows from 0 there); the inverse mapping's bilinear read blurs by "
+            "0.41 by itself, so up to that it costs nothing and adds nothing (0 = the read alone)",
             "texels", ParamType::Real, 0.0, 3.0, 0.4),
       param("temporal",
             "weight of the reprojected history in the buffer's temporal antialiasing, with "

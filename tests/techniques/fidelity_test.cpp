@@ -340,6 +340,50 @@ TEST_F(Fidelity, LogpolarTemporalLevelConvergesTowardsTheFilteredScene) {
   EXPECT_LT(with, 0.8 * without) << with << " vs " << without;
 }
 
+TEST_F(Fidelity, LogpolarSecondLevelGaussianGrowsWithEccentricity) {
+  // Second level of the antialiasing: a Gaussian in the buffer, from zero
+  // width at the native disc to `blur` texels one disc radius beyond it.
+  // The inverse mapping's bilinear read already blurs by sigma 0.41 texel, so
+  // the default (0.4) adds nothing to it and is not a pass of its own; a
+  // wider one smooths the periphery (less difference between neighbouring
+  // pixels, the same mean luminance) but leaves the disc's edge alone.
+  const int W = 1920, H = 1080;
+  auto scene = load_scene("detail");
+  const Vec2d gaze{960, 540};
+  double disc = 0;
+  const auto image = [&](double blur) {
+    auto t = make_technique("logpolar", config(W, H, {{"blur", blur}}));
+    disc = fovea_px(*t, gaze);
+    return run(*t, *scene, gaze);
+  };
+  const Image none = image(0.0), fallback = image(0.4), wide = image(1.5);
+  EXPECT_TRUE(within_golden(compare_disc(none, fallback, gaze, 1e9)));
+  EXPECT_EQ(test::compare_disc(none, fallback, gaze, 1e9).max_error, 0);
+  // Mean absolute difference between horizontal neighbours over a ring.
+  const auto roughness = [&](const Image& img, double r0, double r1) {
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x + 1 < W; ++x) {
+        const double r = std::hypot(x + 0.5 - gaze.x, y + 0.5 - gaze.y);
+        if (r < r0 || r >= r1) continue;
+        for (int c = 0; c < 3; ++c)
+          sum += std::abs(int(img.at(x + 1, y)[c]) - int(img.at(x, y)[c]));
+        n += 3;
+      }
+    }
+    return sum / n;
+  };
+  const double far_none = roughness(none, 2.5 * disc, 1e9),
+               far_wide = roughness(wide, 2.5 * disc, 1e9);
+  EXPECT_LT(far_wide, 0.8 * far_none) << far_wide << " vs " << far_none;
+  const double edge_none = roughness(none, 1.1 * disc, 1.2 * disc),
+               edge_wide = roughness(wide, 1.1 * disc, 1.2 * disc);
+  EXPECT_GT(edge_wide, 0.85 * edge_none) << edge_wide << " vs " << edge_none;
+  EXPECT_NEAR(mean_linear_luminance(wide, gaze, disc) / mean_linear_luminance(none, gaze, disc),
+              1.0, 0.02);
+}
+
 // ---------------------------------------------------------------- vrs
 
 TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
