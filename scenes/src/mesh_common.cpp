@@ -181,7 +181,8 @@ glm::mat4 MeshSceneBase::view_projection(const View& v) const {
 }
 
 bool MeshSceneBase::visible(const glm::mat4& m, glm::vec3 c, float r) const {
-  // Gribb-Hartmann planes of the view-projection matrix.
+  // Gribb-Hartmann planes of the view-projection matrix. With a negative r:
+  // whether the sphere of radius -r lies wholly inside the frustum.
   const glm::mat4 t = glm::transpose(m);
   const glm::vec4 planes[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1],
                                t[3] - t[1], t[3] + t[2], t[3] - t[2]};
@@ -244,11 +245,23 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
   const bool same = view.x0 == last_view_.x0 && view.y0 == last_view_.y0 &&
                     view.x1 == last_view_.x1 && view.y1 == last_view_.y1;
   const glm::mat4 cull = same ? view_proj_ : view_projection(view);
+  // The frustum of the skip rectangle: objects wholly inside it are left out.
+  const bool skips = view.skip_x1 > view.skip_x0 && view.skip_y1 > view.skip_y0;
+  glm::mat4 skip_frustum(1.0f);
+  if (skips) {
+    View s = view;
+    s.x0 = view.skip_x0;
+    s.y0 = view.skip_y0;
+    s.x1 = view.skip_x1;
+    s.y1 = view.skip_y1;
+    skip_frustum = view_projection(s);
+  }
   for (DrawItem& item : items(view, lod)) {
     const GpuMesh& m = *item.mesh;
     const glm::vec3 c = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
     const float scale = glm::length(glm::vec3(item.model[0]));
     if (!visible(cull, c, m.radius * scale)) continue;
+    if (skips && visible(skip_frustum, c, -m.radius * scale)) continue;
     int l = item.lod;
     if (item.automatic) {
       // The coarsest LOD whose geometric error projects below one target

@@ -86,7 +86,8 @@ class LodMask final : public Technique {
     // The masks are drawn over their discs only, and each finer LOD is drawn
     // for the part of the screen its circle spans (geometry outside it is
     // culled, and the scissor keeps the rasteriser within it), so no
-    // full-screen pass is paid beyond the coarse LOD's.
+    // full-screen pass is paid beyond the coarse LOD's; a coarser LOD leaves
+    // out the objects that lie wholly inside the finer circle.
     // Where the outer circle covers the screen (the default on the built-in
     // displays: the coarse LOD's error would show everywhere), the ring is
     // everything outside the inner circle and the coarse LOD is not drawn.
@@ -97,7 +98,16 @@ class LodMask final : public Technique {
     gpu::PassState draw;
     draw.stencil_func = GL_EQUAL;
     for (int lod = 0; lod < (outer_covers ? 2 : 3); ++lod) {
-      const View part = lod == 2 ? view : bounds(view, g, lod == 0 ? r_in : r_out);
+      View part = lod == 2 ? view : bounds(view, g, lod == 0 ? r_in : r_out);
+      // Objects wholly inside the square inscribed in the next finer circle
+      // are all under its mask: this LOD would draw nothing of them.
+      if (lod > 0) {
+        const double half = (lod == 1 ? r_in : r_out) / std::sqrt(2.0) - 1.0;
+        part.skip_x0 = g.x - half;
+        part.skip_y0 = g.y - half;
+        part.skip_x1 = g.x + half;
+        part.skip_y1 = g.y + half;
+      }
       draw.stencil_ref = outer_covers && lod == 1 ? 0 : 2 - lod;
       draw.scissor = {int(part.x0), int(part.y0), int(part.x1 - part.x0), int(part.y1 - part.y0)};
       gpu::apply(draw);

@@ -94,6 +94,33 @@ TEST_F(Meshes, AutomaticLodSeesThePixelPitch) {
   EXPECT_GT(native, 20000);
 }
 
+TEST_F(Meshes, SkipRectangleLeavesOutObjectsWhollyInsideIt) {
+  // A skip rectangle far wider than the screen leaves out every object but
+  // those that reach out of its frustum (the floor, which runs behind the
+  // eye: 16 % of the triangles); one over the centre leaves out the objects
+  // wholly inside it and keeps those that reach beyond it; an empty one
+  // changes nothing.
+  auto g = load_scene("guenter");
+  const double all = triangles(*g, View::full(320, 180), 320, 180);
+  View everything = View::full(320, 180);
+  everything.skip_x0 = -1000;
+  everything.skip_y0 = -1000;
+  everything.skip_x1 = 1320;
+  everything.skip_y1 = 1180;
+  EXPECT_LT(triangles(*g, everything, 320, 180), 0.25 * all);
+  View centre = View::full(320, 180);
+  centre.skip_x0 = 100;
+  centre.skip_y0 = 40;
+  centre.skip_x1 = 220;
+  centre.skip_y1 = 140;
+  const double some = triangles(*g, centre, 320, 180);
+  EXPECT_LT(some, all);
+  EXPECT_GT(some, 0.2 * all);
+  View none = View::full(320, 180);
+  none.skip_x0 = none.skip_x1 = 160;
+  EXPECT_EQ(triangles(*g, none, 320, 180), all);
+}
+
 TEST_F(Meshes, SubFrustumEqualsTheCropOfTheFullFrame) {
   for (const std::string& name : {kModels + "/cube.obj", std::string("guenter")}) {
     auto scene = load_scene(name);

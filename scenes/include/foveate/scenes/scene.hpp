@@ -68,6 +68,11 @@ struct View {
   /// `bool scene_samples_differ(vec2 screen_px)` (true on edges, where each
   /// sample is shaded).
   int samples = 1;
+  /// Objects wholly inside this screen rectangle (full-frame pixels, as x0..y1)
+  /// are not drawn by prepass_draw: a technique that fills it from another
+  /// draw (lodmask's finer LOD under its stencil circle) spares their
+  /// geometry. Empty (skip_x1 <= skip_x0) by default.
+  double skip_x0 = 0, skip_y0 = 0, skip_x1 = 0, skip_y1 = 0;
   [[nodiscard]] static View full(int w, int h) {
     return View{0, 0, double(w), double(h), w, h, 1.0};
   }
