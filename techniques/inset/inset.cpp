@@ -43,9 +43,21 @@ class Inset final : public Technique {
     // Periphery: the whole screen at `scale` per axis.
     const int pw = std::max(1, static_cast<int>(std::lround(W * scale_)));
     const int ph = std::max(1, static_cast<int>(std::lround(H * scale_)));
+    const LatencyAwareFovea f = fovea(gaze);
+    const double diameter = f.diameter_px(display_);
+    const double half = 0.5 * diameter;
     // Native's geometric LOD (pixel scale 1): a coarser mesh would move
-    // silhouettes by more than the periphery's MAR hides.
-    const View pv{0, 0, double(W), double(H), pw, ph, 1.0};
+    // silhouettes by more than the periphery's MAR hides. Objects wholly
+    // inside the square inscribed in the inset's opaque disc, less what the
+    // blur and the two bilinear reads reach, never show in the periphery.
+    View pv{0, 0, double(W), double(H), pw, ph, 1.0};
+    const double hidden = (half - f.blend_border_px - (blur_ + 3.0) / scale_) / std::sqrt(2.0);
+    if (hidden > 0.0) {
+      pv.skip_x0 = g.x - hidden;
+      pv.skip_y0 = g.y - hidden;
+      pv.skip_x1 = g.x + hidden;
+      pv.skip_y1 = g.y + hidden;
+    }
     scene.prepass(pv);
     periphery_.ensure(pw, ph);
     const double np =
@@ -53,9 +65,6 @@ class Inset final : public Technique {
                    [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, pv); });
     s.parts.push_back({"periphery", np});
     // Foveal inset at native resolution, clipped to the screen.
-    const LatencyAwareFovea f = fovea(gaze);
-    const double diameter = f.diameter_px(display_);
-    const double half = 0.5 * diameter;
     const double x0 = std::max(0.0, std::floor(g.x - half)),
                  y0 = std::max(0.0, std::floor(g.y - half));
     const double x1 = std::min(double(W), std::ceil(g.x + half)),
