@@ -39,6 +39,23 @@ using test::compare_disc;
 
 using test::mean_linear_luminance;
 
+// The mean of f(x, y, c) over the pixels whose centres lie from r0 to r1
+// from the gaze, and their channels.
+template <class F>
+double ring_mean(const Image& img, Vec2d gaze, double r0, double r1, F f) {
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      const double r = std::hypot(x + 0.5 - gaze.x, y + 0.5 - gaze.y);
+      if (r < r0 || r >= r1) continue;
+      for (int c = 0; c < 3; ++c) sum += f(x, y, c);
+      n += 3;
+    }
+  }
+  return sum / n;
+}
+
 class Fidelity : public test::GlTest {
  protected:
   TechniqueConfig config(int w, int h, std::map<std::string, double> params = {}) const {
@@ -136,24 +153,16 @@ TEST_F(Fidelity, CheckerboardReconstructionScaleLeavesTheImage) {
   const int W = 1920, H = 1080;
   auto scene = load_scene("detail");
   const Vec2d gaze{960, 540};
-  double from = 0;
+  const double from =  // where region 1 begins
+      make_technique("checkerboard", config(W, H))->overlay(GazeState{gaze})[1].w;
   const auto image = [&](int scale) {
-    auto t = make_technique("checkerboard", config(W, H, {{"scale", scale}}));
-    from = t->overlay(GazeState{gaze})[1].w;  // where region 1 begins
-    return run(*t, *scene, gaze);
+    return run(*make_technique("checkerboard", config(W, H, {{"scale", scale}})), *scene, gaze);
   };
   const Image exact = image(1), automatic = image(0), four = image(4);
   const auto error = [&](const Image& img) {
-    double sum = 0;
-    int n = 0;
-    for (int y = 0; y < H; ++y) {
-      for (int x = 0; x < W; ++x) {
-        if (std::hypot(x + 0.5 - gaze.x, y + 0.5 - gaze.y) < from) continue;
-        for (int c = 0; c < 3; ++c) sum += std::abs(int(img.at(x, y)[c]) - int(exact.at(x, y)[c]));
-        n += 3;
-      }
-    }
-    return sum / n;
+    return ring_mean(img, gaze, from, 1e9, [&](int x, int y, int c) {
+      return std::abs(int(img.at(x, y)[c]) - int(exact.at(x, y)[c]));
+    });
   };
   const double e_auto = error(automatic), e_four = error(four);
   EXPECT_LT(e_auto, 2.5);                     // 1.9 here
@@ -350,29 +359,18 @@ TEST_F(Fidelity, LogpolarSecondLevelGaussianGrowsWithEccentricity) {
   const int W = 1920, H = 1080;
   auto scene = load_scene("detail");
   const Vec2d gaze{960, 540};
-  double disc = 0;
+  const double disc = fovea_px(*make_technique("logpolar", config(W, H)), gaze);
   const auto image = [&](double blur) {
-    auto t = make_technique("logpolar", config(W, H, {{"blur", blur}}));
-    disc = fovea_px(*t, gaze);
-    return run(*t, *scene, gaze);
+    return run(*make_technique("logpolar", config(W, H, {{"blur", blur}})), *scene, gaze);
   };
   const Image none = image(0.0), fallback = image(0.4), wide = image(1.5);
   EXPECT_TRUE(within_golden(compare_disc(none, fallback, gaze, 1e9)));
   EXPECT_EQ(test::compare_disc(none, fallback, gaze, 1e9).max_error, 0);
   // Mean absolute difference between horizontal neighbours over a ring.
   const auto roughness = [&](const Image& img, double r0, double r1) {
-    double sum = 0;
-    int n = 0;
-    for (int y = 0; y < H; ++y) {
-      for (int x = 0; x + 1 < W; ++x) {
-        const double r = std::hypot(x + 0.5 - gaze.x, y + 0.5 - gaze.y);
-        if (r < r0 || r >= r1) continue;
-        for (int c = 0; c < 3; ++c)
-          sum += std::abs(int(img.at(x + 1, y)[c]) - int(img.at(x, y)[c]));
-        n += 3;
-      }
-    }
-    return sum / n;
+    return ring_mean(img, gaze, r0, r1, [&](int x, int y, int c) {
+      return std::abs(int(img.at(std::min(x + 1, W - 1), y)[c]) - int(img.at(x, y)[c]));
+    });
   };
   const double far_none = roughness(none, 2.5 * disc, 1e9),
                far_wide = roughness(wide, 2.5 * disc, 1e9);

@@ -69,9 +69,10 @@ struct View {
   /// sample is shaded).
   int samples = 1;
   /// Objects wholly inside this screen rectangle (full-frame pixels, as x0..y1)
-  /// are not drawn by prepass_draw: a technique that fills it from another
-  /// draw (lodmask's finer LOD under its stencil circle) spares their
-  /// geometry. Empty (skip_x1 <= skip_x0) by default.
+  /// never show in this draw: a technique fills it from another one
+  /// (lodmask's finer LOD under its stencil circle, inset's inset), so
+  /// prepass_draw may leave them out (the mesh scenes do; a scene that
+  /// ignores it only draws more). Empty (skip_x1 <= skip_x0) by default.
   double skip_x0 = 0, skip_y0 = 0, skip_x1 = 0, skip_y1 = 0;
   [[nodiscard]] static View full(int w, int h) {
     return View{0, 0, double(w), double(h), w, h, 1.0};
