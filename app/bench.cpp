@@ -120,7 +120,10 @@ Sweep Sweep::parse(const std::string& text) {
   Sweep s;
   s.key = text.substr(0, eq);
   for (int i = 0; i < static_cast<int>(count); ++i) s.values.push_back(v[0] + i * v[2]);
-  if (s.key == "slope") return s;
+  if (s.key == "margin") {
+    for (double x : s.values) with_flag("--sweep", [&] { return AcuityModel{}.finer(x); });
+  }
+  if (s.key == "slope" || s.key == "margin") return s;
   const auto dot = s.key.find('.');
   s.technique = dot == std::string::npos ? "" : s.key.substr(0, dot);
   s.param = dot == std::string::npos ? s.key : s.key.substr(dot + 1);
@@ -134,7 +137,8 @@ Sweep Sweep::parse(const std::string& text) {
 
 bool Sweep::applies_to(const std::string& name) const {
   if (empty()) return false;
-  if (param.empty()) return true;  // the slope changes every technique
+  if (key == "margin") return name != "native";  // native plans nothing
+  if (param.empty()) return true;                // the slope changes every technique
   if (!technique.empty() && technique != name) return false;
   for (const ParamDecl& p : technique_info(name).params) {
     if (p.key == param) return true;
@@ -215,18 +219,21 @@ BenchResult run_bench(const BenchOptions& o) {
     r.sweep_value = value;
     ParamArgs params = o.params;
     r.acuity = o.session.acuity;
-    if (swept && o.sweep.param.empty()) {
+    std::optional<double> margin;
+    if (swept && o.sweep.key == "margin") {
+      margin = value;  // the techniques' plan only: the metrics keep the session's acuity
+    } else if (swept && o.sweep.param.empty()) {
       r.acuity = with_flag("--sweep", [&] { return AcuityModel::with_slope(value); });
     } else if (swept) {
       params.per_technique[t][o.sweep.param] = value;
     }
     if (stereo) {
-      auto eyes = session.make_stereo(t, params, r.acuity);
+      auto eyes = session.make_stereo(t, params, r.acuity, margin);
       r.impl = std::move(eyes[0]);
       r.right = std::move(eyes[1]);
       r.result.eyes.resize(2);
     } else {
-      r.impl = session.make(t, params, r.acuity);
+      r.impl = session.make(t, params, r.acuity, margin);
     }
     r.result.technique = t;
     r.result.sweep_value = value;

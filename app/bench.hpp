@@ -24,7 +24,7 @@ inline constexpr int kMaxSweepValues = 50;
 struct Sweep {
   std::string key;        ///< as given ("slope", "KEY", "TECHNIQUE.KEY"); empty = no sweep
   std::string technique;  ///< empty = every technique that declares `param`
-  std::string param;      ///< empty when the slope is swept
+  std::string param;      ///< empty when the slope or the margin is swept
   std::vector<double> values;
   /// Parses and checks the text (at most 50 values; the key must exist).
   static Sweep parse(const std::string& text);

@@ -142,7 +142,9 @@ void register_bench(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "bench", "Compare techniques side by side: time, pixels and image quality");
   add_common(sub, *a);
-  sub->add_option("--sweep", a->sweep, "Sweep KEY=FROM:TO:STEP (slope, or a technique parameter)");
+  sub->add_option("--sweep", a->sweep,
+                  "Sweep KEY=FROM:TO:STEP: slope (the techniques' plan and the metrics' "
+                  "yardstick), margin (the plan only: see --margin), or a technique parameter");
   sub->callback([a] {
     const BenchOptions o = to_options(*a, "foveate bench");
     const OutputDirLock out_lock(o.out, "--out");

@@ -107,6 +107,7 @@ nlohmann::json to_json(const BenchResult& b) {
       {"display", b.display},
       {"acuity",
        {{"slope", b.options.session.acuity.slope}, {"w0_deg", b.options.session.acuity.w0_deg}}},
+      {"margin", b.options.session.margin},
       {"gaze", b.options.gaze.empty() ? "centre" : b.options.gaze},
       {"gaze_fallback", b.gaze_fallback},
       {"skipped", b.skipped},

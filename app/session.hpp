@@ -49,7 +49,9 @@ struct SessionOptions {
   ShadertoyDate date;                    ///< iDate of Shadertoy scenes
   Size size{1920, 1080};
   std::string display = "desktop-1080p";
-  AcuityModel acuity;
+  AcuityModel acuity;  ///< what the metrics judge by
+  /// Techniques plan for `acuity.finer(margin)`: 1 = the model itself.
+  double margin = 1.0;
   double fps = 60.0;  ///< the fixed clock: frame k is at time start + k / fps
   double start_time = 0.0;
   Vec2d mouse_px{0, 0};  ///< Shadertoy's mouse, pixels, origin top-left
@@ -77,6 +79,7 @@ struct SessionArgs {
   std::string display = "desktop-1080p";
   std::string quality;
   std::optional<double> slope;
+  double margin = 1.0;
   std::vector<std::string> params;
   std::string gaze;
   std::string camera_path;
@@ -91,7 +94,7 @@ struct SessionArgs {
   bool stereo = false;
   std::string vergence;  ///< --vergence; empty = infinity
 };
-/// Registers --scene --size --display --quality --slope --param --gaze
+/// Registers --scene --size --display --quality --slope --margin --param --gaze
 /// --camera-path --channel --up --model-memory-limit --fps --time --strict --frame-timeout --date
 /// on `sub`. `scene_required` makes --scene mandatory (render). `default_date` is what --date
 /// means when not given ("now" in view; a fixed date elsewhere, for determinism).
@@ -145,14 +148,17 @@ class Session {
   /// One technique per eye, each made for its eye's display (stereo sessions).
   std::array<std::unique_ptr<Technique>, 2> make_stereo(
       const std::string& technique, const ParamArgs& params,
-      std::optional<AcuityModel> acuity = std::nullopt) const;
+      std::optional<AcuityModel> acuity = std::nullopt,
+      std::optional<double> margin = std::nullopt) const;
   [[nodiscard]] gaze::GazeTracker& gaze() { return *gaze_; }
   /// Every frame is drawn through it (--frame-timeout).
   [[nodiscard]] FrameWatchdog& watchdog() { return *watchdog_; }
-  /// A technique for this session's display (`acuity` overrides the session's),
+  /// A technique for this session's display, planned for the session's
+  /// acuity made finer by its margin (`acuity` and `margin` override them),
   /// refused with a clear error when it cannot render this scene.
   std::unique_ptr<Technique> make(const std::string& technique, const ParamArgs& params,
-                                  std::optional<AcuityModel> acuity = std::nullopt) const;
+                                  std::optional<AcuityModel> acuity = std::nullopt,
+                                  std::optional<double> margin = std::nullopt) const;
   /// The supersampled reference (`factor` from parse_reference, > 1).
   [[nodiscard]] std::unique_ptr<Reference> make_reference(int factor) const;
   /// The window, when SessionOptions::window was set.

@@ -33,4 +33,11 @@ AcuityModel AcuityModel::with_slope(double m) {
   return AcuityModel{m, kFovealMarDeg};
 }
 
+AcuityModel AcuityModel::finer(double margin) const {
+  if (!std::isfinite(margin) || margin < 1.0 || margin > 4.0) {
+    throw Error("margin: expected a factor from 1 to 4, got " + format_number(margin));
+  }
+  return AcuityModel{slope / margin, w0_deg / margin};
+}
+
 }  // namespace foveate

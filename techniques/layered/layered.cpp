@@ -72,14 +72,7 @@ class Layered final : public Technique {
     // planner weighs their pixels by the area that adds.
     po.weights.assign(static_cast<size_t>(po.layers), (1 + transition_) * (1 + transition_));
     po.weights.back() = 1.0;
-    // A margin plans for an acuity that many times finer than the model's:
-    // each layer's samples then resolve the MAR's cycle with room to spare
-    // (the bilinear reconstruction attenuates frequencies near a layer's
-    // Nyquist limit, which the plan otherwise puts at the MAR's cutoff).
-    AcuityModel planned = c.acuity;
-    planned.slope /= v.real("margin");
-    planned.w0_deg /= v.real("margin");
-    plan_ = plan_layers(display_, planned, po);
+    plan_ = plan_layers(display_, c.acuity, po);
     if (msaa_ > 1) check_msaa(msaa_);
   }
 
@@ -502,11 +495,6 @@ TechniqueInfo layered_info() {
             "layer); 2 = every subsampled layer's. Coarser meshes move silhouettes and bend "
             "normals by more than the MAR hides",
             "", ParamType::Integer, 0, 2, 0),
-      param("margin",
-            "plan the layers for an acuity this many times finer than the model's (slope and "
-            "foveal MAR divided by it): finer layers, closer to native, at more pixels (1 = the "
-            "paper's plan)",
-            "", ParamType::Real, 1.0, 4.0, 1.0),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
   t.make = construct<Layered>();

@@ -97,6 +97,46 @@ TEST(Bench, SweptRunsOnlyForTechniquesWithTheKey) {
                                             "inset"}));
 }
 
+TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
+  // --sweep margin=...: every technique but native (which plans nothing) is
+  // made for the session's acuity made finer by each value, so the
+  // checkerboard's regions begin farther out; the metrics keep the
+  // session's acuity (recorded once, with the session's margin).
+  const Sweep m = Sweep::parse("margin=1:2:1");
+  EXPECT_TRUE(m.applies_to("checkerboard"));
+  EXPECT_FALSE(m.applies_to("native"));
+  EXPECT_EQ(error_of([] { Sweep::parse("margin=0.5:1:0.5"); }),
+            "--sweep: margin: expected a factor from 1 to 4, got 0.5");
+  const std::string out = (std::filesystem::temp_directory_path() / "foveate-app-margin").string();
+  std::filesystem::remove_all(out);
+  BenchOptions o = tiny(out);
+  o.session.size = {640, 360};
+  o.frames = 1;
+  o.warmup = 0;
+  o.image_metrics = false;
+  o.techniques = {"native", "checkerboard"};
+  o.sweep = m;
+  const BenchResult r = run_bench(o);
+  ASSERT_EQ(r.results.size(), 3u);
+  const auto r1 = [](const TechniqueResult& t) {
+    for (const auto& [key, value] : t.parameters)
+      if (key == "r1") return value;
+    return -1.0;
+  };
+  TechniqueConfig c;
+  c.display = Display::load("desktop-1080p").resized(640, 360);
+  c.acuity = AcuityModel::quality("A").finer(2.0);
+  const ParamValues finer = resolve_parameters(technique_info("checkerboard"), c);
+  EXPECT_EQ(r1(r.results[2]), finer.real("r1"));
+  EXPECT_GT(r1(r.results[2]), r1(r.results[1]));
+  write_bench_outputs(r);
+  std::ifstream in(out + "/results.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["acuity"]["slope"], kSlopeQualityA);
+  EXPECT_EQ(j["margin"], 1.0);
+  std::filesystem::remove_all(out);
+}
+
 TEST(Session, ErrorsNameTheFlag) {
   SessionOptions o;
   o.scene = "cheap";

@@ -109,6 +109,8 @@ expect "a fraction is still a fraction" 1 "width_px: expected an integer, got a 
 # ---- values beyond a limit say the limit
 expect "--fps 1000000 names the limit" 1 "--fps: expected a rate above 0 and at most 10000 frames per second, got 1e+06" \
   render --scene cheap --size 32x32 --fps 1000000 --out "$tmp/x"
+expect "--margin 0.5 names the range" 1 "--margin: expected a factor from 1 to 4" \
+  render --scene cheap --size 32x32 --margin 0.5 --out "$tmp/x"
 expect "--param msaa beyond the GL implementation" 1 "supports G-buffer MSAA of at most" \
   render --scene guenter --size 32x32 --technique layered --param msaa=8 --out "$tmp/x"
 

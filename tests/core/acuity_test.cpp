@@ -30,6 +30,21 @@ TEST(Acuity, RejectsBadQualityAndSlope) {
   EXPECT_NO_THROW(AcuityModel::with_slope(0.01));
 }
 
+TEST(Acuity, FinerDividesTheWholeModel) {
+  // A margin k: the MAR is k times smaller at every eccentricity, so the
+  // eccentricity where it reaches a given MAR lies further out.
+  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel f = a.finer(2.0);
+  EXPECT_DOUBLE_EQ(f.slope, 0.0275 / 2.0);
+  EXPECT_DOUBLE_EQ(f.w0_deg, 1.0 / 96.0);
+  for (double e : {0.0, 5.0, 20.0}) EXPECT_DOUBLE_EQ(f.mar_deg(e), a.mar_deg(e) / 2.0);
+  EXPECT_GT(f.eccentricity_for_mar(0.2), a.eccentricity_for_mar(0.2));
+  EXPECT_DOUBLE_EQ(a.finer(1.0).slope, a.slope);
+  EXPECT_THROW((void)a.finer(0.9), Error);
+  EXPECT_THROW((void)a.finer(4.5), Error);
+  EXPECT_THROW((void)a.finer(NAN), Error);
+}
+
 TEST(Display, PaperDesktopGeometry) {
   const Display d = Display::load("desktop-1080p");
   // Section 5: e* = 23.4 deg (eq. 6), w* = 0.0516 deg (eq. 7), w0 / w* about 40 %.

@@ -25,6 +25,10 @@ struct AcuityModel {
   static AcuityModel quality(const std::string& name);
   /// A model with a custom slope; throws foveate::Error unless 0 < m <= 1.
   static AcuityModel with_slope(double m);
+  /// The model `margin` times finer (slope and w0 divided by it): what a
+  /// technique plans for to keep a margin over the acuity it is judged by.
+  /// Throws foveate::Error unless 1 <= margin <= 4.
+  [[nodiscard]] AcuityModel finer(double margin) const;
 };
 
 }  // namespace foveate
