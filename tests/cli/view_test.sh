@@ -60,6 +60,7 @@ assert abs(s2["speedup"] - s2["native_ms"] / s2["frame_ms"]) < 1e-9 * s2["speedu
 assert s2["shaded_pixels"] > 0 and s2["native_pixels"] == 320 * 180, s2
 assert abs(s2["shaded_share"] - s2["shaded_pixels"] / s2["native_pixels"]) < 1e-12, s2
 assert s2["quality"] == "A" and s2["slope"] == 0.0275 and s2["display"] == "desktop-1080p", s2
+assert s2["margin"] == 1, s2
 assert s2["gaze"]["x_px"] == 160 and s2["gaze"]["y_px"] == 90 and s2["gaze"]["valid"], s2["gaze"]
 assert "fixed" in s2["gaze"]["source"], s2["gaze"]
 labels = [e["label"] for e in s2["legend"]]
@@ -177,6 +178,17 @@ if [[ "$help" == *"Space A/B"* && "$help" == *"print-state"* && "$help" == *"spl
 xvfb "$FOVEATE" view --scene cheap --size 160x90 --technique checkerboard --frames 3 --screenshot "$tmp/last.png" > "$tmp/o.txt" 2>&1
 rc=$?
 if [[ $rc -eq 0 && -s "$tmp/last.png" ]]; then echo "ok: --screenshot on exit"; else echo "FAIL: view --screenshot (exit $rc): $(cat "$tmp/o.txt")"; fail=1; fi
+# --margin: the viewer's techniques are planned for the finer acuity too.
+for m in 1 2; do
+  xvfb "$FOVEATE" view --scene cheap --size 640x360 --technique checkerboard --margin $m \
+    --commands "frames 1; print-state; quit" > "$tmp/margin$m.json" 2>/dev/null
+done
+check "--margin plans the viewer's technique for a finer acuity" python3 - "$tmp/margin1.json" "$tmp/margin2.json" <<'PY'
+import json, sys
+a, b = (json.loads(open(p).read().splitlines()[0]) for p in sys.argv[1:3])
+assert a["margin"] == 1 and b["margin"] == 2, (a["margin"], b["margin"])
+assert b["params"]["r1"] > a["params"]["r1"], (a["params"]["r1"], b["params"]["r1"])
+PY
 err=$(DISPLAY= WAYLAND_DISPLAY= "$FOVEATE" view --scene cheap --frames 1 2>&1); rc=$?
 if [[ $rc -ne 0 && "$err" == *"window"* ]]; then echo "ok: no display gives a clear error"; else echo "FAIL: no display (exit $rc): $err"; fail=1; fi
 # view refuses what render refuses: lodmask on a scene without meshes.
