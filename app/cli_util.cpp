@@ -25,6 +25,18 @@ Size parse_size(const std::string& text, const std::string& option) {
   return {static_cast<int>(w), static_cast<int>(h)};
 }
 
+double checked_margin(double margin) {
+  if (!(margin >= 1.0 && margin <= 4.0)) {
+    char got[32];
+    std::snprintf(got, sizeof got, "%g", margin);
+    throw Error(std::string("--margin: expected a factor from 1 to 4 (the techniques plan for an "
+                            "acuity that many times finer than the one the metrics judge by), "
+                            "got ") +
+                got);
+  }
+  return margin;
+}
+
 AcuityModel acuity_from_options(const std::string& quality, std::optional<double> slope) {
   if (!quality.empty() && slope) throw Error("--quality and --slope: give one, not both");
   if (slope) return AcuityModel::with_slope(*slope);

@@ -50,6 +50,8 @@ std::string format_duration(double seconds);
 Size parse_size(const std::string& text, const std::string& option);
 /// --quality A|B or --slope M (at most one); defaults to quality A.
 AcuityModel acuity_from_options(const std::string& quality, std::optional<double> slope);
+/// --margin's value, checked: a factor from 1 to 4 (Error naming the flag).
+double checked_margin(double margin);
 /// A byte count: a number with an optional K, M, G or T suffix (powers of
 /// 1024, "B" and "iB" allowed: 512M, 1.5GiB, 4096), more than 0.
 std::uint64_t parse_byte_size(const std::string& text, const std::string& option);

@@ -275,6 +275,7 @@ void register_techniques(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   auto quality = std::make_shared<std::string>();
   auto slope = std::make_shared<std::optional<double>>();
+  auto margin = std::make_shared<double>(1.0);
   CLI::App* sub =
       app.add_subcommand("techniques", "List the techniques with their parameters and defaults");
   sub->add_option("--display", *display, "Display for the derived defaults")->capture_default_str();
@@ -283,18 +284,24 @@ void register_techniques(CLI::App& app) {
   sub->add_flag("--json", *json, "Print the techniques, parameters and defaults as JSON");
   sub->add_option("--quality", *quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", *slope, "Custom MAR slope m");
+  sub->add_option("--margin", *margin,
+                  "Derive the defaults for an acuity this many times finer (as render's and "
+                  "bench's --margin, 1 to 4)")
+      ->capture_default_str();
   sub->callback([=] {
     const Size sz = parse_size(*size, "--size");
     TechniqueConfig c;
     c.display = with_flag("--display", [&] {
                   return Display::load(*display);
                 }).resized(sz.width, sz.height);
-    c.acuity = acuity_from_options(*quality, *slope);
-    note_savings(c.display, c.acuity);
+    const AcuityModel judged = acuity_from_options(*quality, *slope);
+    note_savings(c.display, judged);
+    c.acuity = judged.finer(checked_margin(*margin));
     if (*json) {
       nlohmann::json j = {{"display", c.display},
                           {"size", {sz.width, sz.height}},
-                          {"acuity", {{"slope", c.acuity.slope}, {"w0_deg", c.acuity.w0_deg}}}};
+                          {"acuity", {{"slope", judged.slope}, {"w0_deg", judged.w0_deg}}},
+                          {"margin", *margin}};
       nlohmann::json list = nlohmann::json::array();
       for (const TechniqueInfo& t : techniques()) {
         const ParamValues values = resolve_parameters(t, c);
@@ -320,8 +327,9 @@ void register_techniques(CLI::App& app) {
       std::cout << j.dump(2) << '\n';
       return;
     }
-    std::printf("defaults derived for %s at %dx%d, MAR slope %s\n\n", c.display.name.c_str(),
-                sz.width, sz.height, format_number(c.acuity.slope, 4).c_str());
+    std::printf("defaults derived for %s at %dx%d, MAR slope %s%s\n\n", c.display.name.c_str(),
+                sz.width, sz.height, format_number(judged.slope, 4).c_str(),
+                *margin == 1.0 ? "" : (", margin " + format_number(*margin, 3)).c_str());
     for (const TechniqueInfo& t : techniques()) {
       std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
       if (t.needs.meshes) std::printf("  needs: a scene with meshes\n");

@@ -166,15 +166,7 @@ SessionOptions to_session_options(const SessionArgs& a, const char* default_date
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
   o.acuity = acuity_from_options(a.quality, a.slope);
-  if (!(a.margin >= 1.0 && a.margin <= 4.0)) {
-    char got[32];
-    std::snprintf(got, sizeof got, "%g", a.margin);
-    throw Error(std::string("--margin: expected a factor from 1 to 4 (the techniques plan for an "
-                            "acuity that many times finer than the one the metrics judge by), "
-                            "got ") +
-                got);
-  }
-  o.margin = a.margin;
+  o.margin = checked_margin(a.margin);
   if (!(a.fps > 0.0 && a.fps <= 10000.0)) {
     char got[32];
     std::snprintf(got, sizeof got, "%g", a.fps);
