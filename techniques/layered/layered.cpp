@@ -133,8 +133,15 @@ class Layered final : public Technique {
     for (size_t i = 0; i < n; ++i) {
       const Layer& L = plan_.layers[i];
       LayerState& st = state_[i];
-      // Staggered half rate: layer 2 (middle) on even frames, 3 (outer) on odd, and so on.
-      const bool update = i == 0 || !half_rate_ || frames_ == 0 || !st.valid ||
+      // Staggered half rate: layer 2 (middle) on even frames, 3 (outer) on odd,
+      // and so on. A layer is shown stale only where it still lines up with
+      // this frame: warped to the camera (mesh scenes), or an image that has
+      // not changed since it was rendered. A moving image without camera and
+      // depth (Shadertoy scenes) would show a periphery a frame behind (2.01
+      // codes on raymarch against 1.49 at full rate): there every layer
+      // updates every frame.
+      const bool stale_lines_up = can_reproject || (key && key == st.image_key);
+      const bool update = i == 0 || !half_rate_ || frames_ == 0 || !st.valid || !stale_lines_up ||
                           (frame.frame % 2) == static_cast<int>((i + 1) % 2);
       st.updated = update;
       if (!update) {
@@ -464,8 +471,11 @@ TechniqueInfo layered_info() {
             "width of the smoothstep blend band outside each inner layer's radius, as a fraction "
             "of that radius (the inner layer is rendered out to its end)",
             "", ParamType::Real, 0, 1, 0.2),
-      param("half_rate", "update outer layers at half rate, staggered", "", ParamType::Boolean, 0,
-            1, 1),
+      param("half_rate",
+            "update outer layers at half rate, staggered, where a stale layer still lines up "
+            "(warped to the camera on mesh scenes, or a still image); a moving image without "
+            "camera and depth updates every layer every frame",
+            "", ParamType::Boolean, 0, 1, 1),
       param("jitter", "jitter subsampled layers over their own updates (Halton 2, 3)", "",
             ParamType::Boolean, 0, 1, 1),
       param("samples",
