@@ -30,9 +30,7 @@
 #include <tuple>
 
 #include "../common/kit.hpp"
-#include "../common/regions.hpp"
 #include "../common/registry.hpp"
-#include "foveate/gpu/profiler.hpp"
 
 namespace foveate::tech {
 
@@ -207,26 +205,12 @@ class Checkerboard final : public Technique {
       samplers.bind(p, "u_frame", frame_.color());
       samplers.bind(p, "u_filtered", reduced_[2].color());
     };
-    if (!DepthRegions::usable(target)) {
-      kit_.pass(kit_.fullscreen("checkerboard/reconstruct.frag"), target, {}, set_last);
-      return stats;
-    }
     // Each pixel runs only what it needs: the native fovea one read of the
     // frame, the blend band both reads, the rest one read of the filtered
     // image (on llvmpipe a shader pays for every fetch it contains).
-    const gpu::ProfileScope timed("reconstruct");
-    const Vec2d g = to_gl(gaze.gaze_px, H);
-    regions_.begin(target, 3);
-    gpu::Samplers samplers;
-    const gpu::Program& fovea = kit_.over_regions("checkerboard/reconstruct_fovea.frag");
-    set_last(fovea, samplers);
-    regions_.disc(fovea, g, b.fovea, true);
-    const gpu::Program& band = kit_.over_regions("checkerboard/reconstruct.frag");
-    set_last(band, samplers);
-    regions_.disc(band, g, b.fovea + b.band + 1.0, false);
-    const gpu::Program& outer = kit_.over_regions("checkerboard/reconstruct_outer.frag");
-    set_last(outer, samplers);
-    regions_.rest(outer);
+    kit_.pass_around_disc(target, to_gl(gaze.gaze_px, H), b.fovea, b.fovea + b.band + 1.0,
+                          "checkerboard/reconstruct_fovea.frag", "checkerboard/reconstruct.frag",
+                          "checkerboard/reconstruct_outer.frag", set_last);
     return stats;
   }
 
@@ -257,7 +241,6 @@ class Checkerboard final : public Technique {
   gpu::RenderTarget frame_;
   int scale_ = 2;                             // f: pixels per texel of the filtered images
   std::array<gpu::RenderTarget, 3> reduced_;  // block average, horizontal, vertical
-  DepthRegions regions_;                      // of the last pass
   bool stencil_export_ = false;
 };
 

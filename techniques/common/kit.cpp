@@ -95,6 +95,27 @@ void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
   draw_triangle(program);
 }
 
+void Kit::pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner,
+                           double outer, const std::string& inside, const std::string& band,
+                           const std::string& outside, const SetUniforms& set) {
+  if (!DepthRegions::usable(target)) {
+    pass(fullscreen(band), target, {}, set);
+    return;
+  }
+  const gpu::Program& band_program = over_regions(band);
+  const gpu::ProfileScope timed(pass_name(band_program));
+  regions_.begin(target, 3);
+  gpu::Samplers samplers;
+  const gpu::Program& in = over_regions(inside);
+  set(in, samplers);
+  regions_.disc(in, centre, inner, true);
+  set(band_program, samplers);
+  regions_.disc(band_program, centre, outer, false);
+  const gpu::Program& out = over_regions(outside);
+  set(out, samplers);
+  regions_.rest(out);
+}
+
 const gpu::Program& Kit::over_rects(const std::string& fragment) {
   return built("rects|" + fragment, "common/rects.vert", fragment);
 }

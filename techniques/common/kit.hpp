@@ -11,6 +11,7 @@
 #include "foveate/gpu/shader.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "rects.hpp"
+#include "regions.hpp"
 
 namespace foveate::tech {
 
@@ -44,6 +45,16 @@ class Kit {
   /// pass split by DepthRegions (the fragment shader declares
   /// layout(early_fragment_tests)).
   const gpu::Program& over_regions(const std::string& fragment);
+  /// One full-screen pass split around a disc (GL pixels of `target`), so
+  /// that each pixel runs only the shader its region needs: `inside` over
+  /// the pixels within `inner`, `band` over the rest of the disc of `outer`,
+  /// `outside` beyond (each an over_regions fragment shader); `set` sets up
+  /// each program. Timed as `band`'s pass. Into a target without a colour
+  /// texture (a window) one full-screen pass of `band`, which must then
+  /// handle every region itself.
+  void pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner, double outer,
+                        const std::string& inside, const std::string& band,
+                        const std::string& outside, const SetUniforms& set);
   /// A pass of an over_rects program into `target` with `state`, covering
   /// only `rects` (GL pixels of the target).
   void rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
@@ -80,6 +91,7 @@ class Kit {
   gpu::VertexArray vao_;
   gpu::Query query_;
   RectPass rect_pass_;
+  DepthRegions regions_;  ///< pass_around_disc's
   std::map<std::string, gpu::Program> programs_;
   std::map<GLuint, std::string> pass_names_;  ///< by program id
 };

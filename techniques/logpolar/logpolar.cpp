@@ -42,9 +42,7 @@
 #include <tuple>
 
 #include "../common/kit.hpp"
-#include "../common/regions.hpp"
 #include "../common/registry.hpp"
-#include "foveate/gpu/profiler.hpp"
 
 namespace foveate::tech {
 
@@ -160,6 +158,7 @@ class LogPolar final : public Technique {
         sigma_(v.real("sigma")),
         alpha_(v.real("alpha")),
         blur_(v.real("blur")),
+        blur_pass_(needs_blur_pass(blur_)),
         fovea_deg_(v.real("fovea_deg")),
         history_(v.real("temporal")) {
     model_ =
@@ -310,8 +309,8 @@ class LogPolar final : public Technique {
 
     // 4. Second level: the growing Gaussian, in the buffer (blur.frag), where
     //    it is wider than the inverse mapping's bilinear read already is.
-    const gpu::RenderTarget& read = blur_pass() ? blurred_ : shown;
-    if (blur_pass()) {
+    const gpu::RenderTarget& read = blur_pass_ ? blurred_ : shown;
+    if (blur_pass_) {
       blurred_.ensure(bw, bh, GL_RGBA16F);
       blurred_.color().set_wrap(GL_CLAMP_TO_EDGE);
       glTextureParameteri(blurred_.color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -337,25 +336,15 @@ class LogPolar final : public Technique {
       p.set("u_disc", float(r_native), float(band));
       set_mapping(p);
     };
-    if (!has_fovea || !DepthRegions::usable(target)) {
+    if (!has_fovea) {
       kit_.pass(kit_.fullscreen("logpolar/inverse.frag"), target, {}, set_inverse);
       return stats;
     }
     // Each pixel runs only what it needs: inside the disc one read of native
     // pixels, in the band both, beyond it one read of the buffer (on llvmpipe
     // a shader pays for every fetch it contains, on both sides of a branch).
-    const gpu::ProfileScope timed("inverse");
-    regions_.begin(target, 3);
-    gpu::Samplers samplers;
-    const gpu::Program& inside = kit_.over_regions("logpolar/inverse_fovea.frag");
-    set_inverse(inside, samplers);
-    regions_.disc(inside, g, r_native, true);
-    const gpu::Program& fade = kit_.over_regions("logpolar/inverse.frag");
-    set_inverse(fade, samplers);
-    regions_.disc(fade, g, r_native + band + 1.0, false);
-    const gpu::Program& outside = kit_.over_regions("logpolar/inverse_outer.frag");
-    set_inverse(outside, samplers);
-    regions_.rest(outside);
+    kit_.pass_around_disc(target, g, r_native, r_native + band + 1.0, "logpolar/inverse_fovea.frag",
+                          "logpolar/inverse.frag", "logpolar/inverse_outer.frag", set_inverse);
     return stats;
   }
 
@@ -364,8 +353,8 @@ class LogPolar final : public Technique {
   // variance (1/6 texel^2 per axis, sigma 0.41 texel); a Gaussian no wider
   // than that is already there (blur.frag applies only what exceeds it).
   // The 3-tap kernel's variance at the full width, as blur.frag computes it.
-  bool blur_pass() const {
-    const double w1 = blur_ > 0.0 ? std::exp(-0.5 / (blur_ * blur_)) : 0.0;
+  static bool needs_blur_pass(double blur) {
+    const double w1 = blur > 0.0 ? std::exp(-0.5 / (blur * blur)) : 0.0;
     return 2.0 * w1 / (1.0 + 2.0 * w1) > 1.0 / 6.0;
   }
 
@@ -401,13 +390,14 @@ class LogPolar final : public Technique {
 
  private:
   Display display_;
-  double sigma_, alpha_, blur_, fovea_deg_, history_;
+  double sigma_, alpha_, blur_;
+  bool blur_pass_;  // the second level's Gaussian is wider than the bilinear read (blur.frag)
+  double fovea_deg_, history_;
   KernelLogPolar model_;
   KernelPlan plan_;
   Kit kit_;
   gpu::RenderTarget buffer_, fovea_;
   gpu::RenderTarget blurred_;  // the shown buffer with the second level's Gaussian
-  DepthRegions regions_;       // of the inverse mapping
   std::array<gpu::RenderTarget, 2> history_targets_;
   int latest_ = 0;
   bool valid_ = false;
