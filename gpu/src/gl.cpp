@@ -95,6 +95,17 @@ void Buffer::update(GLintptr offset, GLsizeiptr size, const void* data) const {
   glNamedBufferSubData(id(), offset, size, data);
 }
 
+Buffer Buffer::create_streamed() {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  return Buffer(id);
+}
+
+void Buffer::stream(GLsizeiptr size, const void* data) {
+  glNamedBufferData(id(), size, data, GL_STREAM_DRAW);
+  size_ = size;
+}
+
 Texture Texture::create_2d_array(GLenum internal_format, int width, int height, int layers) {
   GLint max = 0, max_layers = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);

@@ -9,13 +9,10 @@ void RectPass::draw(const gpu::Program& program, const std::vector<PixelRect>& r
                     int height) {
   if (rects.empty()) return;
   const auto bytes = static_cast<GLsizeiptr>(rects.size() * sizeof(PixelRect));
-  if (!buffer_ || buffer_.size() < bytes) {
-    // Grows by doubling, so a frame-to-frame change in the count reallocates rarely.
-    buffer_ = gpu::Buffer::create(std::max<GLsizeiptr>(bytes, 2 * buffer_.size()), nullptr,
-                                  GL_DYNAMIC_STORAGE_BIT);
-  }
+  // A fresh store per pass: several rect passes are queued back to back.
+  if (!buffer_) buffer_ = gpu::Buffer::create_streamed();
   if (!vao_) vao_ = gpu::VertexArray::create();
-  buffer_.update(0, bytes, rects.data());
+  buffer_.stream(bytes, rects.data());
   program.use();
   program.set("u_viewport", float(width), float(height));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_.id());
