@@ -50,9 +50,18 @@ double min_eccentricity(const Display& d, Vec2d gaze, double x0, double y0, doub
   const double f = d.eye_distance_px(), f2 = f * f;
   const auto [cx, cy] = d.principal_point();
   const double gx = gaze.x - cx, gy = gaze.y - cy;
-  double best = 180.0;
+  // The candidates are compared by the cosine of their angle to the gaze
+  // (times the gaze ray's constant length), which falls as the angle grows:
+  // one square root each, and the angle of the nearest alone.
+  double best_cos = -1e300;
+  Vec2d best{x0, y0};
   auto consider = [&](double x, double y) {
-    best = std::min(best, d.eccentricity_deg({x, y}, gaze));
+    const double ax = x - cx, ay = y - cy;
+    const double c = (ax * gx + ay * gy + f2) / std::sqrt(ax * ax + ay * ay + f2);
+    if (c > best_cos) {
+      best_cos = c;
+      best = {x, y};
+    }
   };
   for (double y : {y0, y1}) {  // rows: the along-edge coordinate is x
     const double yr = y - cy, den = yr * gy + f2;
@@ -64,7 +73,7 @@ double min_eccentricity(const Display& d, Vec2d gaze, double x0, double y0, doub
     const double xr = x - cx, den = xr * gx + f2;
     if (den > 0.0) consider(x, nearest_in(cy + gy * (xr * xr + f2) / den, y0, y1));
   }
-  return best;
+  return d.eccentricity_deg(best, gaze);
 }
 }  // namespace
 
