@@ -12,13 +12,25 @@ float ground(vec3 p) {
   return p.y + 0.25 * sin(p.x * 0.7) * sin(p.z * 0.6) + 0.05 * sin(p.x * 3.1 + p.z * 2.3);
 }
 
+// A number in [0, 1) per grid cell from integer arithmetic alone, so that
+// every GPU builds the same columns (a sine-based hash of the cell differs
+// between drivers: their sin() of large arguments does).
+float cell_random(vec2 cell) {
+  uvec2 c = uvec2(ivec2(cell));
+  uint h = c.x * 0x9E3779B1u + c.y * 0x85EBCA77u + 0x27D4EB2Fu;
+  h = (h ^ (h >> 15)) * 0x2C1B3C6Du;
+  h = (h ^ (h >> 12)) * 0x297A2D39u;
+  h ^= h >> 15;
+  return float(h >> 8) / 16777216.0;
+}
+
 vec2 map(vec3 p) {
   vec2 res = vec2(ground(p), 1.0);
   // Columns on a repeated grid, height varying per cell.
   vec2 cell = floor((p.xz + 2.0) / 4.0);
   vec3 q = p;
   q.xz = mod(p.xz + 2.0, 4.0) - 2.0;
-  float hgt = 1.0 + 0.8 * fract(sin(dot(cell, vec2(12.9898, 78.233))) * 43758.5453);
+  float hgt = 1.0 + 0.8 * cell_random(cell);
   float col = sd_round_box(q - vec3(0.0, hgt, 0.0), vec3(0.35, hgt, 0.35), 0.12);
   if (col < res.x && dot(cell, cell) > 2.0) res = vec2(col, 2.0);  // a clearing in the middle
   // A twisted torus at the centre.
