@@ -1,10 +1,11 @@
 // Every built-in scene, each technique and the Shadertoy files, rendered
-// headless on llvmpipe at small sizes and compared with reference images.
+// headless at small sizes and compared with reference images made on
+// llvmpipe (held more loosely on other renderers: tolerance()).
 #include <gtest/gtest.h>
-#include <map>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "bars_technique.hpp"
 #include "foveate/core/error.hpp"
@@ -22,6 +23,21 @@ const std::string kGolden = FOVEATE_GOLDEN_DIR;
 const std::string kData = FOVEATE_TEST_DATA;
 // A technique registered at run time goes through the same golden loop.
 const bool kBarsRegistered = (test::register_bars_technique(), true);
+
+// The references were made on llvmpipe. Another conforming renderer may
+// break the tie for a pixel centre exactly on an edge the other way, and
+// rounds float arithmetic (fused multiply-adds, transcendentals) differently:
+// there a few isolated pixels may differ by anything, so only the mean error
+// (1 code) and the share of pixels off by more than 16 (0.5 %) are held. An
+// H100 with NVIDIA's driver 580 differs by at most 0.54 mean and 0.4 %.
+test::Tolerance tolerance() {
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (r && std::string(r).find("llvmpipe") != std::string::npos) return {};
+  test::Tolerance t;
+  t.max_error = 255;
+  t.mean_error = 1.0;
+  return t;
+}
 
 class Golden : public test::GlTest {
  protected:
@@ -52,7 +68,7 @@ TEST_F(Golden, EveryBuiltinScene) {
     auto scene = load_scene(s.name);
     const Image img = render(*scene, "native", 128, 72, {64, 36});
     const std::string msg =
-        check_golden(img, kGolden + "/scene-" + s.name + ".png", "scene-" + s.name);
+        check_golden(img, kGolden + "/scene-" + s.name + ".png", "scene-" + s.name, tolerance());
     EXPECT_EQ(msg, "") << msg;
   }
 }
@@ -69,9 +85,12 @@ TEST_F(Golden, EveryTechnique) {
     // coarse to hide a coarser LOD): radii that put both borders on it.
     std::map<std::string, double> params;
     if (t.name == "lodmask") params = {{"inner_deg", 8}, {"outer_deg", 16}};
+    // The reference is vrs's emulation; a driver's own rates (where it has
+    // GL_NV_shading_rate_image) are held by the fidelity tests instead.
+    if (t.name == "vrs") params = {{"hardware", 0}};
     const Image img = render(scene, t.name, 320, 180, {200, 80}, {}, false, params);
-    const std::string msg =
-        check_golden(img, kGolden + "/technique-" + t.name + ".png", "technique-" + t.name);
+    const std::string msg = check_golden(img, kGolden + "/technique-" + t.name + ".png",
+                                         "technique-" + t.name, tolerance());
     EXPECT_EQ(msg, "") << msg;
   }
 }
@@ -79,7 +98,7 @@ TEST_F(Golden, EveryTechnique) {
 TEST_F(Golden, MeshFile) {
   auto cube = load_scene(kData + "/models/cube.obj");
   const std::string msg = check_golden(render(*cube, "native", 128, 96, {64, 48}),
-                                       kGolden + "/mesh-cube.png", "mesh-cube");
+                                       kGolden + "/mesh-cube.png", "mesh-cube", tolerance());
   EXPECT_EQ(msg, "") << msg;
 }
 
@@ -89,7 +108,7 @@ TEST_F(Golden, AnAlteredImageFailsTheComparison) {
   }
   auto scene = load_scene("cheap");
   Image img = render(*scene, "native", 128, 72, {64, 36});
-  EXPECT_EQ(check_golden(img, kGolden + "/scene-cheap.png", "scene-cheap"), "");
+  EXPECT_EQ(check_golden(img, kGolden + "/scene-cheap.png", "scene-cheap", tolerance()), "");
   // An 8x8 block painted magenta: the maximum error and the share of differing
   // pixels both exceed the tolerance.
   for (int y = 30; y < 38; ++y) {
@@ -135,7 +154,7 @@ TEST_F(Golden, ShadertoyFileWithChannelAndMouse) {
   EXPECT_GT(mouse[1], 200);
   EXPECT_LT(mouse[2], 50);
   const std::string msg =
-      check_golden(img, kGolden + "/shadertoy-channels.png", "shadertoy-channels");
+      check_golden(img, kGolden + "/shadertoy-channels.png", "shadertoy-channels", tolerance());
   EXPECT_EQ(msg, "") << msg;
   // Without the button down the disc is not drawn (iMouse.z < 0).
   const Image up = render(*scene, "native", 128, 64, {64, 32}, mouse_at, false);

@@ -40,9 +40,11 @@ TEST_F(Gpu, DrawAndReadBackWithIncludes) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
   const Image img = gpu::read_texture(t);
   ASSERT_EQ(img.width, 8);
-  EXPECT_EQ(img.at(7, 3)[0], 64);
-  EXPECT_EQ(img.at(0, 0)[1], 128);
-  EXPECT_EQ(img.at(3, 2)[2], 191);
+  // GL lets a float-to-unorm conversion round either way at a code's midpoint
+  // (llvmpipe gives 128 for 0.5, NVIDIA's driver 127): within one code.
+  EXPECT_NEAR(img.at(7, 3)[0], 64, 1);
+  EXPECT_NEAR(img.at(0, 0)[1], 128, 1);
+  EXPECT_NEAR(img.at(3, 2)[2], 191, 1);
 }
 
 TEST_F(Gpu, CompileErrorNamesOriginalFileAndLine) {
