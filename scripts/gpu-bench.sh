@@ -2,25 +2,28 @@
 # The standard comparison on whatever renderer EGL gives (a GPU's driver, or
 # Mesa llvmpipe): builds foveate in release mode, benchmarks every technique
 # on guenter, raymarch and a heavy Shadertoy shader at 1920x1080 and
-# 3840x2160, with the time per pass, and writes docs/gpu/<renderer>.md.
+# 3840x2160, with the time per pass, measures their error against the 4x4
+# supersampled reference, and writes docs/gpu/<renderer>.md.
 #
 #   scripts/gpu-bench.sh [--quick] [--frames N] [--sizes 1920x1080,3840x2160] [--out DIR]
 #
-# --quick: 1920x1080 only, 3 frames (a few minutes on llvmpipe).
+# --quick: 1920x1080 only, 3 frames, no quality tables (a few minutes on
+# llvmpipe; the full run's quality tables take an hour there).
 # FOVEATE_EGL=device forces the EGL device platform (see README).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 frames=10
 sizes=1920x1080,3840x2160
+quality=1
 out=docs/gpu
 while [ $# -gt 0 ]; do
   case "$1" in
-    --quick) frames=3; sizes=1920x1080 ;;
+    --quick) frames=3; sizes=1920x1080; quality=0 ;;
     --frames) frames="$2"; shift ;;
     --sizes) sizes="$2"; shift ;;
     --out) out="$2"; shift ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
     *) echo "gpu-bench.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -42,6 +45,7 @@ all=native,layered,logpolar,checkerboard,inset,vrs
 "$bin" bench --scene cheap --size 64x36 --frames 1 --techniques native --no-metrics --quiet \
   --out "$work/probe" >/dev/null
 renderer=$(sed -n 's/^  "renderer": "\(.*\)",$/\1/p' "$work/probe/results.json" | head -n1)
+gl_version=$(sed -n 's/^    "gl_version": "\(.*\)",$/\1/p' "$work/probe/results.json" | head -n1)
 [ -n "$renderer" ] || { echo "gpu-bench.sh: no renderer string in the probe's results" >&2; exit 1; }
 slug=$(printf '%s' "$renderer" | tr 'A-Z' 'a-z' | sed 's/[^a-z0-9]\{1,\}/-/g; s/^-//; s/-$//' | cut -c1-60)
 mkdir -p "$out"
@@ -52,6 +56,7 @@ tmpdoc="$work/doc.md"
   echo "# foveate on $renderer"
   echo
   echo "Made by \`scripts/gpu-bench.sh\` on $(date -u +%Y-%m-%d) with foveate $("$bin" --version | sed 's/^foveate //'),"
+  echo "OpenGL ${gl_version:-(version not recorded)},"
   echo "$(nproc) CPU threads ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n1)). Desktop display of"
   echo "Guenter et al. (its field of view kept at every size), quality A, gaze at the centre,"
   echo "$frames measured frames per technique after each technique's warm-up, techniques"
@@ -83,18 +88,42 @@ for size in "${size_list[@]}"; do
     cp "$dir/results.json" "$out/results/$slug-$name-$size.json"
   done
 done
+# The first size of --sizes (1920x1080 by default) for what follows.
+first=${size_list[0]}
+# Quality against the yardstick (the 4x4 supersampled reference, linear
+# light; docs/fidelity.md): is each technique's error the same on this
+# renderer as on llvmpipe? Skipped by --quick (on llvmpipe the reference
+# alone takes minutes a frame at 1080p).
+if [ "$quality" = 1 ]; then
+  for scene in guenter raymarch; do
+    techniques=$all
+    [ "$scene" = guenter ] && techniques=$all,lodmask
+    dir="$work/quality-$scene"
+    echo "gpu-bench.sh: $scene against the 4x4 reference" >&2
+    "$bin" bench --scene "$scene" --size $first --techniques "$techniques" --reference ssaa:4 \
+      --frames 3 --warmup 2 --quiet --out "$dir" >/dev/null
+    {
+      echo "## Quality: $scene at $first against the 4x4 supersampled reference"
+      echo
+      echo "\`foveate bench --scene $scene --size $first --techniques $techniques --reference ssaa:4 --frames 3 --warmup 2\`"
+      echo
+      sed -n '/^| technique/,/^$/p' "$dir/results.md"
+    } >> "$tmpdoc"
+    cp "$dir/results.json" "$out/results/$slug-quality-$scene.json"
+  done
+fi
 # vrs: the driver's shading-rate image (GL_NV_shading_rate_image, where the
-# renderer has it) against the emulation, with quality against native. On a
+# renderer has it) against the emulation, against the 4x4 reference. On a
 # renderer without the extension both rows are the emulation (the results'
 # parameters say hardware_path 0).
 dir="$work/vrs-hardware"
 echo "gpu-bench.sh: vrs hardware against emulation" >&2
-"$bin" bench --scene guenter --size 1920x1080 --techniques native,vrs --sweep vrs.hardware=0:1:1 \
-  --frames "$frames" --passes --quiet --out "$dir" >/dev/null
+"$bin" bench --scene guenter --size $first --techniques native,vrs --sweep vrs.hardware=0:1:1 \
+  --reference ssaa:4 --frames 3 --warmup 2 --passes --quiet --out "$dir" >/dev/null
 {
-  echo "## vrs: hardware rates against the emulation (guenter at 1920x1080)"
+  echo "## vrs: hardware rates against the emulation (guenter at $first)"
   echo
-  echo "\`foveate bench --scene guenter --size 1920x1080 --techniques native,vrs --sweep vrs.hardware=0:1:1 --frames $frames --passes\`"
+  echo "\`foveate bench --scene guenter --size $first --techniques native,vrs --sweep vrs.hardware=0:1:1 --reference ssaa:4 --frames 3 --warmup 2 --passes\`"
   echo
   cat "$dir/results.md"
   echo
