@@ -77,6 +77,12 @@ expect "--out below a file" 1 "cannot create the folder: Not a directory" render
 expect "--out in /proc" 1 "--out /proc/foveate-out: cannot create the folder" render --scene cheap --size 32x32 --out /proc/foveate-out
 expect "--out /proc" 1 "--out /proc: cannot write into the folder" render --scene cheap --size 32x32 --out /proc
 expect "bench --out on an existing file" 1 "exists and is not a folder" bench --scene cheap --size 32x32 --out "$tmp/afile"
+expect "--out named like a file" 1 "--out $tmp/frame.png: names a file (.png), but --out is the folder the outputs are written into; give a folder, e.g. --out $tmp/frame" render --scene cheap --size 32x32 --out "$tmp/frame.png"
+if [[ -e "$tmp/frame.png" ]]; then echo "FAIL: --out named like a file left a folder"; fail=1; else
+  echo "ok: --out named like a file: nothing created"; fi
+expect "bench --out named like a file" 1 "names a file (.json)" bench --scene cheap --size 32x32 --out "$tmp/results.json"
+mkdir "$tmp/kept.png"
+expect "--out: an existing folder named like a file is used" 0 "rendered 1 frame" render --scene cheap --size 32x32 --out "$tmp/kept.png"
 if [[ $(id -u) -ne 0 ]]; then
   mkdir "$tmp/ro"; chmod 555 "$tmp/ro"
   expect "--out in a read-only folder" 1 "cannot write into the folder" render --scene cheap --size 32x32 --out "$tmp/ro"
