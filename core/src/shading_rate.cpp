@@ -48,7 +48,8 @@ double max_step_angle(double a0, double a1, double b0, double b1, double f) {
 double min_eccentricity(const Display& d, Vec2d gaze, double x0, double y0, double x1, double y1) {
   if (gaze.x >= x0 && gaze.x <= x1 && gaze.y >= y0 && gaze.y <= y1) return 0.0;
   const double f = d.eye_distance_px(), f2 = f * f;
-  const auto [cx, cy] = d.principal_point();
+  const Vec2d centre = d.principal_point();  // (no structured binding: the lambda uses it)
+  const double cx = centre.x, cy = centre.y;
   const double gx = gaze.x - cx, gy = gaze.y - cy;
   // The candidates are compared by the cosine of their angle to the gaze
   // (times the gaze ray's constant length), which falls as the angle grows:
