@@ -244,32 +244,36 @@ std::array<double, 2> panel_spacing(const Display& d, const OversamplingTable& t
   return {spacing(cos_max, sin_max), spacing(sin_max, cos_max)};
 }
 
-ShadingRate rate_for(const Display& display, const AcuityModel& acuity, Vec2d gaze,
-                     const std::array<int, 4>& rect, const ShadingRateOptions& options,
-                     const OversamplingTable* lens) {
-  const double x0 = rect[0], y0 = rect[1], x1 = rect[2], y1 = rect[3];
-  // Eccentricity of the tile's point nearest the gaze, less the latency margin.
-  const double e =
-      std::max(0.0, min_eccentricity(display, gaze, x0, y0, x1, y1) / options.fovea_scale -
-                        options.latency_margin_deg);
-  const double half_cycle = 0.5 * acuity.mar_deg(e) * kRad;
-  // The largest angle of one pixel step along x and along y over the tile.
-  const double f = display.eye_distance_px();
-  const auto [cx, cy] = display.principal_point();
-  const double ax = max_step_angle(x0 - cx, x1 - cx, y0 - cy, y1 - cy, f);
-  const double ay = max_step_angle(y0 - cy, y1 - cy, x0 - cx, x1 - cx, f);
-  double kx = half_cycle / ax, ky = half_cycle / ay;  // largest allowed spacings
-  if (lens) {
-    // No finer than the panel shows there (lens.hpp): two samples per cycle
-    // the eye resolves or the panel shows, whichever is coarser.
-    const auto [px, py] = panel_spacing(display, *lens, x0, y0, x1, y1);
-    kx = std::max(kx, px);
-    ky = std::max(ky, py);
-  }
+using detail::TileBounds;
 
+TileBounds tile_bounds(const Display& display, const std::array<int, 4>& rect,
+                       const OversamplingTable* lens) {
+  const double x0 = rect[0], y0 = rect[1], x1 = rect[2], y1 = rect[3];
+  const double f = display.eye_distance_px();
+  const Vec2d c = display.principal_point();
+  TileBounds b;
+  b.ax = max_step_angle(x0 - c.x, x1 - c.x, y0 - c.y, y1 - c.y, f);
+  b.ay = max_step_angle(y0 - c.y, y1 - c.y, x0 - c.x, x1 - c.x, f);
+  if (lens) {
+    const auto [px, py] = panel_spacing(display, *lens, x0, y0, x1, y1);
+    b.px = px;
+    b.py = py;
+  }
+  return b;
+}
+
+// The coarsest supported rate for a tile whose point nearest the gaze is at
+// `e` degrees (latency margin and fovea scale applied).
+ShadingRate rate_within(const TileBounds& b, double e, const AcuityModel& acuity,
+                        const std::vector<ShadingRate>& supported) {
+  const double half_cycle = 0.5 * acuity.mar_deg(e) * kRad;
+  // The largest allowed spacings; through a lens no finer than the panel
+  // shows there (lens.hpp): two samples per cycle the eye resolves or the
+  // panel shows, whichever is coarser.
+  const double kx = std::max(half_cycle / b.ax, b.px), ky = std::max(half_cycle / b.ay, b.py);
   ShadingRate best{1, 1};
   double best_headroom = std::min(kx, ky);
-  for (ShadingRate r : options.supported) {
+  for (ShadingRate r : supported) {
     if (r.width > kx || r.height > ky) continue;
     const double headroom = std::min(kx / r.width, ky / r.height);
     if (r.pixels() > best.pixels() || (r.pixels() == best.pixels() && headroom > best_headroom)) {
@@ -280,38 +284,70 @@ ShadingRate rate_for(const Display& display, const AcuityModel& acuity, Vec2d ga
   return best;
 }
 
+// Eccentricity of the tile's point nearest the gaze, divided by the fovea
+// scale, less the latency margin.
+double tile_eccentricity(const Display& display, Vec2d gaze, const std::array<int, 4>& rect,
+                         double latency_margin_deg, double fovea_scale) {
+  return std::max(
+      0.0, min_eccentricity(display, gaze, rect[0], rect[1], rect[2], rect[3]) / fovea_scale -
+               latency_margin_deg);
+}
+
 }  // namespace
 
 ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity, Vec2d gaze,
                               const std::array<int, 4>& rect, const ShadingRateOptions& options) {
   const auto table = display.lens_oversampling_table();
-  return rate_for(display, acuity, gaze, rect, options, table ? &*table : nullptr);
+  return rate_within(
+      tile_bounds(display, rect, table ? &*table : nullptr),
+      tile_eccentricity(display, gaze, rect, options.latency_margin_deg, options.fovea_scale),
+      acuity, options.supported);
+}
+
+ShadingRatePlanner::ShadingRatePlanner(const Display& display, const AcuityModel& acuity,
+                                       const ShadingRateOptions& options)
+    : display_(display), acuity_(acuity), options_(options) {
+  display.validate();
+  options.validate();
+  if (!(acuity.slope > 0.0) || !std::isfinite(acuity.slope) || !(acuity.w0_deg > 0.0)) {
+    throw Error("acuity: slope and w0 must be positive");
+  }
+  blank_.width_px = display.width_px;
+  blank_.height_px = display.height_px;
+  blank_.tile_px = options.tile_px;
+  blank_.origin_bottom_left = options.origin_bottom_left;
+  blank_.tiles_x = (display.width_px + options.tile_px - 1) / options.tile_px;
+  blank_.tiles_y = (display.height_px + options.tile_px - 1) / options.tile_px;
+  const auto table = display.lens_oversampling_table();
+  for (int ty = 0; ty < blank_.tiles_y; ++ty) {
+    for (int tx = 0; tx < blank_.tiles_x; ++tx) {
+      const std::array<int, 4> rect = blank_.tile_rect(tx, ty);
+      tiles_.push_back({rect, tile_bounds(display, rect, table ? &*table : nullptr)});
+    }
+  }
+}
+
+ShadingRateImage ShadingRatePlanner::image(Vec2d gaze, double latency_margin_deg,
+                                           double fovea_scale) const {
+  if (!std::isfinite(gaze.x) || !std::isfinite(gaze.y)) throw Error("gaze: must be finite");
+  ShadingRateOptions o = options_;
+  o.latency_margin_deg = latency_margin_deg;
+  o.fovea_scale = fovea_scale;
+  o.validate();
+  ShadingRateImage img = blank_;
+  img.rates.reserve(tiles_.size());
+  for (const Tile& t : tiles_) {
+    img.rates.push_back(rate_within(
+        t.bounds, tile_eccentricity(display_, gaze, t.rect, latency_margin_deg, fovea_scale),
+        acuity_, options_.supported));
+  }
+  return img;
 }
 
 ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& acuity, Vec2d gaze,
                                     const ShadingRateOptions& options) {
-  display.validate();
-  options.validate();
-  if (!std::isfinite(gaze.x) || !std::isfinite(gaze.y)) throw Error("gaze: must be finite");
-  if (!(acuity.slope > 0.0) || !std::isfinite(acuity.slope) || !(acuity.w0_deg > 0.0)) {
-    throw Error("acuity: slope and w0 must be positive");
-  }
-  ShadingRateImage img;
-  img.width_px = display.width_px;
-  img.height_px = display.height_px;
-  img.tile_px = options.tile_px;
-  img.origin_bottom_left = options.origin_bottom_left;
-  img.tiles_x = (display.width_px + options.tile_px - 1) / options.tile_px;
-  img.tiles_y = (display.height_px + options.tile_px - 1) / options.tile_px;
-  img.rates.resize(static_cast<size_t>(img.tiles_x) * img.tiles_y);
-  const auto table = display.lens_oversampling_table();
-  for (int ty = 0; ty < img.tiles_y; ++ty) {
-    for (int tx = 0; tx < img.tiles_x; ++tx) {
-      img.rates[static_cast<size_t>(ty) * img.tiles_x + tx] = rate_for(
-          display, acuity, gaze, img.tile_rect(tx, ty), options, table ? &*table : nullptr);
-    }
-  }
-  return img;
+  return ShadingRatePlanner(display, acuity, options)
+      .image(gaze, options.latency_margin_deg, options.fovea_scale);
 }
 
 }  // namespace foveate

