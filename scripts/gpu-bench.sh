@@ -10,6 +10,7 @@
 # --quick: 1920x1080 only, 3 frames, no quality tables (a few minutes on
 # llvmpipe; the full run's quality tables take an hour there).
 # FOVEATE_EGL=device forces the EGL device platform (see README).
+# FOVEATE_SKIP_BUILD=1 FOVEATE_BIN=PATH: a binary built elsewhere (docs/gpu/README.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,7 +24,7 @@ while [ $# -gt 0 ]; do
     --frames) frames="$2"; shift ;;
     --sizes) sizes="$2"; shift ;;
     --out) out="$2"; shift ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) echo "gpu-bench.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
