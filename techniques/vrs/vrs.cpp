@@ -63,7 +63,9 @@ class Vrs final : public Technique {
         acuity_(c.acuity),
         tile_(v.integer("tile")),
         min_class_(v.real("min_class")),
-        hardware_(v.boolean("hardware") && hardware_available(v.integer("tile"))),
+        simulate_(v.boolean("hardware") && v.boolean("simulate_driver") &&
+                  !hardware_available(v.integer("tile"))),
+        hardware_(v.boolean("hardware") && (simulate_ || hardware_available(v.integer("tile")))),
         fixed_(v.boolean("fixed")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
@@ -192,15 +194,37 @@ class Vrs final : public Technique {
     frame.color().set_wrap(GL_CLAMP_TO_EDGE);
     const View view = View::full(W, H);
     scene.prepass(view);
-    const auto& palette = gl_nv_palette();
-    const std::vector<GLenum> rates(palette.begin(), palette.end());
-    glShadingRateImagePaletteNV(0, 0, static_cast<GLsizei>(rates.size()), rates.data());
-    glBindShadingRateImageNV(classes_.id());
-    glEnable(GL_SHADING_RATE_IMAGE_NV);
-    kit_.shade(scene, view, kMapRect, frame,
-               [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
-    glDisable(GL_SHADING_RATE_IMAGE_NV);
-    glBindShadingRateImageNV(0);
+    // Mesh scenes shade a coarse fragment from the G-buffer pixel at its
+    // centre (deferred_common.glsl); procedural scenes at the centre itself.
+    const float sample_offset = scene.info().has_meshes ? 0.5f : 0.0f;
+    if (simulate_) {
+      // No shading-rate image here: what the driver would leave is made
+      // from a full-resolution frame (vrs/simulate_driver.frag), so that the
+      // rest of this path runs, and is tested, on any renderer.
+      gpu::RenderTarget& full = targets_[1];
+      full.ensure(W, H, GL_SRGB8_ALPHA8, true);
+      full.color().set_filter(GL_LINEAR, GL_LINEAR);
+      kit_.shade(scene, view, kMapRect, full,
+                 [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
+      kit_.rect_pass(kit_.over_rects("vrs/simulate_driver.frag"), {{0, 0, W, H}}, frame, {},
+                     [&](const gpu::Program& p, gpu::Samplers& smp) {
+                       smp.bind(p, "u_full", full.color());
+                       smp.bind(p, "u_shade", classes_);
+                       set_rates(p);
+                       p.set("u_tile", tile_);
+                       p.set("u_sample_offset", sample_offset);
+                     });
+    } else {
+      const auto& palette = gl_nv_palette();
+      const std::vector<GLenum> rates(palette.begin(), palette.end());
+      glShadingRateImagePaletteNV(0, 0, static_cast<GLsizei>(rates.size()), rates.data());
+      glBindShadingRateImageNV(classes_.id());
+      glEnable(GL_SHADING_RATE_IMAGE_NV);
+      kit_.shade(scene, view, kMapRect, frame,
+                 [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
+      glDisable(GL_SHADING_RATE_IMAGE_NV);
+      glBindShadingRateImageNV(0);
+    }
     std::vector<PixelRect> fine, coarse;
     for (int ty = 0; ty < gy; ++ty) {
       for (int tx = 0; tx < gx; ++tx) {
@@ -222,9 +246,7 @@ class Vrs final : public Technique {
                      smp.bind(p, "u_own", own_);
                      set_rates(p);
                      p.set("u_tile", tile_);
-                     // Mesh scenes shade a coarse fragment from the G-buffer
-                     // pixel at its centre (deferred_common.glsl).
-                     p.set("u_sample_offset", scene.info().has_meshes ? 0.5f : 0.0f);
+                     p.set("u_sample_offset", sample_offset);
                    });
     s.parts.push_back({"hardware rates", s.shaded_pixels});
     return s;
@@ -434,7 +456,8 @@ class Vrs final : public Technique {
     return {{"native_radius_px", native_radius(m, g.gaze_px)},
             {"pixel_ratio", m.pixel_ratio()},
             {"fraction_4x4", m.fraction({4, 4})},
-            {"hardware_path", hardware_ ? 1.0 : 0.0}};
+            {"hardware_path", hardware_ ? 1.0 : 0.0},
+            {"simulated_driver", simulate_ ? 1.0 : 0.0}};
   }
 
  private:
@@ -442,6 +465,7 @@ class Vrs final : public Technique {
   AcuityModel acuity_;
   int tile_;
   double min_class_;
+  bool simulate_;
   bool hardware_;
   gpu::Texture own_;  // hardware path: the model's class per tile (classes_ holds the shaded one)
   mutable std::optional<ShadingRatePlanner> planner_;
@@ -482,6 +506,12 @@ TechniqueInfo vrs_info() {
                            "(GL_NV_shading_rate_image) where it has the extension with this "
                            "tile size; 0 = always the emulation",
                            "", ParamType::Boolean, 0, 1, 1));
+  t.params.push_back(param("simulate_driver",
+                           "with hardware=1 where the driver has no shading-rate image "
+                           "(llvmpipe): take the hardware path anyway, the driver's coarse "
+                           "fragments made from a full-resolution frame (as slow as native; "
+                           "to test and judge that path without the GPU)",
+                           "", ParamType::Boolean, 0, 1, 0));
   t.make = construct<Vrs>();
   return t;
 }

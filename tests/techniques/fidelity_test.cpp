@@ -388,23 +388,32 @@ TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
   // the disc around the gaze that only 1x1 tiles cover (the overlay's circle,
   // 3 degrees on the paper's display: 2x2 needs w(e) >= 4 pixels) equals
   // native, and the coarse periphery keeps native's mean linear luminance.
+  // Both paths: the emulation, and the driver's rates (simulated here where
+  // the driver has none).
   const int W = 1920, H = 1080;
   for (const char* name : {"detail", "cheap", "guenter"}) {
     auto scene = load_scene(name);
     const Image ref = native(*scene, W, H);
-    auto t = make_technique("vrs", config(W, H));
-    for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{400, 300}}) {
-      FrameStats s;
-      const Image img = run(*t, *scene, gaze, 0, &s);
-      const double fovea = fovea_px(*t, gaze);
-      EXPECT_GE(fovea, t->display().radius_px_at(2.5));
-      EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
-      const double periphery = mean_linear_luminance(ref, gaze, fovea);
-      EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
-      // The model's pixel ratio is 0.10 at the centre; each finer class also
-      // shaded over the coarser tiles beside it adds a little (0.116 here).
-      EXPECT_LT(s.shaded_pixels, 0.16 * W * H) << name;
-      EXPECT_GT(s.shaded_pixels, 0.08 * W * H) << name;
+    for (const double simulate : {0.0, 1.0}) {
+      SCOPED_TRACE(simulate);
+      auto t = make_technique("vrs", config(W, H, {{"simulate_driver", simulate}}));
+      for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{400, 300}}) {
+        FrameStats s;
+        const Image img = run(*t, *scene, gaze, 0, &s);
+        if (simulate > 0) {  // the hardware path ran (driven or simulated)
+          ASSERT_EQ(s.parts.size(), 1u);
+          EXPECT_EQ(s.parts[0].name, "hardware rates");
+        }
+        const double fovea = fovea_px(*t, gaze);
+        EXPECT_GE(fovea, t->display().radius_px_at(2.5));
+        EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
+        const double periphery = mean_linear_luminance(ref, gaze, fovea);
+        EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
+        // The model's pixel ratio is 0.10 at the centre; each finer class also
+        // shaded over the coarser tiles beside it adds a little (0.116 here).
+        EXPECT_LT(s.shaded_pixels, 0.16 * W * H) << name;
+        EXPECT_GT(s.shaded_pixels, 0.08 * W * H) << name;
+      }
     }
   }
 }
