@@ -91,10 +91,6 @@ Buffer Buffer::create(GLsizeiptr size, const void* data, GLbitfield flags) {
   return b;
 }
 
-void Buffer::update(GLintptr offset, GLsizeiptr size, const void* data) const {
-  glNamedBufferSubData(id(), offset, size, data);
-}
-
 Buffer Buffer::create_streamed() {
   GLuint id = 0;
   glCreateBuffers(1, &id);

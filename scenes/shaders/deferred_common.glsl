@@ -30,18 +30,23 @@ struct Surface {
   vec3 view_dir;  // from the camera
 };
 
+// The G-buffer texel (of a G-buffer of `size` texels over u_g_rect) under a
+// screen position. A position exactly on a texel border (a coarse fragment's
+// centre under variable-rate shading) must fall on the same side on every
+// GPU; drivers that divide through a reciprocal put some a hair below it.
+// The nudge (1/1024 texel, four times fp32 rounding at 4K) moves a lookup
+// elsewhere only within that of the next texel: texel centres stay put.
+ivec2 g_texel(vec2 screen_px, ivec2 size) {
+  return ivec2(floor((screen_px - u_g_rect.xy) / u_g_rect.zw * vec2(size) + 1.0 / 1024.0));
+}
+
 Surface fetch_surface(vec2 screen_px) {
   Surface s;
   vec4 ndc = vec4(screen_px / u_screen * 2.0 - 1.0, 1.0, 1.0);
   vec4 far = u_inv_view_proj * ndc;
   s.view_dir = normalize(far.xyz / far.w - u_cam_pos);
   ivec2 size = FOVEATE_SIZE(u_g_albedo);
-  // A position exactly on a texel border (a coarse fragment's centre under
-  // variable-rate shading) must fall on the same side on every GPU; drivers
-  // that divide through a reciprocal put some a hair below it. The nudge
-  // (1/1024 texel, four times fp32 rounding at 4K) moves a lookup elsewhere
-  // only within that of the next texel: texel centres stay where they are.
-  ivec2 t = ivec2(floor((screen_px - u_g_rect.xy) / u_g_rect.zw * vec2(size) + 1.0 / 1024.0));
+  ivec2 t = g_texel(screen_px, size);
   s.hit = false;
   if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) return s;
   vec4 p = FOVEATE_FETCH(u_g_position, t);
@@ -68,12 +73,7 @@ vec3 scene_world_position(vec2 screen_px) {
 // An edge: the samples of this pixel saw different surfaces (or some missed).
 bool scene_samples_differ(vec2 screen_px) {
   ivec2 size = textureSize(u_g_position);
-  // A position exactly on a texel border (a coarse fragment's centre under
-  // variable-rate shading) must fall on the same side on every GPU; drivers
-  // that divide through a reciprocal put some a hair below it. The nudge
-  // (1/1024 texel, four times fp32 rounding at 4K) moves a lookup elsewhere
-  // only within that of the next texel: texel centres stay where they are.
-  ivec2 t = ivec2(floor((screen_px - u_g_rect.xy) / u_g_rect.zw * vec2(size) + 1.0 / 1024.0));
+  ivec2 t = g_texel(screen_px, size);
   if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) return false;
   vec4 p0 = texelFetch(u_g_position, t, 0);
   vec3 n0 = texelFetch(u_g_normal, t, 0).xyz;

@@ -63,7 +63,6 @@ class Buffer : public Handle<detail::delete_buffer> {
   static Buffer create(GLsizeiptr size, const void* data, GLbitfield flags = 0);
   /// A buffer for data that each draw replaces (stream()).
   static Buffer create_streamed();
-  void update(GLintptr offset, GLsizeiptr size, const void* data) const;
   /// Replaces the whole store (glNamedBufferData, GL_STREAM_DRAW): a store
   /// that draws queued earlier may still read is orphaned and they keep it,
   /// so each draw reads the data given just before it. (Rewriting one store
