@@ -159,9 +159,13 @@ class Vrs final : public Technique {
     std::vector<std::uint8_t> shade(classes.size());
     FrameStats s;
     s.native_pixels = double(W) * H;
+    std::vector<PixelRect> fine, coarse;  // the 1x1 tiles, the others
     for (int ty = 0; ty < gy; ++ty) {
       for (int tx = 0; tx < gx; ++tx) {
-        ShadingRate r = kShadingRates[classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)]];
+        const size_t i = static_cast<size_t>(ty) * size_t(gx) + size_t(tx);
+        const PixelRect p = tile_pixels(tx, ty, W, H);
+        (classes[i] == 0 ? fine : coarse).push_back(p);
+        ShadingRate r = kShadingRates[classes[i]];
         for (int y = std::max(0, ty - 1); y <= std::min(gy - 1, ty + 1); ++y) {
           for (int x = std::max(0, tx - 1); x <= std::min(gx - 1, tx + 1); ++x) {
             const ShadingRate n =
@@ -170,10 +174,8 @@ class Vrs final : public Technique {
           }
         }
         const int k = class_of(r);  // the rates are closed under the component-wise least
-        shade[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] =
-            static_cast<std::uint8_t>(k < kClasses ? k : 0);
-        const int w = std::min(W, (tx + 1) * tile_) - tx * tile_;
-        const int h = std::min(H, (ty + 1) * tile_) - ty * tile_;
+        shade[i] = static_cast<std::uint8_t>(k < kClasses ? k : 0);
+        const int w = p[2] - p[0], h = p[3] - p[1];
         s.shaded_pixels += double((w + r.width - 1) / r.width) * ((h + r.height - 1) / r.height);
       }
     }
@@ -225,15 +227,6 @@ class Vrs final : public Technique {
       glDisable(GL_SHADING_RATE_IMAGE_NV);
       glBindShadingRateImageNV(0);
     }
-    std::vector<PixelRect> fine, coarse;
-    for (int ty = 0; ty < gy; ++ty) {
-      for (int tx = 0; tx < gx; ++tx) {
-        const PixelRect r = {tx * tile_, ty * tile_, std::min(W, (tx + 1) * tile_),
-                             std::min(H, (ty + 1) * tile_)};
-        (classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)] == 0 ? fine : coarse)
-            .push_back(r);
-      }
-    }
     kit_.rect_pass(kit_.over_rects("vrs/reconstruct_copy.frag"), merge_runs(fine), target, {},
                    [&](const gpu::Program& p, gpu::Samplers& smp) {
                      smp.bind(p, "u_src", frame.color());
@@ -250,6 +243,11 @@ class Vrs final : public Technique {
                    });
     s.parts.push_back({"hardware rates", s.shaded_pixels});
     return s;
+  }
+
+  // Tile (tx, ty)'s pixels (GL: rows from the bottom) in a W x H target.
+  PixelRect tile_pixels(int tx, int ty, int W, int H) const {
+    return {tx * tile_, ty * tile_, std::min(W, (tx + 1) * tile_), std::min(H, (ty + 1) * tile_)};
   }
 
   // u_rates[k]: the width and height of kShadingRates[k].
@@ -318,9 +316,7 @@ class Vrs final : public Technique {
       grid_h_ = gy;
     }
     classes_.upload(gx, gy, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
-    const auto tile_rect = [&](int tx, int ty) -> PixelRect {
-      return {tx * tile_, ty * tile_, std::min(W, (tx + 1) * tile_), std::min(H, (ty + 1) * tile_)};
-    };
+    const auto tile_rect = [&](int tx, int ty) { return tile_pixels(tx, ty, W, H); };
 
     FrameStats s;
     s.native_pixels = double(W) * H;
