@@ -120,10 +120,7 @@ Sweep Sweep::parse(const std::string& text) {
   Sweep s;
   s.key = text.substr(0, eq);
   for (int i = 0; i < static_cast<int>(count); ++i) s.values.push_back(v[0] + i * v[2]);
-  if (s.key == "margin") {
-    for (double x : s.values) with_flag("--sweep", [&] { return AcuityModel{}.finer(x); });
-  }
-  if (s.key == "slope" || s.key == "margin") return s;
+  if (s.key == "slope") return s;
   const auto dot = s.key.find('.');
   s.technique = dot == std::string::npos ? "" : s.key.substr(0, dot);
   s.param = dot == std::string::npos ? s.key : s.key.substr(dot + 1);
@@ -132,13 +129,17 @@ Sweep Sweep::parse(const std::string& text) {
   if (!known) {
     throw Error("--sweep: no technique has a parameter '" + s.key + "' (see 'foveate techniques')");
   }
+  // Each value against each declaration it will be given to, before anything runs.
+  for (const TechniqueInfo& t : techniques()) {
+    if (!s.applies_to(t.name)) continue;
+    for (double x : s.values) with_flag("--sweep", [&] { check_parameter(t, s.param, x); });
+  }
   return s;
 }
 
 bool Sweep::applies_to(const std::string& name) const {
   if (empty()) return false;
-  if (key == "margin") return name != "native";  // native plans nothing
-  if (param.empty()) return true;                // the slope changes every technique
+  if (param.empty()) return true;  // the slope changes every technique
   if (!technique.empty() && technique != name) return false;
   for (const ParamDecl& p : technique_info(name).params) {
     if (p.key == param) return true;
@@ -219,21 +220,18 @@ BenchResult run_bench(const BenchOptions& o) {
     r.sweep_value = value;
     ParamArgs params = o.params;
     r.acuity = o.session.acuity;
-    std::optional<double> margin;
-    if (swept && o.sweep.key == "margin") {
-      margin = value;  // the techniques' plan only: the metrics keep the session's acuity
-    } else if (swept && o.sweep.param.empty()) {
+    if (swept && o.sweep.key == "slope") {
       r.acuity = with_flag("--sweep", [&] { return AcuityModel::with_slope(value); });
     } else if (swept) {
       params.per_technique[t][o.sweep.param] = value;
     }
     if (stereo) {
-      auto eyes = session.make_stereo(t, params, r.acuity, margin);
+      auto eyes = session.make_stereo(t, params, r.acuity);
       r.impl = std::move(eyes[0]);
       r.right = std::move(eyes[1]);
       r.result.eyes.resize(2);
     } else {
-      r.impl = session.make(t, params, r.acuity, margin);
+      r.impl = session.make(t, params, r.acuity);
     }
     r.result.technique = t;
     r.result.sweep_value = value;

@@ -16,6 +16,7 @@
 #include "foveate/core/file.hpp"
 #include "foveate/core/image.hpp"
 #include "foveate/core/shading_rate.hpp"
+#include "foveate/techniques/technique.hpp"
 
 namespace foveate::app {
 
@@ -31,6 +32,7 @@ struct RatesArgs {
   std::string size;
   std::string quality;
   std::optional<double> slope;
+  std::optional<double> margin;
   double latency_ms = 0.0;
   double max_saccade = 200.0;
   std::string rates;
@@ -146,7 +148,14 @@ void run_rates(const RatesArgs& a) {
     const Size sz = parse_size(a.size, "--size");
     display = display.resized(sz.width, sz.height);
   }
-  const AcuityModel acuity = acuity_from_options(a.quality, a.slope);
+  const AcuityModel judged = acuity_from_options(a.quality, a.slope);
+  // The vrs technique's plan: --margin, else its own planning margin.
+  TechniqueConfig vrs;
+  vrs.display = display;
+  vrs.acuity = judged;
+  if (a.margin) vrs.margin = checked_margin(*a.margin);
+  const double margin = resolve_parameters(technique_info("vrs"), vrs).real(kPlanMarginKey);
+  const AcuityModel acuity = judged.finer(margin);
   const Vec2d gaze = a.gaze.empty()
                          ? display.principal_point()
                          : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
@@ -175,7 +184,8 @@ void run_rates(const RatesArgs& a) {
     j["row_order"] = m.origin_bottom_left ? "bottom-to-top" : "top-to-bottom";
     j["display"] = display;
     j["gaze_px"] = {gaze.x, gaze.y};
-    j["acuity"] = {{"slope", acuity.slope}, {"w0_deg", acuity.w0_deg}};
+    j["acuity"] = {{"slope", judged.slope}, {"w0_deg", judged.w0_deg}};
+    j["margin"] = margin;
     j["latency_margin_deg"] = opt.latency_margin_deg;
     nlohmann::json legend = nlohmann::json::array();
     for (ShadingRate r : opt.supported) {
@@ -208,8 +218,8 @@ void run_rates(const RatesArgs& a) {
 
   std::cout << "display " << display.name << " " << display.width_px << 'x' << display.height_px
             << ", gaze (" << fmt(gaze.x, 1) << ", " << fmt(gaze.y, 1)
-            << ") px, acuity w(e) = " << fmt(acuity.slope, 4) << " e + " << fmt(acuity.w0_deg, 4)
-            << " deg";
+            << ") px, acuity w(e) = " << fmt(judged.slope, 4) << " e + " << fmt(judged.w0_deg, 4)
+            << " deg planned with margin " << fmt(margin, 3);
   if (opt.latency_margin_deg > 0.0) {
     std::cout << ", latency margin " << fmt(opt.latency_margin_deg, 2) << " deg";
   }
@@ -260,6 +270,11 @@ void register_rates(CLI::App& app) {
   sub->add_option("--quality", a->quality,
                   "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
   sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
+  sub->add_option("--margin", a->margin,
+                  "Plan for an acuity this many times finer (1 to 4; 1 = two samples per MAR "
+                  "cycle of the model itself); default: the vrs technique's own planning margin, "
+                  "the least at which its error stays within native's + 1 code (see 'foveate "
+                  "techniques')");
   sub->add_option("--latency-ms", a->latency_ms,
                   "Gaze latency: the fovea grows by latency x --max-saccade degrees")
       ->capture_default_str();

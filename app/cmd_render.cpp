@@ -275,7 +275,7 @@ void register_techniques(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   auto quality = std::make_shared<std::string>();
   auto slope = std::make_shared<std::optional<double>>();
-  auto margin = std::make_shared<double>(1.0);
+  auto margin = std::make_shared<std::optional<double>>();
   CLI::App* sub =
       app.add_subcommand("techniques", "List the techniques with their parameters and defaults");
   sub->add_option("--display", *display, "Display for the derived defaults")->capture_default_str();
@@ -285,9 +285,8 @@ void register_techniques(CLI::App& app) {
   sub->add_option("--quality", *quality, "Acuity preset A or B (default A)");
   sub->add_option("--slope", *slope, "Custom MAR slope m");
   sub->add_option("--margin", *margin,
-                  "Derive the defaults for an acuity this many times finer (as render's and "
-                  "bench's --margin, 1 to 4)")
-      ->capture_default_str();
+                  "Derive the defaults for every technique planned with this margin (as "
+                  "render's and bench's --margin, 1 to 4; default: each technique's own)");
   sub->callback([=] {
     const Size sz = parse_size(*size, "--size");
     TechniqueConfig c;
@@ -296,15 +295,19 @@ void register_techniques(CLI::App& app) {
                 }).resized(sz.width, sz.height);
     const AcuityModel judged = acuity_from_options(*quality, *slope);
     note_savings(c.display, judged);
-    c.acuity = judged.finer(checked_margin(*margin));
+    c.acuity = judged;
+    const std::optional<double> forced =
+        *margin ? std::optional<double>(checked_margin(**margin)) : std::nullopt;
+    c.margin = forced;
+    const auto resolved = [&](const TechniqueInfo& t) { return resolve_parameters(t, c); };
     if (*json) {
       nlohmann::json j = {{"display", c.display},
                           {"size", {sz.width, sz.height}},
                           {"acuity", {{"slope", judged.slope}, {"w0_deg", judged.w0_deg}}},
-                          {"margin", *margin}};
+                          {"margin", forced ? nlohmann::json(*forced) : nlohmann::json()}};
       nlohmann::json list = nlohmann::json::array();
       for (const TechniqueInfo& t : techniques()) {
-        const ParamValues values = resolve_parameters(t, c);
+        const ParamValues values = resolved(t);
         nlohmann::json params = nlohmann::json::array();
         for (const ParamDecl& p : t.params) {
           params.push_back({{"key", p.key},
@@ -329,11 +332,12 @@ void register_techniques(CLI::App& app) {
     }
     std::printf("defaults derived for %s at %dx%d, MAR slope %s%s\n\n", c.display.name.c_str(),
                 sz.width, sz.height, format_number(judged.slope, 4).c_str(),
-                *margin == 1.0 ? "" : (", margin " + format_number(*margin, 3)).c_str());
+                forced ? (", margin " + format_number(*forced, 3)).c_str()
+                       : " (each technique planned with its own margin)");
     for (const TechniqueInfo& t : techniques()) {
       std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
       if (t.needs.meshes) std::printf("  needs: a scene with meshes\n");
-      const ParamValues values = resolve_parameters(t, c);
+      const ParamValues values = resolved(t);
       for (const ParamDecl& p : t.params) {
         const std::string value = fmt(values.real(p.key), p.type == ParamType::Real ? 3 : 0) +
                                   (p.unit.empty() ? "" : " " + p.unit);

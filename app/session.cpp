@@ -101,9 +101,10 @@ void add_session_options(CLI::App* sub, SessionArgs& a, bool scene_required,
   sub->add_option("--slope", a.slope, "Custom MAR slope m (instead of --quality)");
   sub->add_option("--margin", a.margin,
                   "Plan every technique for an acuity this many times finer (slope and foveal "
-                  "MAR divided by it, 1 to 4) than the one the metrics judge by: finer layers, "
-                  "rates and regions, closer to native, at more pixels")
-      ->capture_default_str();
+                  "MAR divided by it, 1 to 4) than the one the metrics judge by: 1 = each "
+                  "paper's plan; default: each technique's own margin, the least at which its "
+                  "error stays within native's + 1 code (see 'foveate techniques'); the same as "
+                  "--param margin=K");
   sub->add_option("--param", a.params,
                   "Technique parameter KEY=VALUE or TECHNIQUE.KEY=VALUE (repeatable; see "
                   "'foveate techniques')");
@@ -166,7 +167,7 @@ SessionOptions to_session_options(const SessionArgs& a, const char* default_date
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
   o.acuity = acuity_from_options(a.quality, a.slope);
-  o.margin = checked_margin(a.margin);
+  if (a.margin) o.margin = checked_margin(*a.margin);
   if (!(a.fps > 0.0 && a.fps <= 10000.0)) {
     char got[32];
     std::snprintf(got, sizeof got, "%g", a.fps);
@@ -279,10 +280,9 @@ void Session::set_display(const std::string& display) {
 
 Session::~Session() = default;
 
-std::array<std::unique_ptr<Technique>, 2> Session::make_stereo(const std::string& technique,
-                                                               const ParamArgs& params,
-                                                               std::optional<AcuityModel> acuity,
-                                                               std::optional<double> margin) const {
+std::array<std::unique_ptr<Technique>, 2> Session::make_stereo(
+    const std::string& technique, const ParamArgs& params,
+    std::optional<AcuityModel> acuity) const {
   if (!stereo_) throw Error("internal: make_stereo on a session without --stereo");
   const TechniqueInfo& info = technique_info(technique);
   check_scene(info, scene_->info());
@@ -290,7 +290,8 @@ std::array<std::unique_ptr<Technique>, 2> Session::make_stereo(const std::string
   for (Eye e : kEyes) {
     TechniqueConfig c;
     c.display = stereo_display_.eye(e);
-    c.acuity = acuity.value_or(options_.acuity).finer(margin.value_or(options_.margin));
+    c.acuity = acuity.value_or(options_.acuity);
+    c.margin = options_.margin;
     c.params = params_for(params, technique);
     out[static_cast<size_t>(e)] =
         with_flag("--param", [&] { return make_technique(technique, c); });
@@ -299,13 +300,13 @@ std::array<std::unique_ptr<Technique>, 2> Session::make_stereo(const std::string
 }
 
 std::unique_ptr<Technique> Session::make(const std::string& technique, const ParamArgs& params,
-                                         std::optional<AcuityModel> acuity,
-                                         std::optional<double> margin) const {
+                                         std::optional<AcuityModel> acuity) const {
   const TechniqueInfo& info = technique_info(technique);
   check_scene(info, scene_->info());
   TechniqueConfig c;
   c.display = display_;
-  c.acuity = acuity.value_or(options_.acuity).finer(margin.value_or(options_.margin));
+  c.acuity = acuity.value_or(options_.acuity);
+  c.margin = options_.margin;
   c.params = params_for(params, technique);
   return with_flag("--param", [&] { return make_technique(technique, c); });
 }

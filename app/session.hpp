@@ -50,8 +50,9 @@ struct SessionOptions {
   Size size{1920, 1080};
   std::string display = "desktop-1080p";
   AcuityModel acuity;  ///< what the metrics judge by
-  /// Techniques plan for `acuity.finer(margin)`: 1 = the model itself.
-  double margin = 1.0;
+  /// --margin: every technique plans for `acuity.finer(margin)` (1 = the
+  /// model itself); unset, each technique's own planning margin (kPlanMarginKey).
+  std::optional<double> margin;
   double fps = 60.0;  ///< the fixed clock: frame k is at time start + k / fps
   double start_time = 0.0;
   Vec2d mouse_px{0, 0};  ///< Shadertoy's mouse, pixels, origin top-left
@@ -79,7 +80,7 @@ struct SessionArgs {
   std::string display = "desktop-1080p";
   std::string quality;
   std::optional<double> slope;
-  double margin = 1.0;
+  std::optional<double> margin;
   std::vector<std::string> params;
   std::string gaze;
   std::string camera_path;
@@ -148,17 +149,15 @@ class Session {
   /// One technique per eye, each made for its eye's display (stereo sessions).
   std::array<std::unique_ptr<Technique>, 2> make_stereo(
       const std::string& technique, const ParamArgs& params,
-      std::optional<AcuityModel> acuity = std::nullopt,
-      std::optional<double> margin = std::nullopt) const;
+      std::optional<AcuityModel> acuity = std::nullopt) const;
   [[nodiscard]] gaze::GazeTracker& gaze() { return *gaze_; }
   /// Every frame is drawn through it (--frame-timeout).
   [[nodiscard]] FrameWatchdog& watchdog() { return *watchdog_; }
-  /// A technique for this session's display, planned for the session's
-  /// acuity made finer by its margin (`acuity` and `margin` override them),
-  /// refused with a clear error when it cannot render this scene.
+  /// A technique for this session's display and acuity (`acuity` overrides
+  /// it), planned with --margin where given and its own planning margin
+  /// otherwise, refused with a clear error when it cannot render this scene.
   std::unique_ptr<Technique> make(const std::string& technique, const ParamArgs& params,
-                                  std::optional<AcuityModel> acuity = std::nullopt,
-                                  std::optional<double> margin = std::nullopt) const;
+                                  std::optional<AcuityModel> acuity = std::nullopt) const;
   /// The supersampled reference (`factor` from parse_reference, > 1).
   [[nodiscard]] std::unique_ptr<Reference> make_reference(int factor) const;
   /// The window, when SessionOptions::window was set.

@@ -58,7 +58,7 @@ std::vector<std::string> param_items(const py::dict& params) {
 
 py::dict run(const std::string& scene, const std::vector<std::string>& techniques, py::handle size,
              int frames, int warmup, const std::string& display, const std::string& quality,
-             std::optional<double> slope, double margin, const py::dict& params,
+             std::optional<double> slope, std::optional<double> margin, const py::dict& params,
              const std::string& gaze, const std::string& reference, bool metrics,
              const std::string& sweep, double fps, const std::string& out, const std::string& video,
              bool side_by_side, bool images, bool stereo, const std::string& vergence) {
@@ -129,19 +129,19 @@ void bind_bench(py::module_& m) {
             std::vector<std::string>{"native", "layered", "logpolar", "checkerboard", "inset"},
         py::arg("size") = "960x540", py::arg("frames") = 10, py::arg("warmup") = 2,
         py::arg("display") = "desktop-1080p", py::arg("quality") = "",
-        py::arg("slope") = py::none(), py::arg("margin") = 1.0, py::arg("params") = py::dict(),
-        py::arg("gaze") = "", py::arg("reference") = "native", py::arg("metrics") = true,
-        py::arg("sweep") = "", py::arg("fps") = 60.0, py::arg("out") = "", py::arg("video") = "",
-        py::arg("side_by_side") = false, py::arg("images") = false, py::arg("stereo") = false,
-        py::arg("vergence") = "",
+        py::arg("slope") = py::none(), py::arg("margin") = py::none(),
+        py::arg("params") = py::dict(), py::arg("gaze") = "", py::arg("reference") = "native",
+        py::arg("metrics") = true, py::arg("sweep") = "", py::arg("fps") = 60.0,
+        py::arg("out") = "", py::arg("video") = "", py::arg("side_by_side") = false,
+        py::arg("images") = false, py::arg("stereo") = false, py::arg("vergence") = "",
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
 entry per technique (mean_ms, median_ms, speedup (mean over mean), speedup_ci95, shaded_pixels, pixel_ratio,
 quality, ...). Arguments as the command's options: size "WxH" or (w, h); params
 {"layers": 3} or {"layered.layers": 3}; gaze a --gaze spec ("0.3,0.4",
 "synthetic:7", "trace:FILE"); reference "native" or "ssaa:4"; margin as
---margin (plan the techniques for an acuity that many times finer than the
-metrics'); sweep "slope=0.02:0.03:0.005" or "margin=1:2:0.5"; out a folder for results.json, .csv, .md, report.html;
+--margin (plan every technique for an acuity that many times finer than the
+metrics'; None: each technique's own planning margin); sweep "slope=0.02:0.03:0.005" or "margin=1:2:0.5"; out a folder for results.json, .csv, .md, report.html;
 video a file (.mp4) of the frames. images=True adds each technique's last frame
 ("image", HxWx3 uint8) and "native_image". stereo=True renders both eyes of a
 stereo display (display="hmd-quest2"; size is one eye's; vergence "2" metres or

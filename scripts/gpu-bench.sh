@@ -5,8 +5,10 @@
 # 3840x2160, with the time per pass, measures their error against the 4x4
 # supersampled reference, and writes docs/gpu/<renderer>.md.
 #
-#   scripts/gpu-bench.sh [--quick] [--frames N] [--sizes 1920x1080,3840x2160] [--out DIR]
+#   scripts/gpu-bench.sh [--quick] [--frames N] [--sizes 1920x1080,3840x2160] [--margin K] [--out DIR]
 #
+# Each technique plans with its own margin (the fidelity default); --margin K
+# plans them all with K (--margin 1: the papers' plans), in every run.
 # --quick: 1920x1080 only, 3 frames, no quality tables (a few minutes on
 # llvmpipe; the full run's quality tables take an hour there).
 # FOVEATE_EGL=device forces the EGL device platform (see README).
@@ -18,18 +20,24 @@ frames=10
 sizes=1920x1080,3840x2160
 quality=1
 out=docs/gpu
+margin=
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) frames=3; sizes=1920x1080; quality=0 ;;
     --frames) frames="$2"; shift ;;
     --sizes) sizes="$2"; shift ;;
     --out) out="$2"; shift ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    --margin) margin="$2"; shift ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "gpu-bench.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
 done
 case "$frames" in ''|*[!0-9]*) echo "gpu-bench.sh: --frames expects a count, got '$frames'" >&2; exit 2 ;; esac
+# --margin K is handed to every bench (which checks its range); shown in the commands.
+plan=()
+[ -n "$margin" ] && plan=(--margin "$margin")
+shown_plan=${margin:+ --margin $margin}
 
 if [ -z "${FOVEATE_SKIP_BUILD:-}" ]; then
   cmake --preset release >/dev/null
@@ -60,6 +68,11 @@ tmpdoc="$work/doc.md"
   echo "OpenGL ${gl_version:-(version not recorded)},"
   echo "$(nproc) CPU threads ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n1)). Desktop display of"
   echo "Guenter et al. (its field of view kept at every size), quality A, gaze at the centre,"
+  if [ -n "$margin" ]; then
+    echo "every technique planned with margin $margin (1 = the papers' plans),"
+  else
+    echo "each technique planned with its own margin (the fidelity default; docs/fidelity.md),"
+  fi
   echo "$frames measured frames per technique after each technique's warm-up, techniques"
   echo "interleaved frame by frame. Speedups are ratios within one run. Time per pass"
   echo "from \`--passes\` (GPU timestamp queries on a GPU; glFinish between passes on"
@@ -76,11 +89,11 @@ for size in "${size_list[@]}"; do
     dir="$work/$name-$size"
     echo "gpu-bench.sh: $name at $size" >&2
     "$bin" bench --scene "$scene" --size "$size" --techniques "$techniques" --frames "$frames" \
-      --no-metrics --passes --quiet --out "$dir" >/dev/null
+      --no-metrics --passes "${plan[@]}" --quiet --out "$dir" >/dev/null
     {
       echo "## $name at $size"
       echo
-      echo "\`foveate bench --scene $scene --size $size --techniques $techniques --frames $frames --no-metrics --passes\`"
+      echo "\`foveate bench --scene $scene --size $size --techniques $techniques --frames $frames --no-metrics --passes$shown_plan\`"
       echo
       cat "$dir/results.md"
       echo
@@ -102,11 +115,11 @@ if [ "$quality" = 1 ]; then
     dir="$work/quality-$scene"
     echo "gpu-bench.sh: $scene against the 4x4 reference" >&2
     "$bin" bench --scene "$scene" --size $first --techniques "$techniques" --reference ssaa:4 \
-      --frames 3 --warmup 2 --quiet --out "$dir" >/dev/null
+      --frames 3 --warmup 2 "${plan[@]}" --quiet --out "$dir" >/dev/null
     {
       echo "## Quality: $scene at $first against the 4x4 supersampled reference"
       echo
-      echo "\`foveate bench --scene $scene --size $first --techniques $techniques --reference ssaa:4 --frames 3 --warmup 2\`"
+      echo "\`foveate bench --scene $scene --size $first --techniques $techniques --reference ssaa:4 --frames 3 --warmup 2$shown_plan\`"
       echo
       sed -n '/^| technique/,/^$/p' "$dir/results.md"
     } >> "$tmpdoc"
@@ -120,11 +133,11 @@ fi
 dir="$work/vrs-hardware"
 echo "gpu-bench.sh: vrs hardware against emulation" >&2
 "$bin" bench --scene guenter --size $first --techniques native,vrs --sweep vrs.hardware=0:1:1 \
-  --reference ssaa:4 --frames 3 --warmup 2 --passes --quiet --out "$dir" >/dev/null
+  --reference ssaa:4 --frames 3 --warmup 2 --passes "${plan[@]}" --quiet --out "$dir" >/dev/null
 {
   echo "## vrs: hardware rates against the emulation (guenter at $first)"
   echo
-  echo "\`foveate bench --scene guenter --size $first --techniques native,vrs --sweep vrs.hardware=0:1:1 --reference ssaa:4 --frames 3 --warmup 2 --passes\`"
+  echo "\`foveate bench --scene guenter --size $first --techniques native,vrs --sweep vrs.hardware=0:1:1 --reference ssaa:4 --frames 3 --warmup 2 --passes$shown_plan\`"
   echo
   cat "$dir/results.md"
   echo

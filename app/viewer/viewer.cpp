@@ -54,7 +54,8 @@ std::unique_ptr<Technique> Viewer::build(const std::string& name, Eye eye) const
   check_scene(info, session_.scene().info());
   TechniqueConfig c;
   c.display = session_.options().stereo ? session_.stereo_display().eye(eye) : session_.display();
-  c.acuity = acuity_.finer(session_.options().margin);  // --margin: the plan's acuity
+  c.acuity = acuity_;
+  c.margin = session_.options().margin;  // --margin, else each technique's own
   auto it = params_.find(name);
   if (it != params_.end()) c.params = it->second;
   return make_technique(name, c);
@@ -97,7 +98,8 @@ void Viewer::set_param(const std::string& technique, const std::string& key, dou
     } else {
       TechniqueConfig c;
       c.display = session_.display();
-      c.acuity = acuity_.finer(session_.options().margin);  // --margin: the plan's acuity
+      c.acuity = acuity_;
+      c.margin = session_.options().margin;  // --margin, else each technique's own
       c.params = mine;
       const ParamValues v = resolve_parameters(info, c);
       if (info.check) info.check(v);
@@ -300,7 +302,8 @@ nlohmann::json Viewer::state() const {
   j["overrides_by_technique"] = all;
   j["quality"] = quality_;
   j["slope"] = acuity_.slope;
-  j["margin"] = session_.options().margin;
+  j["margin"] =
+      session_.options().margin ? nlohmann::json(*session_.options().margin) : nlohmann::json();
   j["display"] = display_spec();
   j["shown"] = split_ ? "split" : show_native_ ? "native" : "foveated";
   j["split"] = split_;

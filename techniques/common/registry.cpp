@@ -46,6 +46,10 @@ void validate_declaration(const TechniqueInfo& info) {
       throw Error(where + ": a boolean's range is [0, 1]");
     if (!p.derive && !(p.value >= p.min && p.value <= p.max))
       throw Error(where + ": default " + number(p.value) + " outside its range");
+    if (p.key == kPlanMarginKey && (i != 0 || p.derive || p.min < 1.0 || p.max > 4.0))
+      throw Error(where +
+                  ": the planning margin is declared first, with a constant default, "
+                  "within [1, 4] (plan_margin_param)");
   }
 }
 
@@ -115,24 +119,58 @@ const TechniqueInfo& technique_info(const std::string& name) {
   throw Error("unknown technique '" + name + "' (known: " + names + ")");
 }
 
+namespace {
+
+void check_value(const TechniqueInfo& info, const ParamDecl& p, double x) {
+  const std::string what = info.name + " parameter " + p.key + "=" + number(x);
+  if (!std::isfinite(x) || x < p.min || x > p.max) {
+    throw Error(what + ": out of range [" + number(p.min) + ", " + number(p.max) + "]" +
+                (p.unit.empty() ? "" : " " + p.unit));
+  }
+  if (p.type != ParamType::Real && x != std::floor(x))
+    throw Error(what + ": must be " + type_name(p.type));
+}
+
+}  // namespace
+
+void check_parameter(const TechniqueInfo& info, const std::string& key, double value) {
+  for (const ParamDecl& p : info.params) {
+    if (p.key == key) return check_value(info, p, value);
+  }
+  throw Error(info.name + " has no parameter '" + key + "'");
+}
+
+ParamDecl plan_margin_param(double fidelity_default) {
+  return param(kPlanMarginKey,
+               "plan for an acuity this many times finer than the model the metrics judge by "
+               "(slope and foveal MAR divided by it): 1 = the paper's plan; the default is the "
+               "least at which this technique's error stays within native's own + 1 code against "
+               "a 4x4 supersampled reference (docs/fidelity.md)",
+               "", ParamType::Real, 1.0, 4.0, fidelity_default);
+}
+
+TechniqueConfig planning_config(const TechniqueConfig& config, const ParamValues& values) {
+  TechniqueConfig c = config;
+  if (values.has(kPlanMarginKey)) c.acuity = config.acuity.finer(values.real(kPlanMarginKey));
+  return c;
+}
+
 ParamValues resolve_parameters(const TechniqueInfo& info, const TechniqueConfig& config) {
   ParamValues values;
+  // Defaults derived from the acuity model see the plan's (the margin is
+  // resolved first: validate_declaration keeps it first).
+  TechniqueConfig planned = config;
   for (const ParamDecl& p : info.params) {
-    double v = p.derive ? std::clamp(p.derive(config, values), p.min, p.max) : p.value;
+    double v = p.derive ? std::clamp(p.derive(planned, values), p.min, p.max) : p.value;
     if (p.type != ParamType::Real) v = std::round(v);
     auto it = config.params.find(p.key);
-    if (it != config.params.end()) {
-      const double x = it->second;
-      const std::string what = info.name + " parameter " + p.key + "=" + number(x);
-      if (!std::isfinite(x) || x < p.min || x > p.max) {
-        throw Error(what + ": out of range [" + number(p.min) + ", " + number(p.max) + "]" +
-                    (p.unit.empty() ? "" : " " + p.unit));
-      }
-      if (p.type != ParamType::Real && x != std::floor(x))
-        throw Error(what + ": must be " + type_name(p.type));
-      v = x;
+    const bool margin_given = p.key == kPlanMarginKey && config.margin.has_value();
+    if (it != config.params.end() || margin_given) {
+      v = it != config.params.end() ? it->second : *config.margin;
+      check_value(info, p, v);
     }
     values.set(p.key, v);
+    if (p.key == kPlanMarginKey) planned = planning_config(config, values);
   }
   for (const auto& [key, v] : config.params) {
     if (!values.has(key)) {
@@ -150,7 +188,7 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   config.display.validate();
   const TechniqueInfo& info = technique_info(name);
   const ParamValues values = resolve_parameters(info, config);
-  std::unique_ptr<Technique> t = info.make(config, values);
+  std::unique_ptr<Technique> t = info.make(planning_config(config, values), values);
   t->name_ = info.name;
   t->values_ = values;
   t->display_ = config.display;

@@ -466,6 +466,7 @@ TechniqueInfo layered_info() {
       "layers at half rate.";
   t.source = "Guenter et al., Foveated 3D Graphics, 2012";
   t.params = {
+      plan_margin_param(2.0),
       param("layers", "number of layers n (1 = native)", "", ParamType::Integer, 1, kMaxLayers, 3),
       param("transition",
             "width of the smoothstep blend band outside each inner layer's radius, as a fraction "

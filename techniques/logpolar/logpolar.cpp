@@ -25,7 +25,9 @@
 //    radially: the two balance near 1.25 at 1080p.
 //  * Two-level antialiasing (Meng et al.), in linear light: temporal
 //    antialiasing in the buffer (jittered samples, reprojected history,
-//    neighbourhood clamping), then a Gaussian whose width grows from zero
+//    neighbourhood clamping; off by default, `temporal` 0, since against a
+//    supersampled reference it adds more error than it removes), then a
+//    Gaussian whose width grows from zero
 //    at the native disc with eccentricity. Its width depends only on the
 //    buffer column, so it is applied in the buffer (blur.frag) and the
 //    inverse mapping reads the result once per pixel; the inverse mapping's
@@ -419,6 +421,7 @@ TechniqueInfo logpolar_info() {
       "growing with eccentricity).";
   t.source = "Meng, Du, Zwicker, Varshney, Kernel Foveated Rendering, 2018";
   t.params = {
+      plan_margin_param(1.75),
       param("fovea_deg",
             "smallest radius of the native disc at the gaze (it also reaches out to where the "
             "buffer's samples are no closer together than native pixels)",
@@ -444,9 +447,10 @@ TechniqueInfo logpolar_info() {
             "0.41 by itself, so up to that it costs nothing and adds nothing (0 = the read alone)",
             "texels", ParamType::Real, 0.0, 3.0, 0.4),
       param("temporal",
-            "weight of the reprojected history in the buffer's temporal antialiasing, with "
-            "sub-texel jitter (0 = off)",
-            "", ParamType::Real, 0.0, 0.95, 0.7),
+            "weight of the reprojected history in the buffer's temporal antialiasing (the "
+            "paper's first level), with sub-texel jitter; 0 = off, the default: against the 4x4 "
+            "supersampled reference it adds more acuity error than it removes (docs/fidelity.md)",
+            "", ParamType::Real, 0.0, 0.95, 0.0),
   };
   t.make = construct<LogPolar>();
   return t;

@@ -98,15 +98,18 @@ TEST(Bench, SweptRunsOnlyForTechniquesWithTheKey) {
 }
 
 TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
-  // --sweep margin=...: every technique but native (which plans nothing) is
-  // made for the session's acuity made finer by each value, so the
-  // checkerboard's regions begin farther out; the metrics keep the
-  // session's acuity (recorded once, with the session's margin).
+  // --sweep margin=...: every technique but native (which plans nothing)
+  // gets each value as its planning margin, so the checkerboard's regions
+  // begin farther out; the metrics keep the session's acuity (recorded
+  // once; no --margin: null).
   const Sweep m = Sweep::parse("margin=1:2:1");
   EXPECT_TRUE(m.applies_to("checkerboard"));
   EXPECT_FALSE(m.applies_to("native"));
+  // Every value is checked against each declaration before anything runs.
   EXPECT_EQ(error_of([] { Sweep::parse("margin=0.5:1:0.5"); }),
-            "--sweep: margin: expected a factor from 1 to 4, got 0.5");
+            "--sweep: layered parameter margin=0.5: out of range [1, 4]");
+  EXPECT_EQ(error_of([] { Sweep::parse("layered.layers=2:3:0.5"); }),
+            "--sweep: layered parameter layers=2.5: must be a whole number");
   const std::string out = (std::filesystem::temp_directory_path() / "foveate-app-margin").string();
   std::filesystem::remove_all(out);
   BenchOptions o = tiny(out);
@@ -125,7 +128,8 @@ TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
   };
   TechniqueConfig c;
   c.display = Display::load("desktop-1080p").resized(640, 360);
-  c.acuity = AcuityModel::quality("A").finer(2.0);
+  c.acuity = AcuityModel::quality("A");
+  c.margin = 2.0;
   const ParamValues finer = resolve_parameters(technique_info("checkerboard"), c);
   EXPECT_EQ(r1(r.results[2]), finer.real("r1"));
   EXPECT_GT(r1(r.results[2]), r1(r.results[1]));
@@ -133,7 +137,7 @@ TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
   std::ifstream in(out + "/results.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["acuity"]["slope"], kSlopeQualityA);
-  EXPECT_EQ(j["margin"], 1.0);
+  EXPECT_TRUE(j["margin"].is_null());
   std::filesystem::remove_all(out);
 }
 

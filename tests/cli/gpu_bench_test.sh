@@ -24,6 +24,14 @@ check "lodmask only on guenter (its row and its passes)" '[ "$(grep -c "^| lodma
 check "time per pass" 'grep -q "resolve share" "$doc"'
 check "vrs against the 4x4 reference" 'grep -q "vrs.hardware=1.0000" "$doc" && grep -q "ssaa:4" "$doc"'
 check "--quick has no quality tables" '! grep -q "^## Quality" "$doc"'
+check "says each technique planned with its own margin" 'grep -q "planned with its own margin" "$doc"'
+
+# --margin K reaches every bench, and the document says so.
+FOVEATE_SKIP_BUILD=1 FOVEATE_BIN="$FOVEATE" bash "$script" --quick --sizes 160x90 --frames 1 \
+  --margin 1 --out "$tmp/gpu1" >/dev/null 2>"$tmp/err1m"
+doc1=$(ls "$tmp"/gpu1/*.md 2>/dev/null | head -n1)
+check "--margin 1: the papers' plans, in the document, commands and results" \
+  '[ -n "$doc1" ] && grep -q "planned with margin 1" "$doc1" && grep -q -- "--passes --margin 1" "$doc1" && grep -q "\"margin\": 1" "$tmp/gpu1/results/"*guenter-160x90.json'
 
 bash "$script" --frames many >/dev/null 2>"$tmp/err1"
 check "--frames many: exit 2, named" '[ $? -eq 2 ] && grep -q "frames" "$tmp/err1"'

@@ -60,9 +60,9 @@ out=$("$FOVEATE" plan --display "$tmp/lens.json" --size 700x700)
 check "plan without --gaze: any gaze, the same as without the lens" '[[ "$out" == *"planned for any gaze"*"(the lens saves 0.0 % of the layer pixels)"* ]]'
 
 # Presets: the DK1's published lens and the Quest 2 example lens.
-q=$("$FOVEATE" rates --display hmd-quest2-lens --gaze 0.95,0.5 --out "$tmp/q.bin")
+q=$("$FOVEATE" rates --display hmd-quest2-lens --gaze 0.95,0.5 --margin 1 --out "$tmp/q.bin")
 check "hmd-quest2-lens relaxes tiles far off the axis" '[[ "$q" == *"through the lens"*"tiles coarser than without the lens (0.0755 without it)"* && "$q" == *"native pixels = 0.0737"* ]]'
-p=$("$FOVEATE" rates --display hmd-quest2 --gaze 0.95,0.5 --out "$tmp/q0.bin")
+p=$("$FOVEATE" rates --display hmd-quest2 --gaze 0.95,0.5 --margin 1 --out "$tmp/q0.bin")
 check "hmd-quest2 (no lens) is unchanged" '[[ "$p" == *"native pixels = 0.0755"* && "$p" != *"through the lens"* ]]'
 "$FOVEATE" plan --display hmd-rift-dk1 --size 1097x1372 --json > "$tmp/dk1.json"
 check "hmd-rift-dk1: the SDK's buffer and lens in the plan's display" 'python3 - "$tmp/dk1.json" <<PY

@@ -9,7 +9,8 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # byte FILE INDEX: the unsigned value of one byte.
 byte() { od -An -tu1 -j "$2" -N1 "$1" | tr -d ' '; }
 
-out=$("$FOVEATE" rates --display desktop-1080p --gaze 960,540 --tile 16 --api vulkan --out "$tmp/v.bin")
+# The hand-worked tiles are for the model itself (--margin 1).
+out=$("$FOVEATE" rates --display desktop-1080p --gaze 960,540 --tile 16 --api vulkan --margin 1 --out "$tmp/v.bin")
 check "vulkan: 120x68 tiles, one byte each" '[[ $(stat -c %s "$tmp/v.bin") -eq 8160 ]]'
 # Tile (60,33) holds the gaze: 1x1 = 0. Tile (70,33), e = 4.1 deg: 2x2 = 5.
 # Tile (110,33), 20 degrees right of the gaze: 4x4 = (2 << 2 | 2) = 10.
@@ -18,12 +19,12 @@ check "vulkan: tile at 4 deg is 2x2 (5)" '[[ $(byte "$tmp/v.bin" $((33*120+70)))
 check "vulkan: tile at 20 deg is 4x4 (10)" '[[ $(byte "$tmp/v.bin" $((33*120+110))) -eq 10 ]]'
 check "prints the fraction per rate and the pixel ratio" '[[ "$out" == *"4x4"*"%"* && "$out" == *"shaded samples / native pixels = 0.1"* ]]'
 
-"$FOVEATE" rates --api d3d12 --out "$tmp/d.bin" >/dev/null
+"$FOVEATE" rates --api d3d12 --margin 1 --out "$tmp/d.bin" >/dev/null
 check "d3d12 bytes equal vulkan's (same encoding)" 'cmp -s "$tmp/v.bin" "$tmp/d.bin"'
 
 # gl-nv: rows bottom-to-top, the grid anchored at the bottom-left; the gaze row
 # y = 540 is GL row 539 / 16 = 33. Palette indices: 1x1 0, 2x2 3, 4x4 6.
-"$FOVEATE" rates --api gl-nv --out "$tmp/g.bin" >/dev/null
+"$FOVEATE" rates --api gl-nv --margin 1 --out "$tmp/g.bin" >/dev/null
 check "gl-nv: palette indices" '[[ $(byte "$tmp/g.bin" $((33*120+60))) -eq 0 && $(byte "$tmp/g.bin" $((33*120+70))) -eq 3 && $(byte "$tmp/g.bin" $((33*120+110))) -eq 6 ]]'
 check "gl-nv: top tile row is the last" '[[ $(byte "$tmp/g.bin" $((67*120))) -eq 6 && $(stat -c %s "$tmp/g.bin") -eq 8160 ]]'
 
@@ -52,6 +53,12 @@ ratio() { "$FOVEATE" rates --out "$tmp/x.bin" "$@" | sed -n "s/.*native pixels =
 a=$(ratio); b=$(ratio --latency-ms 30); q=$(ratio --quality B)
 check "latency margin shades more ($a < $b)" 'python3 -c "import sys; assert float(sys.argv[1]) < float(sys.argv[2])" $a $b'
 check "quality B shades more than A ($a < $q)" 'python3 -c "import sys; assert float(sys.argv[1]) < float(sys.argv[2])" $a $q'
+# Unless --margin says otherwise, the vrs technique's own planning margin
+# (foveate techniques: vrs margin = 1.5), finer than the model itself.
+one=$(ratio --margin 1); own=$(ratio --margin 1.5)
+check "default margin is vrs's own ($a = $own > $one)" 'python3 -c "import sys; assert sys.argv[1] == sys.argv[2] and float(sys.argv[1]) > float(sys.argv[3])" $a $own $one'
+"$FOVEATE" rates --out "$tmp/m.json" >/dev/null
+check "json records the margin and the judged acuity" 'python3 -c "import json,sys; j=json.load(open(sys.argv[1])); assert j[\"margin\"] == 1.5 and j[\"acuity\"][\"slope\"] == 0.0275" "$tmp/m.json"'
 
 bad() {  # bad EXPECTED-RC TEXT ARGS...: fails with that code, names TEXT, writes nothing
   local want=$1 text=$2; shift 2
@@ -70,6 +77,7 @@ bad 1 "--preview" --preview "$tmp/p.jpg" --out "$tmp/bad.bin"
 bad 1 "--size" --size 0x10 --out "$tmp/bad.bin"
 bad 1 "nope" --display nope --out "$tmp/bad.bin"
 bad 1 "slope" --slope -1 --out "$tmp/bad.bin"
+bad 1 "--margin" --margin 0.5 --out "$tmp/bad.bin"
 err=$("$FOVEATE" rates 2>&1); rc=$?
 check "missing --out is a usage error" '[[ $rc -ne 0 && $rc -ne 1 && $rc -ne 3 && "$err" == *"--out"* ]]'
 err=$("$FOVEATE" rates --tile abc --out "$tmp/bad.bin" 2>&1); rc=$?

@@ -60,7 +60,7 @@ assert abs(s2["speedup"] - s2["native_ms"] / s2["frame_ms"]) < 1e-9 * s2["speedu
 assert s2["shaded_pixels"] > 0 and s2["native_pixels"] == 320 * 180, s2
 assert abs(s2["shaded_share"] - s2["shaded_pixels"] / s2["native_pixels"]) < 1e-12, s2
 assert s2["quality"] == "A" and s2["slope"] == 0.0275 and s2["display"] == "desktop-1080p", s2
-assert s2["margin"] == 1, s2
+assert s2["margin"] is None and s2["params"]["margin"] == 2, s2  # layered's own
 assert s2["gaze"]["x_px"] == 160 and s2["gaze"]["y_px"] == 90 and s2["gaze"]["valid"], s2["gaze"]
 assert "fixed" in s2["gaze"]["source"], s2["gaze"]
 labels = [e["label"] for e in s2["legend"]]

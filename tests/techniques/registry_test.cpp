@@ -68,7 +68,7 @@ TEST(Registry, ParametersResolveFromTheirDeclarations) {
   const std::string unknown = error_of([&] {
     resolve_parameters(layered, config(640, 360, {{"sigma", 2}}));
   });
-  EXPECT_NE(unknown.find("layered has no parameter 'sigma' (it has: layers, transition"),
+  EXPECT_NE(unknown.find("layered has no parameter 'sigma' (it has: margin, layers, transition"),
             std::string::npos)
       << unknown;
   const std::string cross = error_of([&] {
@@ -76,6 +76,56 @@ TEST(Registry, ParametersResolveFromTheirDeclarations) {
                        config(640, 360, {{"inner_deg", 10}, {"outer_deg", 5}}));
   });
   EXPECT_NE(cross.find("outer_deg must be >= inner_deg"), std::string::npos) << cross;
+}
+
+TEST(Registry, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
+  // Declared first by every built-in technique but native, with the least
+  // margin at which the technique meets the fidelity target (docs/fidelity.md).
+  const std::map<std::string, double> own = {{"layered", 2.0},      {"logpolar", 1.75},
+                                             {"checkerboard", 1.5}, {"vrs", 1.5},
+                                             {"inset", 1.0},        {"lodmask", 1.0}};
+  for (const auto& [name, margin] : own) {
+    const TechniqueInfo& t = technique_info(name);
+    ASSERT_FALSE(t.params.empty()) << name;
+    EXPECT_EQ(t.params[0].key, kPlanMarginKey) << name;
+    EXPECT_EQ(resolve_parameters(t, config(1920, 1080)).real(kPlanMarginKey), margin) << name;
+  }
+  EXPECT_FALSE(resolve_parameters(technique_info("native"), config(1920, 1080)).has("margin"));
+  // TechniqueConfig::margin (--margin) sets every technique's; a parameter
+  // of the technique's own wins over it.
+  const TechniqueInfo& layered = technique_info("layered");
+  TechniqueConfig c = config(1920, 1080);
+  c.margin = 1.25;
+  EXPECT_EQ(resolve_parameters(layered, c).real("margin"), 1.25);
+  EXPECT_EQ(resolve_parameters(technique_info("native"), c).items().size(), 0u);
+  c.params = {{"margin", 3.0}};
+  EXPECT_EQ(resolve_parameters(layered, c).real("margin"), 3.0);
+  c.params.clear();
+  c.margin = 0.5;
+  EXPECT_EQ(error_of([&] { resolve_parameters(layered, c); }),
+            "layered parameter margin=0.5: out of range [1, 4]");
+  // The plan is for the acuity made finer by the margin, and so are the
+  // defaults derived from the acuity model: checkerboard at its own 1.5 has
+  // the regions of the paper's plan (margin 1) for the model made 1.5 times finer.
+  const TechniqueInfo& cb = technique_info("checkerboard");
+  TechniqueConfig paper = config(1920, 1080);
+  paper.margin = 1.0;
+  paper.acuity = paper.acuity.finer(1.5);
+  const ParamValues own_values = resolve_parameters(cb, config(1920, 1080));
+  for (const char* key : {"r1", "r2", "r3"}) {
+    EXPECT_EQ(own_values.real(key), resolve_parameters(cb, paper).real(key)) << key;
+    EXPECT_GT(own_values.real(key), resolve_parameters(cb,
+                                                       [] {
+                                                         TechniqueConfig p = config(1920, 1080);
+                                                         p.margin = 1.0;
+                                                         return p;
+                                                       }())
+                                        .real(key))
+        << key;
+  }
+  const TechniqueConfig planned = planning_config(config(1920, 1080), own_values);
+  EXPECT_DOUBLE_EQ(planned.acuity.slope, AcuityModel::quality("A").slope / 1.5);
+  EXPECT_DOUBLE_EQ(planned.acuity.w0_deg, AcuityModel::quality("A").w0_deg / 1.5);
 }
 
 TEST(Registry, BadRegistrationsAreRefused) {
@@ -97,8 +147,13 @@ TEST(Registry, BadRegistrationsAreRefused) {
   dotted.params = {param("a.b", "", "", ParamType::Real, 0, 1, 0)};
   EXPECT_NE(error_of([&] { register_technique(dotted); }).find("must be non-empty"),
             std::string::npos);
+  TechniqueInfo late = minimal("test-late-margin");
+  late.params = {param("k", "", "", ParamType::Real, 0, 1, 0), plan_margin_param(1.5)};
+  EXPECT_NE(error_of([&] { register_technique(late); }).find("planning margin is declared first"),
+            std::string::npos);
   // Nothing refused was added.
-  for (const char* name : {"test-twice", "test-outside", "test-flag", "test-dotted"}) {
+  for (const char* name :
+       {"test-twice", "test-outside", "test-flag", "test-dotted", "test-late-margin"}) {
     EXPECT_NE(error_of([&] { technique_info(name); }).find("unknown technique"), std::string::npos);
   }
 }

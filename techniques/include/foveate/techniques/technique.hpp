@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,7 +28,12 @@ namespace foveate {
 struct TechniqueConfig {
   /// The display at the render resolution (Display::resized keeps its field of view).
   Display display;
+  /// The acuity the metrics judge by; a technique plans for it made finer
+  /// by its planning margin (kPlanMarginKey).
   AcuityModel acuity;
+  /// Every technique's planning margin (1 = each paper's plan); unset, each
+  /// technique's own default. params["margin"] overrides it.
+  std::optional<double> margin;
   /// Overrides by key (see TechniqueInfo::params); unknown keys are errors.
   std::map<std::string, double> params;
 };
@@ -68,6 +74,20 @@ inline ParamDecl param(std::string key, std::string help, std::string unit, Para
                        double min, double max, double value) {
   return {std::move(key), std::move(help), std::move(unit), type, min, max, value, {}};
 }
+
+/// The key of the planning margin: a technique that declares it (every
+/// built-in one but native) plans its layers, rates, regions or circles for
+/// the acuity model made this many times finer (AcuityModel::finer), while
+/// the metrics keep judging by the model itself. Resolved before every other
+/// parameter, so that defaults derived from the acuity model see the plan's.
+inline constexpr const char* kPlanMarginKey = "margin";
+
+/// The planning margin's declaration, with the technique's own default: the
+/// least margin (in steps of 0.25) at which the technique's acuity-aware error
+/// against a 4x4 supersampled reference stays within native's own + 1 code
+/// on guenter and raymarch at 1920x1080 (docs/fidelity.md); 1 = the paper's
+/// plan.
+ParamDecl plan_margin_param(double fidelity_default);
 
 /// What a technique needs from a scene.
 struct SceneNeeds {
@@ -167,6 +187,13 @@ const TechniqueInfo& technique_info(const std::string& name);
 /// technique and the key for an unknown key, a value out of range or a
 /// fraction where a whole number or 0/1 is declared.
 ParamValues resolve_parameters(const TechniqueInfo& info, const TechniqueConfig& config);
+/// Throws foveate::Error, as resolve_parameters does, when `value` is not a
+/// value the technique's parameter `key` can take (or it has no such key).
+void check_parameter(const TechniqueInfo& info, const std::string& key, double value);
+/// `config` with the acuity the technique plans for: made finer by its
+/// planning margin (kPlanMarginKey) where it declares one. make_technique
+/// hands this to TechniqueInfo::make.
+TechniqueConfig planning_config(const TechniqueConfig& config, const ParamValues& values);
 /// Creates a technique (resolve_parameters, then make). Needs a current GL context.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueConfig& config);
 /// Why `scene` cannot be rendered by the technique, or empty when it can.
