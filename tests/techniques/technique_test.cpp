@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/models.hpp"
@@ -360,6 +361,25 @@ TEST_F(Techniques, CheckerboardCountsMatchThePatternAndFoveaIsExact) {
   EXPECT_LT(s.shaded_pixels, 0.9 * kW * kH);
   // The native fovea is native's, out to its radius.
   EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, rings[0].w));
+}
+
+TEST_F(Techniques, CheckerboardFadesFromNativeOverABandProportionalToR1) {
+  // Between the native fovea (r1) and the first dropped quads a band of
+  // `blend` x r1's eccentricity is shaded in full (0.2 by default, as
+  // layered's blend band): the MAR grows in proportion to eccentricity.
+  const Display d = config().display;
+  const Vec2d gaze{kW / 2.0, kH / 2.0};
+  for (double blend : {0.2, 0.5}) {
+    auto t = make_technique("checkerboard", config({{"block", 2}, {"blend", blend}}));
+    const auto rings = t->overlay(GazeState{gaze});
+    const double e0 = std::atan(rings[0].w / d.eye_distance_px()) * 180.0 / std::numbers::pi;
+    ASSERT_GT(e0, 0.0);
+    EXPECT_GE(rings[1].w, d.radius_px_at((1.0 + blend) * e0) - 1e-6) << blend;
+    EXPECT_GT(rings[1].w, rings[0].w + 1.0) << blend;
+  }
+  auto none = make_technique("checkerboard", config({{"block", 2}, {"blend", 0.0}}));
+  auto wide = make_technique("checkerboard", config({{"block", 2}, {"blend", 0.5}}));
+  EXPECT_LT(none->overlay(GazeState{gaze})[1].w, wide->overlay(GazeState{gaze})[1].w);
 }
 
 TEST_F(Techniques, CheckerboardMaskPathsAgree) {
