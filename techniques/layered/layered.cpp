@@ -418,13 +418,24 @@ class Layered final : public Technique {
       kit_.pass(kit_.fullscreen("layered/composite.frag"), target, {}, set);
       return;
     }
-    // The regions, innermost first: the disc of layer k's blend band reads
-    // layers k..n-1; outside every disc only the outer layer is read. A depth
-    // test keeps each pixel to the first region that covers it (early, so
+    // The regions, innermost first: within the inner layer's radius only that
+    // layer shows (one read); the disc of layer k's blend band reads layers
+    // k..n-1; outside every disc only the outer layer is read. A depth test
+    // keeps each pixel to the first region that covers it (early, so
     // llvmpipe skips the 4x4 blocks already written).
     const gpu::ProfileScope timed("composite");
     const gpu::Program& prog = kit_.over_regions("layered/composite.frag");
-    regions_.begin(target, n);
+    const bool inner = n > 1;
+    regions_.begin(target, inner ? n + 1 : n);
+    if (inner) {
+      const gpu::Program& only = kit_.over_regions("layered/composite_inner.frag");
+      const LayerState& st = state_[0];
+      gpu::Samplers own;
+      own.bind(only, "u_inner", *source[0]);
+      only.set("u_inner_rect", float(st.rect[0]), float(st.rect[1]), float(st.rect[2]),
+               float(st.rect[3]));
+      regions_.disc(only, st.centre, st.radius - 1.0, true);
+    }
     gpu::Samplers samplers;
     set(prog, samplers);
     for (int k = 0; k < n; ++k) {
