@@ -299,7 +299,6 @@ void register_techniques(CLI::App& app) {
     const std::optional<double> forced =
         *margin ? std::optional<double>(checked_margin(**margin)) : std::nullopt;
     c.margin = forced;
-    const auto resolved = [&](const TechniqueInfo& t) { return resolve_parameters(t, c); };
     if (*json) {
       nlohmann::json j = {{"display", c.display},
                           {"size", {sz.width, sz.height}},
@@ -307,7 +306,7 @@ void register_techniques(CLI::App& app) {
                           {"margin", forced ? nlohmann::json(*forced) : nlohmann::json()}};
       nlohmann::json list = nlohmann::json::array();
       for (const TechniqueInfo& t : techniques()) {
-        const ParamValues values = resolved(t);
+        const ParamValues values = resolve_parameters(t, c);
         nlohmann::json params = nlohmann::json::array();
         for (const ParamDecl& p : t.params) {
           params.push_back({{"key", p.key},
@@ -337,7 +336,7 @@ void register_techniques(CLI::App& app) {
     for (const TechniqueInfo& t : techniques()) {
       std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
       if (t.needs.meshes) std::printf("  needs: a scene with meshes\n");
-      const ParamValues values = resolved(t);
+      const ParamValues values = resolve_parameters(t, c);
       for (const ParamDecl& p : t.params) {
         const std::string value = fmt(values.real(p.key), p.type == ParamType::Real ? 3 : 0) +
                                   (p.unit.empty() ? "" : " " + p.unit);
