@@ -1,5 +1,6 @@
 // foveate gaze: statistics of gaze recordings (I-VT), recording from a live
 // Pupil Capture, and synthetic traces from the seeded viewer model.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -227,7 +228,11 @@ void run_record(const RecordArgs& a) {
     const std::vector<GazeSample> got = src.drain(&arrivals);
     for (size_t i = 0; i < got.size(); ++i) {
       trace.samples.push_back(got[i]);
-      trace.latency_ms.push_back((arrivals[i] - got[i].time_s) * 1e3);
+      // Arrival minus capture, the capture time mapped to this clock by the
+      // offset measured at the handshake: that estimate errs by microseconds,
+      // so a sample delivered at once can come out a few us negative (seen:
+      // -0.009 ms). No sample arrives before it was taken.
+      trace.latency_ms.push_back(std::max(0.0, (arrivals[i] - got[i].time_s) * 1e3));
     }
   };
   while (StopSignals::received() == 0 && src.now_s() - start < a.seconds) {

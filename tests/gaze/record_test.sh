@@ -29,9 +29,9 @@ rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswi
 for r in rows:
     x, y = float(r["x"]), float(r["y"])
     assert abs(math.hypot(x - 0.5, y - 0.5) - 0.2) < 1e-5, (x, y)
-    # Arrival minus capture time: a few ms unloaded, but a 2-core CI machine
-    # running GL tests beside this one has delayed delivery past 500 ms.
-    assert 0 <= float(r["latency_ms"]) < 5000, r
+    # Never negative: the handshake's clock offset errs by microseconds, and
+    # a sample delivered at once once came out at -0.009 ms before the clamp.
+    assert 0 <= float(r["latency_ms"]) < 500, r
 PY'
 # SIGTERM and SIGHUP stop a recording as Ctrl-C does: what was received is
 # written, atomically, and the exit is 0.
