@@ -29,7 +29,7 @@ rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswi
 for r in rows:
     x, y = float(r["x"]), float(r["y"])
     assert abs(math.hypot(x - 0.5, y - 0.5) - 0.2) < 1e-5, (x, y)
-    # Never negative: the handshake's clock offset errs by microseconds, and
+    # Never negative: the clock offset of the handshake errs by microseconds, and
     # a sample delivered at once once came out at -0.009 ms before the clamp.
     assert 0 <= float(r["latency_ms"]) < 500, r
 PY'
