@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -73,6 +74,63 @@ Vec2d KernelLogPolar::to_screen(Vec2d b, Vec2d gaze) const {
   const double r = std::exp(log_extent() * std::pow(std::max(b.x / buffer_w(), 0.0), alpha));
   const double angle = b.y * kTwoPi / buffer_h();
   return {gaze.x + r * std::cos(angle), gaze.y + r * std::sin(angle)};
+}
+
+namespace {
+// Distance from `g` (inside `keep`) to the border of `keep` along angle `a`.
+double exit_distance(Vec2d g, const std::array<double, 4>& keep, double a) {
+  const double dx = std::cos(a), dy = std::sin(a);
+  double t = std::numeric_limits<double>::infinity();
+  if (dx > 1e-12) t = std::min(t, (keep[2] - g.x) / dx);
+  if (dx < -1e-12) t = std::min(t, (keep[0] - g.x) / dx);
+  if (dy > 1e-12) t = std::min(t, (keep[3] - g.y) / dy);
+  if (dy < -1e-12) t = std::min(t, (keep[1] - g.y) / dy);
+  return std::max(t, 0.0);
+}
+}  // namespace
+
+std::vector<std::array<int, 4>> log_polar_cover(Vec2d gaze, double L, double alpha, int w, int h,
+                                                double inner, const std::array<double, 4>& keep,
+                                                int band) {
+  require(w >= 1 && h >= 1 && band >= 1, "log_polar_cover: empty buffer or band");
+  require(std::isfinite(L) && L > 0.0 && std::isfinite(alpha) && alpha > 0.0,
+          "log_polar_cover: L and alpha must be positive");
+  // Column (texel units) at which the mapping reaches radius r: u = w (log r / L)^(1/alpha).
+  const auto column = [&](double r) {
+    return r <= 1.0 ? 0.0 : std::pow(std::log(r) / L, 1.0 / alpha) * w;
+  };
+  // A texel c has u in [c, c + 1] whatever its jitter: it can reach `inner`
+  // only if c + 1 >= column(inner).
+  const int first = std::max(0, static_cast<int>(std::floor(column(inner))) - 1);
+  // The exit distance along an angle is least at a side's normal and grows
+  // towards the corners: over an interval of angles it is largest at the
+  // interval's ends or at a corner's direction inside it.
+  std::array<double, 4> corners{};
+  for (int k = 0; k < 4; ++k) {
+    const double cx = keep[k == 0 || k == 3 ? 0 : 2], cy = keep[k < 2 ? 1 : 3];
+    corners[static_cast<size_t>(k)] = std::atan2(cy - gaze.y, cx - gaze.x);
+  }
+  const bool inside =
+      gaze.x >= keep[0] && gaze.x <= keep[2] && gaze.y >= keep[1] && gaze.y <= keep[3];
+  std::vector<std::array<int, 4>> out;
+  for (int y0 = 0; y0 < h; y0 += band) {
+    const int y1 = std::min(h, y0 + band);
+    // Rows y0..y1-1 have v in [y0, y1] (centre +- half a texel of jitter).
+    const double a0 = y0 * kTwoPi / h, a1 = y1 * kTwoPi / h;
+    double reach = std::max(exit_distance(gaze, keep, a0), exit_distance(gaze, keep, a1));
+    for (double c : corners) {
+      for (int turn = -1; turn <= 2; ++turn) {
+        const double a = c + turn * kTwoPi;
+        if (a > a0 && a < a1) reach = std::max(reach, exit_distance(gaze, keep, a));
+      }
+    }
+    if (!inside) reach = std::numeric_limits<double>::infinity();  // no shortcut off the rectangle
+    if (reach < inner) continue;
+    const double u = std::isfinite(reach) ? column(reach) : double(w);
+    const int last = std::min(w, static_cast<int>(std::floor(u)) + 2);
+    if (last > first) out.push_back({first, y0, last, y1});
+  }
+  return out;
 }
 
 // ---------------------------------------------------------------- Silvera

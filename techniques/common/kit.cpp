@@ -38,11 +38,12 @@ const gpu::Program& Kit::built(const std::string& key, const std::string& vertex
 }
 
 const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early,
-                                 int samples) {
-  if (samples > 1)
-    return scene_program_with(scene, mapping, "common/shade_main_msaa.frag", samples);
-  return scene_program_with(scene, mapping,
-                            early ? "common/shade_main_early.frag" : "common/shade_main.frag");
+                                 int samples, bool rects) {
+  const std::string main = samples > 1 ? "common/shade_main_msaa.frag"
+                           : early     ? "common/shade_main_early.frag"
+                                       : "common/shade_main.frag";
+  return scene_program_with(scene, mapping, main, samples,
+                            rects ? "common/rects.vert" : "fullscreen.vert");
 }
 
 const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& main, int samples) {
@@ -50,9 +51,10 @@ const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& ma
 }
 
 const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::string& before,
-                                            const std::string& main, int samples) {
+                                            const std::string& main, int samples,
+                                            const std::string& vertex) {
   const std::string key =
-      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples);
+      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples) + "|" + vertex;
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   std::vector<gpu::StageSource::Piece> pieces = scene.shade_source();
@@ -66,7 +68,7 @@ const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::strin
   tables.push_back(embedded::techniques_shaders());
   tables.push_back(scene_shader_files());
   const gpu::ShaderCompiler c(tables);
-  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{vertex, {}}}},
                             gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
                            "scene '" + scene.info().name + "' with " + main);
   const gpu::Program& stored = programs_.emplace(key, std::move(p)).first->second;
@@ -160,11 +162,18 @@ void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program
 
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
                   const gpu::RenderTarget& target, const SetUniforms& set,
-                  const gpu::PassState& state, bool early) {
-  const gpu::Program& p = shading(scene, mapping, early, view.samples);
+                  const gpu::PassState& state, bool early, const std::vector<PixelRect>& cover) {
+  const gpu::Program& p = shading(scene, mapping, early, view.samples, !cover.empty());
   const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-  scene_pass(scene, view, p, target, state, set);
+  if (cover.empty()) {
+    scene_pass(scene, view, p, target, state, set);
+  } else {
+    gpu::Samplers samplers;
+    scene.bind(p, view, samplers);
+    if (set) set(p, samplers);
+    rect_pass_.draw(p, cover, target, state);
+  }
   glEndQuery(GL_SAMPLES_PASSED);
   GLuint64 samples = 0;
   glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &samples);

@@ -29,8 +29,10 @@ class Kit {
   /// GLSL file defining vec2 foveate_map(vec2 frag_coord)), cached per scene.
   /// With `early`, depth and stencil tests run before shading (stencil masks
   /// really save the work) and there is no off-screen discard.
+  /// With `rects`, the program draws over rectangles (common/rects.vert)
+  /// instead of the full-screen triangle.
   const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false,
-                              int samples = 1);
+                              int samples = 1, bool rects = false);
   /// A program of the scene's shading GLSL followed by `main` (an embedded
   /// file with main() that may call the scene's functions), cached per scene.
   const gpu::Program& scene_program(const Scene& scene, const std::string& main, int samples = 1);
@@ -73,17 +75,22 @@ class Kit {
                   const SetUniforms& set = {});
   /// A shading pass over `target`: the scene shaded at the mapping's
   /// positions. Returns the fragments that reached the shader (occlusion
-  /// query; stencil-rejected and discarded fragments do not count).
+  /// query; stencil-rejected and discarded fragments do not count). With a
+  /// non-empty `cover` (GL pixels of `target`) the pass is drawn over those
+  /// rectangles only: pixels the mapping would discard are not run at all
+  /// (on llvmpipe a discarded fragment costs as much as a shaded one).
   double shade(Scene& scene, const View& view, const std::string& mapping,
                const gpu::RenderTarget& target, const SetUniforms& set,
-               const gpu::PassState& state = {}, bool early = false);
+               const gpu::PassState& state = {}, bool early = false,
+               const std::vector<PixelRect>& cover = {});
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.
   const gpu::Program& built(const std::string& key, const std::string& vertex,
                             const std::string& fragment);
   const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
-                                         const std::string& main, int samples = 1);
+                                         const std::string& main, int samples = 1,
+                                         const std::string& vertex = "fullscreen.vert");
   void draw_triangle(const gpu::Program& program) const;
   /// What a program's passes are timed as (gpu::ProfileScope).
   [[nodiscard]] const char* pass_name(const gpu::Program& program) const;

@@ -235,15 +235,25 @@ class LogPolar final : public Technique {
     // axis is wider than the screen, and leaving those texels out showed black.
     const double angle_cell = 2.0 * std::numbers::pi * far / bh;
     const double margin = std::max(0.02 * std::hypot(W, H), angle_cell);
-    const double shaded = kit_.shade(scene, native, "logpolar/map_logpolar.glsl", buffer_,
-                                     [&](const gpu::Program& p, gpu::Samplers&) {
-                                       set_mapping(p);
-                                       p.set("u_lp_jitter", float(jx), float(jy));
-                                       p.set("u_lp_keep", float(-margin), float(-margin),
-                                             float(W + margin), float(H + margin));
-                                       p.set("u_lp_screen", float(W), float(H));
-                                       p.set("u_lp_skip", float(kSkipFraction * r_native));
-                                     });
+    // The pass is drawn only over the texels that can land outside the
+    // skipped disc and inside the kept rectangle (log_polar_cover): the
+    // others would be discarded, but on llvmpipe a discarded fragment costs
+    // the whole shader (at the default plan they are 70 % of the buffer).
+    const double skip = kSkipFraction * r_native;
+    const std::vector<PixelRect> cover =
+        log_polar_cover(g, L, alpha_, bw, bh, skip, {-margin, -margin, W + margin, H + margin});
+    const double shaded = cover.empty() ? 0.0
+                                        : kit_.shade(
+                                              scene, native, "logpolar/map_logpolar.glsl", buffer_,
+                                              [&](const gpu::Program& p, gpu::Samplers&) {
+                                                set_mapping(p);
+                                                p.set("u_lp_jitter", float(jx), float(jy));
+                                                p.set("u_lp_keep", float(-margin), float(-margin),
+                                                      float(W + margin), float(H + margin));
+                                                p.set("u_lp_screen", float(W), float(H));
+                                                p.set("u_lp_skip", float(skip));
+                                              },
+                                              {}, false, cover);
     stats.parts.push_back({"log-polar buffer", shaded});
 
     // 2. The native disc and its blend band, clipped to the screen, shaded

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "foveate/core/error.hpp"
@@ -86,6 +87,68 @@ TEST(KernelLogPolar, MatchesTheMapping) {
   EXPECT_GT(k.to_buffer({50, 0}, {0, 0}).x, k1.to_buffer({50, 0}, {0, 0}).x);
   k.sigma = 0.5;
   EXPECT_THROW(k.validate(), Error);
+}
+
+// Every texel whose jittered centre maps outside the disc and inside the kept
+// rectangle lies in the cover, and the cover leaves out most of what a
+// full-buffer pass would run at a 1080p plan (the disc and the corners).
+TEST(KernelLogPolar, CoverHoldsEveryTexelThatIsShaded) {
+  struct Case {
+    int W, H, w, h;
+    double alpha, inner;
+    Vec2d gaze;
+  };
+  const Case cases[] = {{1920, 1080, 1752, 985, 1.25, 255, {960, 540}},
+                        {1920, 1080, 960, 540, 2.0, 40, {20, 1000}},
+                        {640, 360, 355, 200, 1.0, 0, {640, 0}},
+                        {320, 180, 300, 170, 4.0, 60, {100, 90}},
+                        {16, 2, 9, 1, 1.0, 0, {8, 1}}};
+  for (const Case& c : cases) {
+    const double far = std::max(
+        {std::hypot(c.gaze.x, c.gaze.y), std::hypot(c.W - c.gaze.x, c.gaze.y),
+         std::hypot(c.gaze.x, c.H - c.gaze.y), std::hypot(c.W - c.gaze.x, c.H - c.gaze.y)});
+    const double L = std::log(far), m = 0.02 * std::hypot(c.W, c.H);
+    const std::array<double, 4> keep{-m, -m, c.W + m, c.H + m};
+    const auto cover = log_polar_cover(c.gaze, L, c.alpha, c.w, c.h, c.inner, keep);
+    std::vector<char> in(static_cast<size_t>(c.w) * c.h, 0);
+    double covered = 0;
+    for (const auto& r : cover) {
+      ASSERT_LE(0, r[0]);
+      ASSERT_LT(r[0], r[2]);
+      ASSERT_LE(r[2], c.w);
+      ASSERT_LE(0, r[1]);
+      ASSERT_LE(r[3], c.h);
+      for (int y = r[1]; y < r[3]; ++y)
+        for (int x = r[0]; x < r[2]; ++x) in[static_cast<size_t>(y) * c.w + x] = 1;
+      covered += double(r[2] - r[0]) * (r[3] - r[1]);
+    }
+    double needed = 0;
+    for (int y = 0; y < c.h; ++y) {
+      for (int x = 0; x < c.w; ++x) {
+        bool shaded = false;
+        for (double jx : {-0.5, -0.2, 0.0, 0.3, 0.5}) {
+          for (double jy : {-0.5, 0.0, 0.5}) {
+            const double u = x + 0.5 + jx, v = y + 0.5 + jy;
+            const double r = std::exp(L * std::pow(std::max(u / c.w, 0.0), c.alpha));
+            const double a = v * 2.0 * std::numbers::pi / c.h;
+            const Vec2d p{c.gaze.x + r * std::cos(a), c.gaze.y + r * std::sin(a)};
+            shaded = shaded || (r >= c.inner && p.x >= keep[0] && p.y >= keep[1] &&
+                                p.x <= keep[2] && p.y <= keep[3]);
+          }
+        }
+        if (!shaded) continue;
+        ++needed;
+        ASSERT_TRUE(in[static_cast<size_t>(y) * c.w + x])
+            << c.W << "x" << c.H << " texel " << x << "," << y;
+      }
+    }
+    EXPECT_GT(needed, 0);
+    EXPECT_LE(covered, 1.25 * needed + 8.0 * c.h) << c.W << "x" << c.H;
+    if (c.W == 1920 && c.gaze.x == 960) {
+      EXPECT_LT(covered, 0.3 * c.w * c.h);
+    }
+  }
+  EXPECT_THROW(log_polar_cover({0, 0}, 0.0, 1.0, 10, 10, 0, {0, 0, 1, 1}), Error);
 }
 
 TEST(Checkerboard, PatternAndRegions) {

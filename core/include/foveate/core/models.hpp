@@ -1,6 +1,7 @@
 #pragma once
 // The other papers' models as plain functions.
 #include <array>
+#include <vector>
 
 #include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
@@ -41,6 +42,19 @@ struct KernelLogPolar {
   [[nodiscard]] Vec2d to_screen(Vec2d buffer, Vec2d gaze) const;
   void validate() const;
 };
+
+/// The texels of a w x h log-polar buffer, mapped to the screen around `gaze`
+/// with extent L and exponent alpha (buffer -> screen as in KernelLogPolar,
+/// texel centres displaced by up to half a texel of jitter), that can land at
+/// least `inner` pixels from the gaze and inside `keep` = (x0, y0, x1, y1):
+/// per band of `band` rows, the columns [x0, x1) outside which none does, as
+/// (x0, y0, x1, y1) texel rectangles. A shading pass drawn over these alone
+/// shades what a full-buffer pass would, without running the shader for the
+/// texels it would discard (the disc at the gaze, the corners beyond the
+/// screen). Empty bands are left out.
+std::vector<std::array<int, 4>> log_polar_cover(Vec2d gaze, double L, double alpha, int w, int h,
+                                                double inner, const std::array<double, 4>& keep,
+                                                int band = 4);
 
 // --- Silvera: "OpenGL Foveated Rendering" (2022), mask-based checkerboard.
 // Pixels are grouped in n x n quads, quads in 2 x 2 tiles. Region k (0..3)
