@@ -268,11 +268,15 @@ class LogPolar final : public Technique {
     if (has_fovea) {
       const int fw = static_cast<int>(x1 - x0), fh = static_cast<int>(y1 - y0);
       fovea_.ensure(fw, fh);
-      disc =
-          kit_.shade(scene, native, kMapRect, fovea_, [&](const gpu::Program& p, gpu::Samplers&) {
+      // Only the disc is read (the square's corners would be 21 % more).
+      const std::vector<PixelRect> disc_cover = disc_rects(g.x - x0, g.y - y0, reach + 1.0, fw, fh);
+      disc = kit_.shade(
+          scene, native, kMapRect, fovea_,
+          [&](const gpu::Program& p, gpu::Samplers&) {
             p.set("u_map_rect", float(x0), float(y0), float(fw), float(fh));
             p.set("u_map_target", float(fw), float(fh));
-          });
+          },
+          {}, false, disc_cover);
     }
     stats.parts.push_back({"native disc", disc});
     stats.shaded_pixels = shaded + disc;
