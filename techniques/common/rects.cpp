@@ -62,4 +62,43 @@ std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width
   return out;
 }
 
+std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double outer, int width,
+                                     int height, int band) {
+  std::vector<PixelRect> out;
+  if (outer <= 0.0 || width <= 0 || height <= 0) return out;
+  const bool bounded = std::isfinite(outer);
+  const int first =
+      bounded ? std::max(0, static_cast<int>(std::floor(cy - outer)) / band * band) : 0;
+  const int last = bounded ? std::min(height, static_cast<int>(std::ceil(cy + outer)) + 1) : height;
+  for (int y0 = first; y0 < last; y0 += band) {
+    const int y1 = std::min(height, y0 + band);
+    // Nearest and farthest row centres of the band from the centre's row.
+    const double near_dy = std::max(0.0, std::max(y0 + 0.5 - cy, cy - (y1 - 0.5)));
+    const double far_dy = std::max(std::abs(y0 + 0.5 - cy), std::abs(y1 - 0.5 - cy));
+    if (near_dy > outer) continue;
+    int x0 = 0, x1 = width;
+    if (bounded) {
+      const double half = std::sqrt(outer * outer - near_dy * near_dy);
+      x0 = std::max(0, static_cast<int>(std::floor(cx - half - 0.5)));
+      x1 = std::min(width, static_cast<int>(std::ceil(cx + half + 0.5)));
+    }
+    if (x1 <= x0) continue;
+    // Columns whose centres lie inside `inner` on every row of the band:
+    // (x + 0.5 - cx)^2 + far_dy^2 < inner^2, less a pixel for safety.
+    int h0 = 0, h1 = 0;
+    if (far_dy < inner) {
+      const double half = std::sqrt(inner * inner - far_dy * far_dy) - 1.0;
+      h0 = std::max(x0, static_cast<int>(std::ceil(cx - half - 0.5)));
+      h1 = std::min(x1, static_cast<int>(std::floor(cx + half - 0.5)) + 1);
+    }
+    if (h1 <= h0) {
+      out.push_back({x0, y0, x1, y1});
+      continue;
+    }
+    if (h0 > x0) out.push_back({x0, y0, h0, y1});
+    if (x1 > h1) out.push_back({h1, y0, x1, y1});
+  }
+  return out;
+}
+
 }  // namespace foveate::tech

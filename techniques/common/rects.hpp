@@ -42,4 +42,12 @@ std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects);
 std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
                                   int band = 4);
 
+/// Rectangles of `band` rows each that together cover every pixel of a
+/// width x height target whose centre lies within `outer` of `centre` (GL
+/// pixels; infinite = the whole target) and not within `inner`: an annulus
+/// less only the pixels that lie inside `inner` for every row of their band
+/// (two rectangles per band where the hole cuts it).
+std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double outer, int width,
+                                     int height, int band = 4);
+
 }  // namespace foveate::tech

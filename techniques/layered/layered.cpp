@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -141,8 +142,15 @@ class Layered final : public Technique {
       // codes on raymarch against 1.49 at full rate): there every layer
       // updates every frame.
       const bool stale_lines_up = can_reproject || (key && key == st.image_key);
+      // A layer rendered with a hole (below) may be shown stale only while
+      // the inner layer still covers the hole.
+      const LayerState* inner = i > 0 ? &state_[i - 1] : nullptr;
+      const bool hole_uncovered =
+          st.hole > 0.0 && inner &&
+          (inner->centre.x != st.hole_centre.x || inner->centre.y != st.hole_centre.y ||
+           inner->radius < st.hole_from);
       const bool update = i == 0 || !half_rate_ || frames_ == 0 || !st.valid || !stale_lines_up ||
-                          (frame.frame % 2) == static_cast<int>((i + 1) % 2);
+                          hole_uncovered || (frame.frame % 2) == static_cast<int>((i + 1) % 2);
       st.updated = update;
       if (!update) {
         stats.parts.push_back({"layer " + std::to_string(i + 1), 0.0});
@@ -190,12 +198,38 @@ class Layered final : public Technique {
       st.spare.ensure(v.target_width, v.target_height);
       st.spare.clear(0, 0, 0, 1);
       const double margin = 1.5 * s;
-      const double shaded =
-          kit_.shade(scene, jv, kMapRect, st.spare, [&](const gpu::Program& p, gpu::Samplers&) {
-            set_rect_mapping(p, jv);
-            p.set("u_keep_rect", float(-margin), float(-margin), float(W + margin),
-                  float(H + margin));
-          });
+      // Only the part of the layer that the composite can show is shaded: an
+      // inner layer's disc out to the end of its blend band (not its
+      // square's corners), and, where this layer is rendered anew with the
+      // layer inside it every frame (no half rate, or an image that moves
+      // with no camera to warp by), not the disc inside that layer's radius,
+      // where it has no weight. Margins: the bilinear read and the jitter
+      // (2 layer pixels), and 3 layer pixels more at the hole for the
+      // temporal pass's neighbourhood.
+      const bool every_frame = !half_rate_ || !stale_lines_up;
+      st.hole = 0.0;
+      if (inner && inner->updated && every_frame) {
+        st.hole = std::max(0.0, inner->radius - 5.0 * s);
+        st.hole_centre = inner->centre;
+        st.hole_from = inner->radius;
+      }
+      const double outer = i + 1 < n
+                               ? st.radius * (1.0 + std::max(0.0, transition_)) + 2.0 * s + 1.0
+                               : std::numeric_limits<double>::infinity();
+      // In the layer's pixels (GL, origin at its lower-left corner).
+      const std::vector<PixelRect> cover =
+          annulus_rects((g.x - v.x0) / s, (g.y - v.y0) / s, st.hole / s, outer / s, v.target_width,
+                        v.target_height);
+      const double shaded = cover.empty()
+                                ? 0.0
+                                : kit_.shade(
+                                      scene, jv, kMapRect, st.spare,
+                                      [&](const gpu::Program& p, gpu::Samplers&) {
+                                        set_rect_mapping(p, jv);
+                                        p.set("u_keep_rect", float(-margin), float(-margin),
+                                              float(W + margin), float(H + margin));
+                                      },
+                                      {}, false, cover);
       stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
       stats.shaded_pixels += shaded;
       // A moving image with no history to reproject and none wanted at the
@@ -295,6 +329,10 @@ class Layered final : public Technique {
     bool has_positions = false;
     gpu::RenderTarget warped;  // the display moved to this frame's camera (when stale)
     bool updated = false;      // this frame
+    // The disc (screen pixels) left unshaded in the newest render, inside the
+    // inner layer's radius `hole_from` around `hole_centre`; 0 = none.
+    double hole = 0, hole_from = 0;
+    Vec2d hole_centre{};
   };
 
   // Resolves this update's samples (st.spare, taken at jittered view `jv`)

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,43 @@ TEST(Rects, DiscCoverHoldsEveryPixelOfTheDiscAndLittleElse) {
     }
   }
   EXPECT_TRUE(disc_rects(50, 50, 0.0, W, H).empty());
+}
+
+TEST(Rects, AnnulusCoverHoldsEveryPixelOfTheRingAndLeavesTheHole) {
+  const int W = 200, H = 120;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const auto& [cx, cy, r_in, r_out] : {std::array<double, 4>{100.3, 60.7, 20.0, 50.5},
+                                            std::array<double, 4>{5.0, 110.0, 12.0, 30.0},
+                                            std::array<double, 4>{100.0, 60.0, 40.0, inf},
+                                            std::array<double, 4>{90.0, 50.0, 0.0, 30.0}}) {
+    const auto rects = annulus_rects(cx, cy, r_in, r_out, W, H);
+    double ring = 0, hole_covered = 0, hole = 0;
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x < W; ++x) {
+        const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+        if (d < r_in - 3.0) {  // well inside the hole: should be left out
+          ++hole;
+          hole_covered += covered(rects, x, y) ? 1 : 0;
+        }
+        if (d > r_out || d < r_in) continue;
+        ++ring;
+        ASSERT_TRUE(covered(rects, x, y)) << x << "," << y << " of the ring at " << cx << "," << cy;
+      }
+    }
+    for (const PixelRect& q : rects) {
+      EXPECT_GE(q[0], 0);
+      EXPECT_GE(q[1], 0);
+      EXPECT_LE(q[2], W);
+      EXPECT_LE(q[3], H);
+      EXPECT_LT(q[0], q[2]);
+    }
+    EXPECT_GT(ring, 0);
+    // Bands of 4 rows cut the hole by their farthest row: most of it is left out.
+    if (hole > 0) {
+      EXPECT_LT(hole_covered, 0.35 * hole) << r_in;
+    }
+  }
+  EXPECT_TRUE(annulus_rects(50, 50, 0.0, 0.0, W, H).empty());
 }
 
 TEST(Rects, MergedRunsCoverTheSamePixels) {
