@@ -38,12 +38,11 @@ const gpu::Program& Kit::built(const std::string& key, const std::string& vertex
 }
 
 const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early,
-                                 int samples, bool rects) {
-  const std::string main = samples > 1 ? "common/shade_main_msaa.frag"
-                           : early     ? "common/shade_main_early.frag"
-                                       : "common/shade_main.frag";
-  return scene_program_with(scene, mapping, main, samples,
-                            rects ? "common/rects.vert" : "fullscreen.vert");
+                                 int samples) {
+  if (samples > 1)
+    return scene_program_with(scene, mapping, "common/shade_main_msaa.frag", samples);
+  return scene_program_with(scene, mapping,
+                            early ? "common/shade_main_early.frag" : "common/shade_main.frag");
 }
 
 const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& main, int samples) {
@@ -51,10 +50,9 @@ const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& ma
 }
 
 const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::string& before,
-                                            const std::string& main, int samples,
-                                            const std::string& vertex) {
+                                            const std::string& main, int samples) {
   const std::string key =
-      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples) + "|" + vertex;
+      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples);
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   std::vector<gpu::StageSource::Piece> pieces = scene.shade_source();
@@ -68,7 +66,7 @@ const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::strin
   tables.push_back(embedded::techniques_shaders());
   tables.push_back(scene_shader_files());
   const gpu::ShaderCompiler c(tables);
-  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{vertex, {}}}},
+  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
                             gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
                            "scene '" + scene.info().name + "' with " + main);
   const gpu::Program& stored = programs_.emplace(key, std::move(p)).first->second;
@@ -163,16 +161,29 @@ void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
                   const gpu::RenderTarget& target, const SetUniforms& set,
                   const gpu::PassState& state, bool early, const std::vector<PixelRect>& cover) {
-  const gpu::Program& p = shading(scene, mapping, early, view.samples, !cover.empty());
+  const gpu::Program& p = shading(scene, mapping, early, view.samples);
   const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
   if (cover.empty()) {
     scene_pass(scene, view, p, target, state, set);
   } else {
+    // One scissored full-screen triangle per rectangle rather than a quad of
+    // two triangles each: llvmpipe shades a 4x4 block once per triangle that
+    // touches it, and the diagonal of a long thin quad touches nearly every
+    // block of it (a shading pass over bands of rows cost up to twice its
+    // pixels). The scissor clips exactly, on whole blocks where the
+    // rectangles are aligned to them.
     gpu::Samplers samplers;
     scene.bind(p, view, samplers);
     if (set) set(p, samplers);
-    rect_pass_.draw(p, cover, target, state);
+    target.bind();
+    gpu::PassState clipped = state;
+    for (const PixelRect& r : stack_runs(cover)) {
+      clipped.scissor = {r[0], r[1], r[2] - r[0], r[3] - r[1]};
+      gpu::apply(clipped);
+      draw_triangle(p);
+    }
+    gpu::apply(state);
   }
   glEndQuery(GL_SAMPLES_PASSED);
   GLuint64 samples = 0;

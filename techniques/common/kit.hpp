@@ -29,10 +29,8 @@ class Kit {
   /// GLSL file defining vec2 foveate_map(vec2 frag_coord)), cached per scene.
   /// With `early`, depth and stencil tests run before shading (stencil masks
   /// really save the work) and there is no off-screen discard.
-  /// With `rects`, the program draws over rectangles (common/rects.vert)
-  /// instead of the full-screen triangle.
   const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false,
-                              int samples = 1, bool rects = false);
+                              int samples = 1);
   /// A program of the scene's shading GLSL followed by `main` (an embedded
   /// file with main() that may call the scene's functions), cached per scene.
   const gpu::Program& scene_program(const Scene& scene, const std::string& main, int samples = 1);
@@ -89,8 +87,7 @@ class Kit {
   const gpu::Program& built(const std::string& key, const std::string& vertex,
                             const std::string& fragment);
   const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
-                                         const std::string& main, int samples = 1,
-                                         const std::string& vertex = "fullscreen.vert");
+                                         const std::string& main, int samples = 1);
   void draw_triangle(const gpu::Program& program) const;
   /// What a program's passes are timed as (gpu::ProfileScope).
   [[nodiscard]] const char* pass_name(const gpu::Program& program) const;

@@ -43,6 +43,31 @@ std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects) {
   return out;
 }
 
+std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const PixelRect& bounds) {
+  std::vector<PixelRect> out;
+  for (const PixelRect& r : rects) {
+    const PixelRect c{std::max(r[0], bounds[0]), std::max(r[1], bounds[1]),
+                      std::min(r[2], bounds[2]), std::min(r[3], bounds[3])};
+    if (c[2] > c[0] && c[3] > c[1]) out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<PixelRect> stack_runs(const std::vector<PixelRect>& rects) {
+  std::vector<PixelRect> out;
+  for (const PixelRect& r : rects) {
+    if (!out.empty()) {
+      PixelRect& last = out.back();
+      if (last[0] == r[0] && last[2] == r[2] && last[3] == r[1]) {
+        last[3] = r[3];
+        continue;
+      }
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
 std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
                                   int band) {
   std::vector<PixelRect> out;

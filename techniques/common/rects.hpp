@@ -36,6 +36,14 @@ class RectPass {
 /// their rows (fewer, longer quads; the pixels covered are the same).
 std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects);
 
+/// The parts of `rects` inside `bounds` (empty ones left out).
+std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const PixelRect& bounds);
+
+/// Joins each rectangle with the one that follows it when that one lies
+/// directly above it over the same columns (row bands of a shape whose
+/// sides run straight for a while): the pixels covered are the same.
+std::vector<PixelRect> stack_runs(const std::vector<PixelRect>& rects);
+
 /// Rectangles of `band` rows each that together cover every pixel of a
 /// width x height target whose centre lies within `radius` of `centre` (GL
 /// pixels): a disc's area plus a pixel's margin, for masks drawn over a disc.
