@@ -197,7 +197,6 @@ class Layered final : public Technique {
       scene.prepass(jv);
       st.spare.ensure(v.target_width, v.target_height);
       st.spare.clear(0, 0, 0, 1);
-      const double margin = 1.5 * s;
       // Only the part of the layer that the composite can show is shaded: an
       // inner layer's disc out to the end of its blend band (not its
       // square's corners), and, where this layer is rendered anew with the
@@ -205,7 +204,8 @@ class Layered final : public Technique {
       // with no camera to warp by), not the disc inside that layer's radius,
       // where it has no weight. Margins: the bilinear read and the jitter
       // (2 layer pixels), and 3 layer pixels more at the hole for the
-      // temporal pass's neighbourhood.
+      // temporal pass's neighbourhood. Nor what lies beyond the screen by
+      // more than 1.5 layer pixels (a layer's square reaching past an edge).
       const bool every_frame = !half_rate_ || !stale_lines_up;
       st.hole = 0.0;
       if (inner && inner->updated && every_frame) {
@@ -217,19 +217,21 @@ class Layered final : public Technique {
                                ? st.radius * (1.0 + std::max(0.0, transition_)) + 2.0 * s + 1.0
                                : std::numeric_limits<double>::infinity();
       // In the layer's pixels (GL, origin at its lower-left corner).
-      const std::vector<PixelRect> cover =
-          annulus_rects((g.x - v.x0) / s, (g.y - v.y0) / s, st.hole / s, outer / s, v.target_width,
-                        v.target_height);
-      const double shaded = cover.empty()
-                                ? 0.0
-                                : kit_.shade(
-                                      scene, jv, kMapRect, st.spare,
-                                      [&](const gpu::Program& p, gpu::Samplers&) {
-                                        set_rect_mapping(p, jv);
-                                        p.set("u_keep_rect", float(-margin), float(-margin),
-                                              float(W + margin), float(H + margin));
-                                      },
-                                      {}, false, cover);
+      std::vector<PixelRect> cover = annulus_rects((g.x - v.x0) / s, (g.y - v.y0) / s, st.hole / s,
+                                                   outer / s, v.target_width, v.target_height);
+      const double margin = 1.5 * s;
+      const PixelRect keep{static_cast<int>(std::floor((-margin - v.x0) / s)),
+                           static_cast<int>(std::floor((-margin - v.y0) / s)),
+                           static_cast<int>(std::ceil((W + margin - v.x0) / s)) + 1,
+                           static_cast<int>(std::ceil((H + margin - v.y0) / s)) + 1};
+      cover = clip_rects(cover, keep);
+      const double shaded =
+          cover.empty()
+              ? 0.0
+              : kit_.shade(
+                    scene, jv, kMapRect, st.spare,
+                    [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, jv); }, {},
+                    false, cover);
       stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
       stats.shaded_pixels += shaded;
       // A moving image with no history to reproject and none wanted at the

@@ -236,9 +236,11 @@ class LogPolar final : public Technique {
     const double angle_cell = 2.0 * std::numbers::pi * far / bh;
     const double margin = std::max(0.02 * std::hypot(W, H), angle_cell);
     // The pass is drawn only over the texels that can land outside the
-    // skipped disc and inside the kept rectangle (log_polar_cover): the
-    // others would be discarded, but on llvmpipe a discarded fragment costs
-    // the whole shader (at the default plan they are 70 % of the buffer).
+    // skipped disc and inside the kept rectangle (log_polar_cover): at the
+    // default plan the others are 70 % of the buffer. The mapping has no
+    // discard (on llvmpipe a shader that can discard is slower everywhere,
+    // and a discarded fragment costs the whole shader), so the few texels
+    // the cover's bands take in besides are shaded, at clamped positions.
     const double skip = kSkipFraction * r_native;
     const std::vector<PixelRect> cover =
         log_polar_cover(g, L, alpha_, bw, bh, skip, {-margin, -margin, W + margin, H + margin});
@@ -248,10 +250,7 @@ class LogPolar final : public Technique {
                                               [&](const gpu::Program& p, gpu::Samplers&) {
                                                 set_mapping(p);
                                                 p.set("u_lp_jitter", float(jx), float(jy));
-                                                p.set("u_lp_keep", float(-margin), float(-margin),
-                                                      float(W + margin), float(H + margin));
                                                 p.set("u_lp_screen", float(W), float(H));
-                                                p.set("u_lp_skip", float(skip));
                                               },
                                               {}, false, cover);
     stats.parts.push_back({"log-polar buffer", shaded});
