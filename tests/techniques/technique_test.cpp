@@ -54,6 +54,16 @@ Diff compare_disc(const Image& a, const Image& b, Vec2d centre, double radius) {
 }
 Diff compare_all(const Image& a, const Image& b) { return compare_disc(a, b, {0, 0}, 1e9); }
 
+// Built-in scene `name` seen by a camera that never moves (a one-keyframe path).
+auto still_scene(const std::string& name) {
+  const auto path = std::filesystem::temp_directory_path() / ("foveate-still-" + name + ".json");
+  std::ofstream(path) << R"({"loop": false, "keyframes": [{"t": 0, "position": [0, 1.5, 6],
+                           "target": [0, 1, 0], "fov_deg": 55}]})";
+  SceneOptions so;
+  so.camera_path = path.string();
+  return load_scene(name, so);
+}
+
 // Every registered technique but the reference, optionally only those that
 // can render `scene`.
 std::vector<std::string> foveated(const SceneInfo* scene = nullptr) {
@@ -188,14 +198,7 @@ TEST_F(Techniques, LayeredNeverShowsAnUnshadedHoleWhenTheGazeMoves) {
   // image, no reprojection) after a gaze move, the inner layer lies
   // elsewhere: a layer whose hole it no longer covers is rendered anew,
   // never shown with the hole (which would be black).
-  const auto path = std::filesystem::temp_directory_path() / "foveate-still-camera-hole.json";
-  {
-    std::ofstream(path) << R"({"loop": false, "keyframes": [{"t": 0, "position": [0, 1.5, 6],
-                             "target": [0, 1, 0], "fov_deg": 55}]})";
-  }
-  SceneOptions so;
-  so.camera_path = path.string();
-  auto scene = load_scene("guenter", so);
+  auto scene = still_scene("guenter");
   // Two layers: the outer one (half rate, even frames) is rendered with a
   // hole on frame 0 and would be shown stale with it on frame 1.
   auto t = make_technique("layered", config({{"layers", 2}, {"reproject", 0}}));
@@ -249,14 +252,7 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
   // layer has seen all its jitter positions, and what it converges to is as
   // close to the supersampled reference as native is (after the eye's acuity
   // filter), within 1 code.
-  const auto path = std::filesystem::temp_directory_path() / "foveate-still-camera.json";
-  {
-    std::ofstream(path) << R"({"loop": false, "keyframes": [{"t": 0, "position": [0, 1.5, 6],
-                             "target": [0, 1, 0], "fov_deg": 55}]})";
-  }
-  SceneOptions so;
-  so.camera_path = path.string();
-  auto scene = load_scene("detail", so);
+  auto scene = still_scene("detail");
   auto t = make_technique("layered", config());
   const Vec2d gaze{kW / 2.0, kH / 2.0};
   std::vector<Image> frames;
@@ -278,7 +274,7 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
   EXPECT_GT(change(1), 1.0);  // it does start out moving (jitter)
   EXPECT_LT(change(17), 0.5);
   EXPECT_EQ(change(32), 0.0);
-  auto reference_scene = load_scene("detail", so);
+  auto reference_scene = still_scene("detail");
   SupersampledReference ref(config().display, 4);
   ref.render(*reference_scene, renderer(*scene).frame_input(32));
   const Image truth = ref.read();
@@ -292,7 +288,6 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
   const double layered_error = acuity_rmse(frames[32]),
                native_error = acuity_rmse(native(*scene, 32));
   EXPECT_LE(layered_error, native_error + 1.0) << layered_error << " vs native " << native_error;
-  std::filesystem::remove(path);
 }
 
 TEST_F(Techniques, LayeredShowsAMovingImageWithoutDepthAsRendered) {
