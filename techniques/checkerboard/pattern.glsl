@@ -5,11 +5,8 @@
 // radius u_thresholds.x and no tile is split.
 uniform int u_block;
 uniform vec2 u_gaze_top_left;  // pixels, origin top-left
-uniform vec3 u_thresholds;     // region boundaries in pixels
+uniform vec3 u_thresholds;  // region boundaries in pixels
 uniform float u_height;
-// Regions below this are taken as it: 1 in passes drawn only over the tiles
-// the CPU found beyond region 0, so that its word decides, not float rounding.
-uniform int u_first_region;
 
 vec2 pattern_top_left(vec2 frag_gl) { return vec2(frag_gl.x, u_height - frag_gl.y); }
 
@@ -18,8 +15,7 @@ int pattern_region(vec2 frag_gl) {
   float s = 2.0 * float(u_block);
   vec2 tile = floor(p / s) * s;
   float d = distance(u_gaze_top_left, clamp(u_gaze_top_left, tile, tile + s));
-  int r = d > u_thresholds.z ? 3 : d > u_thresholds.y ? 2 : d > u_thresholds.x ? 1 : 0;
-  return max(r, u_first_region);
+  return d > u_thresholds.z ? 3 : d > u_thresholds.y ? 2 : d > u_thresholds.x ? 1 : 0;
 }
 
 bool pattern_kept(vec2 frag_gl) {
