@@ -178,7 +178,10 @@ double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
     if (set) set(p, samplers);
     target.bind();
     gpu::PassState clipped = state;
-    for (const PixelRect& r : stack_runs(cover)) {
+    // Each draw costs about 0.14 ms on llvmpipe (a few hundred pixels of an
+    // expensive scene, ten thousand of a cheap one): bands are merged where
+    // that shades at most 8 % more.
+    for (const PixelRect& r : coarsen_runs(cover, 0.08)) {
       clipped.scissor = {r[0], r[1], r[2] - r[0], r[3] - r[1]};
       gpu::apply(clipped);
       draw_triangle(p);

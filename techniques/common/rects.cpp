@@ -53,18 +53,47 @@ std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const Pix
   return out;
 }
 
-std::vector<PixelRect> stack_runs(const std::vector<PixelRect>& rects) {
+std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double waste) {
+  struct Box {
+    PixelRect r;
+    double covered;
+  };
+  const auto area = [](const PixelRect& r) { return double(r[2] - r[0]) * (r[3] - r[1]); };
+  std::vector<Box> open;
   std::vector<PixelRect> out;
-  for (const PixelRect& r : rects) {
-    if (!out.empty()) {
-      PixelRect& last = out.back();
-      if (last[0] == r[0] && last[2] == r[2] && last[3] == r[1]) {
-        last[3] = r[3];
-        continue;
+  size_t i = 0;
+  while (i < rects.size()) {
+    // One band: the rectangles sharing this one's rows.
+    size_t j = i;
+    while (j < rects.size() && rects[j][1] == rects[i][1] && rects[j][3] == rects[i][3]) ++j;
+    std::vector<Box> next;
+    std::vector<bool> taken(open.size(), false);
+    for (size_t k = i; k < j; ++k) {
+      const PixelRect& r = rects[k];
+      bool merged = false;
+      for (size_t o = 0; o < open.size() && !merged; ++o) {
+        const PixelRect& b = open[o].r;
+        if (taken[o] || b[3] != r[1] || r[0] >= b[2] || r[2] <= b[0]) continue;
+        const PixelRect u{std::min(b[0], r[0]), b[1], std::max(b[2], r[2]), r[3]};
+        bool clear = true;
+        for (size_t q = i; q < j && clear; ++q)
+          clear = q == k || rects[q][2] <= u[0] || rects[q][0] >= u[2];
+        for (size_t q = 0; q < open.size() && clear; ++q)
+          clear = q == o || open[q].r[2] <= u[0] || open[q].r[0] >= u[2];
+        const double covered = open[o].covered + area(r);
+        if (!clear || area(u) - covered > waste * area(u)) continue;
+        next.push_back({u, covered});
+        taken[o] = true;
+        merged = true;
       }
+      if (!merged) next.push_back({r, area(r)});
     }
-    out.push_back(r);
+    for (size_t o = 0; o < open.size(); ++o)
+      if (!taken[o]) out.push_back(open[o].r);
+    open = std::move(next);
+    i = j;
   }
+  for (const Box& b : open) out.push_back(b.r);
   return out;
 }
 

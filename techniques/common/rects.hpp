@@ -39,10 +39,13 @@ std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects);
 /// The parts of `rects` inside `bounds` (empty ones left out).
 std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const PixelRect& bounds);
 
-/// Joins each rectangle with the one that follows it when that one lies
-/// directly above it over the same columns (row bands of a shape whose
-/// sides run straight for a while): the pixels covered are the same.
-std::vector<PixelRect> stack_runs(const std::vector<PixelRect>& rects);
+/// Fewer, larger rectangles covering every pixel of `rects` (bands of rows,
+/// bottom to top, as disc_rects and annulus_rects make them): a rectangle
+/// takes in the one directly above it where their bounding box is no more
+/// than `waste` larger than what they cover, and the box meets no other
+/// rectangle of that band and no other box's columns. Passes drawn once per
+/// rectangle pay a fixed cost per draw (about 0.14 ms on llvmpipe).
+std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double waste);
 
 /// Rectangles of `band` rows each that together cover every pixel of a
 /// width x height target whose centre lies within `radius` of `centre` (GL

@@ -97,6 +97,33 @@ TEST(Rects, AnnulusCoverHoldsEveryPixelOfTheRingAndLeavesTheHole) {
   EXPECT_TRUE(annulus_rects(50, 50, 0.0, 0.0, W, H).empty());
 }
 
+TEST(Rects, CoarsenedRunsCoverEveryPixelOnceWithLittleWaste) {
+  // A disc and a ring (two rectangles per band across the hole): fewer
+  // rectangles, every pixel of the input covered, none twice, and no more
+  // than the allowed waste.
+  const int W = 400, H = 300;
+  for (const auto& rects :
+       {disc_rects(200.5, 150.2, 120.0, W, H), annulus_rects(180.0, 140.0, 60.0, 130.0, W, H),
+        annulus_rects(200.0, 150.0, 80.0, std::numeric_limits<double>::infinity(), W, H)}) {
+    const auto coarse = coarsen_runs(rects, 0.08);
+    EXPECT_LT(coarse.size() * 3, rects.size());
+    double in = 0, out = 0;
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x < W; ++x) {
+        int n = 0;
+        for (const PixelRect& q : coarse) n += x >= q[0] && x < q[2] && y >= q[1] && y < q[3];
+        ASSERT_LE(n, 1) << x << "," << y;
+        if (covered(rects, x, y)) {
+          ASSERT_EQ(n, 1) << x << "," << y;
+          ++in;
+        }
+        out += n;
+      }
+    }
+    EXPECT_LE(out, in / (1.0 - 0.08));  // each box at most 8 % more than it covers
+  }
+}
+
 TEST(Rects, MergedRunsCoverTheSamePixels) {
   const std::vector<PixelRect> tiles = {{0, 0, 4, 4},   {4, 0, 8, 4}, {8, 0, 12, 4},
                                         {16, 0, 20, 4}, {0, 4, 4, 8}, {3, 4, 9, 8}};
