@@ -75,8 +75,10 @@ class Kit {
   /// positions. Returns the fragments that reached the shader (occlusion
   /// query; stencil-rejected and discarded fragments do not count). With a
   /// non-empty `cover` (GL pixels of `target`) the pass is drawn over those
-  /// rectangles only: pixels the mapping would discard are not run at all
-  /// (on llvmpipe a discarded fragment costs as much as a shaded one).
+  /// rectangles only (merged into fewer where that shades little more):
+  /// what a technique does not show is never run. The shading variants have
+  /// no discard (on llvmpipe a shader that can discard is slower
+  /// everywhere, and a discarded fragment costs as much as a shaded one).
   double shade(Scene& scene, const View& view, const std::string& mapping,
                const gpu::RenderTarget& target, const SetUniforms& set,
                const gpu::PassState& state = {}, bool early = false,
