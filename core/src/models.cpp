@@ -101,7 +101,8 @@ std::vector<std::array<int, 4>> log_polar_cover(Vec2d gaze, double L, double alp
   };
   // A texel c has u in [c, c + 1] whatever its jitter: it can reach `inner`
   // only if c + 1 >= column(inner).
-  const int first = std::max(0, static_cast<int>(std::floor(column(inner))) - 1);
+  const int first =
+      std::max(0, static_cast<int>(std::floor(std::min(column(inner), double(w)))) - 1);
   // The exit distance along an angle is least at a side's normal and grows
   // towards the corners: over an interval of angles it is largest at the
   // interval's ends or at a corner's direction inside it.
@@ -127,7 +128,7 @@ std::vector<std::array<int, 4>> log_polar_cover(Vec2d gaze, double L, double alp
     if (!inside) reach = std::numeric_limits<double>::infinity();  // no shortcut off the rectangle
     if (reach < inner) continue;
     const double u = std::isfinite(reach) ? column(reach) : double(w);
-    const int last = std::min(w, static_cast<int>(std::floor(u)) + 2);
+    const int last = std::min(w, static_cast<int>(std::floor(std::min(u, double(w)))) + 2);
     if (last > first) out.push_back({first, y0, last, y1});
   }
   return out;

@@ -220,10 +220,10 @@ class Layered final : public Technique {
       std::vector<PixelRect> cover = annulus_rects((g.x - v.x0) / s, (g.y - v.y0) / s, st.hole / s,
                                                    outer / s, v.target_width, v.target_height);
       const double margin = 1.5 * s;
-      const PixelRect keep{static_cast<int>(std::floor((-margin - v.x0) / s)),
-                           static_cast<int>(std::floor((-margin - v.y0) / s)),
-                           static_cast<int>(std::ceil((W + margin - v.x0) / s)) + 1,
-                           static_cast<int>(std::ceil((H + margin - v.y0) / s)) + 1};
+      const auto px = [](double x) { return static_cast<int>(std::clamp(x, -1e8, 1e8)); };
+      const PixelRect keep{
+          px(std::floor((-margin - v.x0) / s)), px(std::floor((-margin - v.y0) / s)),
+          px(std::ceil((W + margin - v.x0) / s)) + 1, px(std::ceil((H + margin - v.y0) / s)) + 1};
       cover = clip_rects(cover, keep);
       const double shaded =
           cover.empty()
