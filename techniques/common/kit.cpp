@@ -160,11 +160,11 @@ void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program
 
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
                   const gpu::RenderTarget& target, const SetUniforms& set,
-                  const gpu::PassState& state, bool early, const std::vector<PixelRect>& cover) {
+                  const gpu::PassState& state, bool early, const std::vector<PixelRect>* cover) {
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
   const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-  if (cover.empty()) {
+  if (!cover) {
     scene_pass(scene, view, p, target, state, set);
   } else {
     // One scissored full-screen triangle per rectangle rather than a quad of
@@ -181,7 +181,7 @@ double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
     // Each draw costs about 0.14 ms on llvmpipe (a few hundred pixels of an
     // expensive scene, ten thousand of a cheap one): bands are merged where
     // that shades at most 8 % more.
-    for (const PixelRect& r : coarsen_runs(cover, 0.08)) {
+    for (const PixelRect& r : coarsen_runs(*cover, 0.08)) {
       clipped.scissor = {r[0], r[1], r[2] - r[0], r[3] - r[1]};
       gpu::apply(clipped);
       draw_triangle(p);

@@ -74,15 +74,15 @@ class Kit {
   /// A shading pass over `target`: the scene shaded at the mapping's
   /// positions. Returns the fragments that reached the shader (occlusion
   /// query; stencil-rejected and discarded fragments do not count). With a
-  /// non-empty `cover` (GL pixels of `target`) the pass is drawn over those
-  /// rectangles only (merged into fewer where that shades little more):
-  /// what a technique does not show is never run. The shading variants have
+  /// `cover` (GL pixels of `target`) the pass is drawn over those rectangles
+  /// only (merged into fewer where that shades little more; none: nothing
+  /// is drawn): what a technique does not show is never run. The shading variants have
   /// no discard (on llvmpipe a shader that can discard is slower
   /// everywhere, and a discarded fragment costs as much as a shaded one).
   double shade(Scene& scene, const View& view, const std::string& mapping,
                const gpu::RenderTarget& target, const SetUniforms& set,
                const gpu::PassState& state = {}, bool early = false,
-               const std::vector<PixelRect>& cover = {});
+               const std::vector<PixelRect>* cover = nullptr);
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.

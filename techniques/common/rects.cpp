@@ -5,12 +5,6 @@
 
 namespace foveate::tech {
 
-namespace {
-// A pixel coordinate as an int, held within a range no target reaches (a
-// gaze far off the screen gives coordinates beyond int's).
-int to_px(double v) { return static_cast<int>(std::clamp(v, -1e8, 1e8)); }
-}  // namespace
-
 void RectPass::draw(const gpu::Program& program, const std::vector<PixelRect>& rects, int width,
                     int height) {
   if (rects.empty()) return;
@@ -105,21 +99,7 @@ std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double 
 
 std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
                                   int band) {
-  std::vector<PixelRect> out;
-  if (radius <= 0.0) return out;
-  const int first = std::max(0, static_cast<int>(std::floor(cy - radius)) / band * band);
-  const int last = std::min(height, static_cast<int>(std::ceil(cy + radius)) + 1);
-  for (int y0 = first; y0 < last; y0 += band) {
-    const int y1 = std::min(height, y0 + band);
-    // The widest chord in the band is at the row centre nearest the disc's.
-    const double dy = std::max(0.0, std::max(y0 + 0.5 - cy, cy - (y1 - 0.5)));
-    if (dy > radius) continue;
-    const double half = std::sqrt(radius * radius - dy * dy);
-    const int x0 = std::max(0, static_cast<int>(std::floor(cx - half - 0.5)));
-    const int x1 = std::min(width, static_cast<int>(std::ceil(cx + half + 0.5)));
-    if (x1 > x0) out.push_back({x0, y0, x1, y1});
-  }
-  return out;
+  return annulus_rects(cx, cy, 0.0, radius, width, height, band);
 }
 
 std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double outer, int width,
@@ -127,8 +107,8 @@ std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double 
   std::vector<PixelRect> out;
   if (outer <= 0.0 || width <= 0 || height <= 0) return out;
   const bool bounded = std::isfinite(outer);
-  const int first = bounded ? std::max(0, to_px(std::floor(cy - outer)) / band * band) : 0;
-  const int last = bounded ? std::min(height, to_px(std::ceil(cy + outer)) + 1) : height;
+  const int first = bounded ? std::max(0, pixel_index(std::floor(cy - outer)) / band * band) : 0;
+  const int last = bounded ? std::min(height, pixel_index(std::ceil(cy + outer)) + 1) : height;
   for (int y0 = first; y0 < last; y0 += band) {
     const int y1 = std::min(height, y0 + band);
     // Nearest and farthest row centres of the band from the centre's row.
@@ -138,8 +118,8 @@ std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double 
     int x0 = 0, x1 = width;
     if (bounded) {
       const double half = std::sqrt(outer * outer - near_dy * near_dy);
-      x0 = std::max(0, to_px(std::floor(cx - half - 0.5)));
-      x1 = std::min(width, to_px(std::ceil(cx + half + 0.5)));
+      x0 = std::max(0, pixel_index(std::floor(cx - half - 0.5)));
+      x1 = std::min(width, pixel_index(std::ceil(cx + half + 0.5)));
     }
     if (x1 <= x0) continue;
     // Columns whose centres lie inside `inner` on every row of the band:
@@ -147,8 +127,8 @@ std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double 
     int h0 = 0, h1 = 0;
     if (far_dy < inner) {
       const double half = std::sqrt(inner * inner - far_dy * far_dy) - 1.0;
-      h0 = std::max(x0, to_px(std::ceil(cx - half - 0.5)));
-      h1 = std::min(x1, to_px(std::floor(cx + half - 0.5)) + 1);
+      h0 = std::max(x0, pixel_index(std::ceil(cx - half - 0.5)));
+      h1 = std::min(x1, pixel_index(std::floor(cx + half - 0.5)) + 1);
     }
     if (h1 <= h0) {
       out.push_back({x0, y0, x1, y1});

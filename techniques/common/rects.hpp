@@ -5,6 +5,7 @@
 // tile) is drawn over those tiles alone. The programs are built from
 // common/rects.vert and any fragment shader; the rectangles are one instanced
 // quad each, read from a storage buffer.
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -16,6 +17,10 @@ namespace foveate::tech {
 
 /// A rectangle of pixels [x0, x1) x [y0, y1) in GL coordinates (origin bottom-left).
 using PixelRect = std::array<int, 4>;
+
+/// A pixel coordinate (already rounded) as an int, held within a range no
+/// target reaches: a gaze far off the screen gives coordinates beyond int's.
+inline int pixel_index(double v) { return static_cast<int>(std::clamp(v, -1e8, 1e8)); }
 
 class RectPass {
  public:

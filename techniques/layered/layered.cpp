@@ -220,18 +220,15 @@ class Layered final : public Technique {
       std::vector<PixelRect> cover = annulus_rects((g.x - v.x0) / s, (g.y - v.y0) / s, st.hole / s,
                                                    outer / s, v.target_width, v.target_height);
       const double margin = 1.5 * s;
-      const auto px = [](double x) { return static_cast<int>(std::clamp(x, -1e8, 1e8)); };
-      const PixelRect keep{
-          px(std::floor((-margin - v.x0) / s)), px(std::floor((-margin - v.y0) / s)),
-          px(std::ceil((W + margin - v.x0) / s)) + 1, px(std::ceil((H + margin - v.y0) / s)) + 1};
+      const PixelRect keep{pixel_index(std::floor((-margin - v.x0) / s)),
+                           pixel_index(std::floor((-margin - v.y0) / s)),
+                           pixel_index(std::ceil((W + margin - v.x0) / s)) + 1,
+                           pixel_index(std::ceil((H + margin - v.y0) / s)) + 1};
       cover = clip_rects(cover, keep);
-      const double shaded =
-          cover.empty()
-              ? 0.0
-              : kit_.shade(
-                    scene, jv, kMapRect, st.spare,
-                    [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, jv); }, {},
-                    false, cover);
+      const double shaded = kit_.shade(
+          scene, jv, kMapRect, st.spare,
+          [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, jv); }, {}, false,
+          &cover);
       stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
       stats.shaded_pixels += shaded;
       // A moving image with no history to reproject and none wanted at the

@@ -244,15 +244,14 @@ class LogPolar final : public Technique {
     const double skip = kSkipFraction * r_native;
     const std::vector<PixelRect> cover =
         log_polar_cover(g, L, alpha_, bw, bh, skip, {-margin, -margin, W + margin, H + margin});
-    const double shaded = cover.empty() ? 0.0
-                                        : kit_.shade(
-                                              scene, native, "logpolar/map_logpolar.glsl", buffer_,
-                                              [&](const gpu::Program& p, gpu::Samplers&) {
-                                                set_mapping(p);
-                                                p.set("u_lp_jitter", float(jx), float(jy));
-                                                p.set("u_lp_screen", float(W), float(H));
-                                              },
-                                              {}, false, cover);
+    const double shaded = kit_.shade(
+        scene, native, "logpolar/map_logpolar.glsl", buffer_,
+        [&](const gpu::Program& p, gpu::Samplers&) {
+          set_mapping(p);
+          p.set("u_lp_jitter", float(jx), float(jy));
+          p.set("u_lp_screen", float(W), float(H));
+        },
+        {}, false, &cover);
     stats.parts.push_back({"log-polar buffer", shaded});
 
     // 2. The native disc and its blend band, clipped to the screen, shaded
@@ -275,7 +274,7 @@ class LogPolar final : public Technique {
             p.set("u_map_rect", float(x0), float(y0), float(fw), float(fh));
             p.set("u_map_target", float(fw), float(fh));
           },
-          {}, false, disc_cover);
+          {}, false, &disc_cover);
     }
     stats.parts.push_back({"native disc", disc});
     stats.shaded_pixels = shaded + disc;
