@@ -226,4 +226,22 @@ bool CheckerboardPattern::kept(Vec2d pixel, Vec2d gaze) const {
   return quad(pixel) > region(pixel, gaze) || quad(pixel) == 0;
 }
 
+std::array<double, 4> CheckerboardPattern::kept_by_region(int width, int height, Vec2d gaze) const {
+  std::array<double, 4> out{};
+  const int n = block, s = 2 * block;
+  for (int ty = 0; ty < height; ty += s) {
+    for (int tx = 0; tx < width; tx += s) {
+      // Every pixel of a tile lies in the tile's region.
+      const int r = region({tx + 0.5, ty + 0.5}, gaze);
+      for (int q = 0; q < 4; ++q) {
+        if (q != 0 && q <= r) continue;  // region r drops quads 1..r
+        const int x0 = tx + (q >= 2 ? n : 0), y0 = ty + (q & 1 ? n : 0);
+        const int w = std::clamp(width - x0, 0, n), h = std::clamp(height - y0, 0, n);
+        out[static_cast<size_t>(r)] += double(w) * h;
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace foveate

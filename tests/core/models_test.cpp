@@ -207,6 +207,35 @@ TEST(Checkerboard, RegionZeroHoldsTheDiscOfItsRadius) {
   }
 }
 
+TEST(Checkerboard, KeptByRegionCountsEveryKeptPixel) {
+  // Against kept() and region() pixel by pixel: screens that end inside a
+  // tile and inside a quad, gazes inside, at the edge of and off the screen.
+  struct Case {
+    int block, width, height;
+    Vec2d gaze;
+  };
+  for (const Case c :
+       {Case{2, 37, 23, {11.2, 9.7}}, Case{4, 101, 57, {0.0, 0.0}}, Case{3, 64, 48, {70.5, -8.0}},
+        Case{1, 9, 5, {4.5, 2.5}}, Case{4, 3, 2, {1.0, 1.0}}}) {
+    CheckerboardPattern p;
+    p.block = c.block;
+    p.thresholds_px = {6.0, 13.0, 21.5};
+    std::array<double, 4> expected{};
+    for (int y = 0; y < c.height; ++y) {
+      for (int x = 0; x < c.width; ++x) {
+        const Vec2d px{x + 0.5, y + 0.5};
+        if (p.kept(px, c.gaze)) expected[static_cast<size_t>(p.region(px, c.gaze))] += 1.0;
+      }
+    }
+    const auto got = p.kept_by_region(c.width, c.height, c.gaze);
+    for (size_t k = 0; k < 4; ++k) {
+      EXPECT_EQ(got[k], expected[k])
+          << c.width << "x" << c.height << " block " << c.block << " region " << k;
+    }
+  }
+  EXPECT_EQ(CheckerboardPattern{}.kept_by_region(0, 0, {0, 0}), (std::array<double, 4>{}));
+}
+
 TEST(Checkerboard, GapsBetweenKeptPixels) {
   // Against brute force: the diameter of the largest disc free of kept pixel
   // centres, probed on a fine grid of candidate centres over one 2n tile. In

@@ -430,18 +430,6 @@ TEST_F(Techniques, CheckerboardFadesFromNativeOverABandProportionalToR1) {
   EXPECT_LT(none->overlay(GazeState{gaze})[1].w, wide->overlay(GazeState{gaze})[1].w);
 }
 
-TEST_F(Techniques, CheckerboardMaskPathsAgree) {
-  // One-pass stencil export and four mask passes give the same image and counts.
-  auto scene = load_scene("detail");
-  auto one = make_technique("checkerboard", config({{"export_stencil", 1}}));
-  auto four = make_technique("checkerboard", config({{"export_stencil", 0}}));
-  FrameStats s1, s4;
-  const Image a = run(*one, *scene, {300, 170}, &s1), b = run(*four, *scene, {300, 170}, &s4);
-  EXPECT_EQ(compare_all(a, b).max, 0.0);
-  ASSERT_EQ(s1.parts.size(), s4.parts.size());
-  for (size_t k = 0; k < s1.parts.size(); ++k) EXPECT_EQ(s1.parts[k].pixels, s4.parts[k].pixels);
-}
-
 TEST_F(Techniques, CheckerboardWithoutDroppedQuadsIsNative) {
   auto scene = load_scene("detail");
   const Image ref = native(*scene);

@@ -91,6 +91,10 @@ struct CheckerboardPattern {
   [[nodiscard]] int quad(Vec2d pixel) const;
   /// Whether the pixel is shaded (not dropped).
   [[nodiscard]] bool kept(Vec2d pixel, Vec2d gaze) const;
+  /// How many pixels of a width x height screen each region keeps (pixel
+  /// centres, as kept()): what one shading pass over the kept pixels shades,
+  /// split by region. Counted per tile and quad, not per pixel.
+  [[nodiscard]] std::array<double, 4> kept_by_region(int width, int height, Vec2d gaze) const;
   void validate() const;
 };
 
