@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
 #include <random>
 #include <sstream>
 
@@ -19,6 +20,18 @@
 #include "video.hpp"
 
 namespace foveate::app {
+
+std::vector<std::vector<size_t>> interleaved_orders(size_t runs, int frames) {
+  std::vector<std::vector<size_t>> out;
+  std::vector<size_t> order(runs);
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::mt19937 shuffler(20261125u);
+  for (int k = 0; k < frames; ++k) {
+    std::shuffle(order.begin(), order.end(), shuffler);
+    out.push_back(order);
+  }
+  return out;
+}
 
 namespace {
 
@@ -332,8 +345,13 @@ BenchResult run_bench(const BenchOptions& o) {
   // techniques' steady state (every layer rendered, half-rate cadence and
   // temporal history running), as they would in an application.
   // Measured frames, interleaved: every technique renders frame k before any
-  // renders k + 1, and the order rotates so that no technique is always first.
+  // renders k + 1, in an order shuffled anew for every frame. With a fixed
+  // rotation each technique followed the same predecessor every frame, and
+  // on llvmpipe the technique after logpolar paid 20-26 ms more in its
+  // G-buffer pass (docs/performance.md).
+  const std::vector<std::vector<size_t>> orders = interleaved_orders(runs.size(), o.frames);
   for (int k = 0; k < o.frames; ++k) {
+    const std::vector<size_t>& order = orders[static_cast<size_t>(k)];
     const int frame = warmup + k;
     const double t = renderer.frame_input(frame).time_s;
     const GazeState g = gaze.at(t);
@@ -350,7 +368,7 @@ BenchResult run_bench(const BenchOptions& o) {
     }
     std::vector<std::pair<size_t, RunImages>> images;
     for (size_t i = 0; i < runs.size(); ++i) {
-      Run& r = runs[(i + static_cast<size_t>(k)) % runs.size()];
+      Run& r = runs[order[i]];
       FrameStats s;
       std::array<FrameStats, 2> eye_stats;
       if (profiler) profiler->begin_frame();

@@ -33,6 +33,13 @@ struct Sweep {
   [[nodiscard]] bool applies_to(const std::string& technique) const;
 };
 
+/// The order in which `runs` techniques render each of `frames` measured
+/// frames: a permutation per frame, shuffled anew every frame from a fixed
+/// seed (the same sequence every run), so that no technique is always first
+/// or always follows the same one (on llvmpipe a pass can pay for the one
+/// before it).
+std::vector<std::vector<size_t>> interleaved_orders(size_t runs, int frames);
+
 struct BenchOptions {
   SessionOptions session;
   std::vector<std::string> techniques{"native", "layered", "logpolar", "checkerboard", "inset"};

@@ -49,9 +49,9 @@ std::string report_html(const BenchResult& b) {
     << ", MAR slope " << fmt(b.options.session.acuity.slope, 4) << ", gaze "
     << (b.options.gaze.empty() ? "centre" : b.options.gaze) << ", " << b.options.frames
     << " measured frames after " << b.warmup
-    << " warm-up, techniques interleaved frame by frame. Speedup is the ratio of median frame "
-       "times (95 % bootstrap "
-       "interval); the pixel bound is native pixels / shaded pixels.</p>\n"
+    << " warm-up, techniques interleaved frame by frame in an order shuffled every frame. Speedup "
+       "is the ratio of mean frame times (95 % bootstrap interval); the pixel bound is native "
+       "pixels / shaded pixels.</p>\n"
     << "<p class=note>Command: <code>" << escape_html(b.environment.command) << "</code>; foveate "
     << escape_html(b.environment.version) << ", " << escape_html(b.environment.date_utc) << ", CPU "
     << escape_html(b.environment.cpu_model) << " (" << b.environment.cores << " cores), load "
@@ -118,7 +118,7 @@ std::string report_html(const BenchResult& b) {
   }
   h << "<div class=chart id=\"chart-speed\">"
     << svg_bar_chart(names, {speed, bound},
-                     {"Speedup over native", "speedup over native (x, median frame times)", true})
+                     {"Speedup over native", "speedup over native (x, mean frame times)", true})
     << "</div>\n<div class=chart id=\"chart-frame-times\">"
     << svg_box_plot(names, frame_ms,
                     {"Frame times: every measured frame (dots), quartiles (box), median (line)",

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "bars_technique.hpp"
 #include "errors.hpp"
@@ -54,6 +55,27 @@ TEST(Bench, ARunTimeTechniqueIsBenchmarkedBesideNative) {
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["results"][1]["technique"], test::kBarsTechnique);
   std::filesystem::remove_all(out);
+}
+
+TEST(Bench, InterleavedOrdersVaryWhatEachTechniqueFollows) {
+  // Seven techniques over sixteen frames, as the README's tables: every
+  // frame renders each technique once, and each technique follows several
+  // others over the run (a fixed rotation gave each one predecessor only).
+  const auto orders = interleaved_orders(7, 16);
+  ASSERT_EQ(orders.size(), 16u);
+  std::vector<std::set<size_t>> before(7);
+  std::set<size_t> first;
+  for (const auto& order : orders) {
+    ASSERT_EQ(order.size(), 7u);
+    EXPECT_EQ(std::set<size_t>(order.begin(), order.end()).size(), 7u);
+    first.insert(order[0]);
+    for (size_t i = 1; i < order.size(); ++i) before[order[i]].insert(order[i - 1]);
+  }
+  for (size_t t = 0; t < 7; ++t) EXPECT_GE(before[t].size(), 3u) << "technique " << t;
+  EXPECT_GE(first.size(), 4u);
+  EXPECT_EQ(interleaved_orders(7, 16), orders);  // the same sequence every run
+  EXPECT_EQ(interleaved_orders(1, 3), (std::vector<std::vector<size_t>>(3, {0})));
+  EXPECT_TRUE(interleaved_orders(4, 0).empty());
 }
 
 TEST(Bench, SweepsApplyOnlyWhereTheKeyIsDeclared) {
