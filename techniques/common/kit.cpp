@@ -148,14 +148,32 @@ void Kit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state
 
 void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program,
                      const gpu::RenderTarget& target, const gpu::PassState& state,
-                     const SetUniforms& set) {
+                     const SetUniforms& set, const std::vector<PixelRect>* cover) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::Samplers samplers;
   scene.bind(program, view, samplers);
   if (set) set(program, samplers);
   target.bind();
+  if (!cover) {
+    gpu::apply(state);
+    draw_triangle(program);
+    return;
+  }
+  // One scissored full-screen triangle per rectangle rather than a quad of
+  // two triangles each: llvmpipe shades a 4x4 block once per triangle that
+  // touches it, and the diagonal of a long thin quad touches nearly every
+  // block of it (a shading pass over bands of rows cost up to twice its
+  // pixels). The scissor clips exactly, on whole blocks where the
+  // rectangles are aligned to them. Each draw costs about 0.14 ms on
+  // llvmpipe (a few hundred pixels of an expensive scene, ten thousand of a
+  // cheap one): bands are merged where that shades at most 8 % more.
+  gpu::PassState clipped = state;
+  for (const PixelRect& r : coarsen_runs(*cover, 0.08)) {
+    clipped.scissor = {r[0], r[1], r[2] - r[0], r[3] - r[1]};
+    gpu::apply(clipped);
+    draw_triangle(program);
+  }
   gpu::apply(state);
-  draw_triangle(program);
 }
 
 double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
@@ -164,30 +182,7 @@ double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
   const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-  if (!cover) {
-    scene_pass(scene, view, p, target, state, set);
-  } else {
-    // One scissored full-screen triangle per rectangle rather than a quad of
-    // two triangles each: llvmpipe shades a 4x4 block once per triangle that
-    // touches it, and the diagonal of a long thin quad touches nearly every
-    // block of it (a shading pass over bands of rows cost up to twice its
-    // pixels). The scissor clips exactly, on whole blocks where the
-    // rectangles are aligned to them.
-    gpu::Samplers samplers;
-    scene.bind(p, view, samplers);
-    if (set) set(p, samplers);
-    target.bind();
-    gpu::PassState clipped = state;
-    // Each draw costs about 0.14 ms on llvmpipe (a few hundred pixels of an
-    // expensive scene, ten thousand of a cheap one): bands are merged where
-    // that shades at most 8 % more.
-    for (const PixelRect& r : coarsen_runs(*cover, 0.08)) {
-      clipped.scissor = {r[0], r[1], r[2] - r[0], r[3] - r[1]};
-      gpu::apply(clipped);
-      draw_triangle(p);
-    }
-    gpu::apply(state);
-  }
+  scene_pass(scene, view, p, target, state, set, cover);
   glEndQuery(GL_SAMPLES_PASSED);
   GLuint64 samples = 0;
   glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &samples);

@@ -66,19 +66,21 @@ class Kit {
   /// A full-screen pass into whatever framebuffer is bound: a scene's
   /// G-buffer between prepass_begin and prepass_end (lodmask's masks).
   void pass_in_bound(const gpu::Program& program, const gpu::PassState& state);
-  /// The same for a program that runs the scene's shading (binds the scene's
-  /// uniforms and textures for `view` first).
+  /// A full-screen pass into `target` of a program that runs the scene's
+  /// shading (binds the scene's uniforms and textures for `view` first).
+  /// With a `cover` (GL pixels of `target`) it is drawn over those
+  /// rectangles only, merged into fewer where that shades little more (an
+  /// empty cover draws nothing).
   void scene_pass(Scene& scene, const View& view, const gpu::Program& program,
                   const gpu::RenderTarget& target, const gpu::PassState& state = {},
-                  const SetUniforms& set = {});
+                  const SetUniforms& set = {}, const std::vector<PixelRect>* cover = nullptr);
   /// A shading pass over `target`: the scene shaded at the mapping's
   /// positions. Returns the fragments that reached the shader (occlusion
   /// query; stencil-rejected and discarded fragments do not count). With a
-  /// `cover` (GL pixels of `target`) the pass is drawn over those rectangles
-  /// only (merged into fewer where that shades little more; none: nothing
-  /// is drawn): what a technique does not show is never run. The shading variants have
-  /// no discard (on llvmpipe a shader that can discard is slower
-  /// everywhere, and a discarded fragment costs as much as a shaded one).
+  /// `cover`, drawn over its rectangles only (scene_pass): what a technique
+  /// does not show is never run. The shading variants have no discard (on
+  /// llvmpipe a shader that can discard is slower everywhere, and a
+  /// discarded fragment costs as much as a shaded one).
   double shade(Scene& scene, const View& view, const std::string& mapping,
                const gpu::RenderTarget& target, const SetUniforms& set,
                const gpu::PassState& state = {}, bool early = false,
