@@ -23,6 +23,23 @@ double tan_deg(double a) { return std::tan(a * kRad); }
 double edge_deg(double tangent) { return std::atan(tangent) * kDeg; }
 }  // namespace
 
+double Photometry::black_cd_m2() const {
+  return ambient_lux / std::numbers::pi * reflectivity + peak_cd_m2 / contrast_ratio;
+}
+
+void Photometry::validate(const std::string& where) const {
+  const auto check = [&](const char* key, double v, double min, double max, bool open_min) {
+    if (!std::isfinite(v) || v > max || (open_min ? v <= min : v < min)) {
+      throw Error(where + "." + key + ": must be in " + (open_min ? "(" : "[") +
+                  format_number(min) + ", " + format_number(max) + "], got " + format_number(v));
+    }
+  };
+  check("peak_cd_m2", peak_cd_m2, 0.0, 1e5, true);
+  check("contrast_ratio", contrast_ratio, 1.0, 1e9, true);
+  check("ambient_lux", ambient_lux, 0.0, 1e6, false);
+  check("reflectivity", reflectivity, 0.0, 1.0, false);
+}
+
 double Display::eye_distance_px() const {
   if (fov.set()) return width_px / (tan_deg(fov.right_deg) - tan_deg(fov.left_deg));
   if (head_mounted()) return 0.5 * width_px / std::tan(0.5 * fov_h_deg * kRad);
@@ -148,6 +165,7 @@ Display Display::resized(int width, int height) const {
 void Display::validate() const {
   const std::string w = name.empty() ? "display" : "display '" + name + "'";
   validate_geometry();
+  photometry.validate(w + ": photometry");
   if (!lens) return;
   if (!head_mounted()) {
     throw Error(w + ": lens needs a head-mounted display (fov_deg or fov_h_deg)");
@@ -295,6 +313,10 @@ const std::vector<Display>& Display::presets() {
       d.lens = q;
       v.push_back(d);
     }
+    // Inside a headset no ambient light falls on the panel.
+    for (Display& d : v) {
+      if (d.head_mounted()) d.photometry.ambient_lux = 0.0;
+    }
     return v;
   }();
   return all;
@@ -323,6 +345,15 @@ Display Display::from_json(const nlohmann::json& j, const std::string& where) {
   const bool has_ipd = r.number("ipd_mm", d.ipd_mm, 1e-6, 200.0);
   const nlohmann::json* lens = r.get("lens");
   if (lens) d.lens = Lens::from_json(*lens, r.path("lens"));
+  if (const nlohmann::json* photometry = r.get("photometry")) {
+    if (!photometry->is_object()) throw Error(r.path("photometry") + ": expected an object");
+    JsonReader p(*photometry, r.path("photometry"));
+    p.number("peak_cd_m2", d.photometry.peak_cd_m2, 1e-9, 1e5);
+    p.number("contrast_ratio", d.photometry.contrast_ratio, 1.0 + 1e-9, 1e9);
+    p.number("ambient_lux", d.photometry.ambient_lux, 0.0, 1e6);
+    p.number("reflectivity", d.photometry.reflectivity, 0.0, 1.0);
+    p.finish();
+  }
   const nlohmann::json* fov = r.get("fov_deg");
   if (fov) {
     if (!fov->is_object()) throw Error(r.path("fov_deg") + ": expected an object");
@@ -390,6 +421,10 @@ void to_json(nlohmann::json& j, const Display& d) {
     j["distance_mm"] = d.distance_mm;
   }
   if (d.lens) j["lens"] = *d.lens;
+  j["photometry"] = {{"peak_cd_m2", d.photometry.peak_cd_m2},
+                     {"contrast_ratio", d.photometry.contrast_ratio},
+                     {"ambient_lux", d.photometry.ambient_lux},
+                     {"reflectivity", d.photometry.reflectivity}};
 }
 
 }  // namespace foveate

@@ -137,3 +137,46 @@ TEST(Display, JsonRoundTripAndErrors) {
   EXPECT_NE(message(nlohmann::json::array()).find("expected a JSON object"), std::string::npos);
   EXPECT_THROW(Display::load("no-such-display"), Error);
 }
+
+TEST(Display, PhotometryDefaultsJsonAndErrors) {
+  // FovVideoVDP's standard office display: 200 cd/m^2, 1000:1, 250 lux, 0.5 %.
+  const Display d;
+  EXPECT_DOUBLE_EQ(d.photometry.peak_cd_m2, 200.0);
+  EXPECT_NEAR(d.photometry.black_cd_m2(), 250.0 / 3.14159265358979 * 0.005 + 0.2, 1e-9);
+  EXPECT_DOUBLE_EQ(d.photometry.luminance_cd_m2(1.0), 200.0);
+  EXPECT_DOUBLE_EQ(d.photometry.luminance_cd_m2(0.0), d.photometry.black_cd_m2());
+  // Head-mounted presets see no ambient light.
+  EXPECT_EQ(Display::load("hmd-quest3").photometry.ambient_lux, 0.0);
+  EXPECT_EQ(Display::load("desktop-1080p").photometry.ambient_lux, 250.0);
+
+  nlohmann::json j = {
+      {"width_px", 640},
+      {"height_px", 360},
+      {"width_mm", 400},
+      {"distance_mm", 1000},
+      {"photometry", {{"peak_cd_m2", 100}, {"contrast_ratio", 500}, {"ambient_lux", 50}}}};
+  const Display p = Display::from_json(j);
+  EXPECT_DOUBLE_EQ(p.photometry.peak_cd_m2, 100.0);
+  EXPECT_DOUBLE_EQ(p.photometry.contrast_ratio, 500.0);
+  EXPECT_DOUBLE_EQ(p.photometry.ambient_lux, 50.0);
+  EXPECT_DOUBLE_EQ(p.photometry.reflectivity, 0.005);  // default kept
+  nlohmann::json back;
+  to_json(back, p);
+  EXPECT_DOUBLE_EQ(Display::from_json(back).photometry.contrast_ratio, 500.0);
+
+  const auto message = [&](const char* key, nlohmann::json v) {
+    nlohmann::json b = j;
+    b["photometry"][key] = v;
+    try {
+      Display::from_json(b);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("peak_cd_m2", -1).find("display.photometry.peak_cd_m2"), std::string::npos);
+  EXPECT_NE(message("contrast_ratio", 1).find("display.photometry.contrast_ratio"),
+            std::string::npos);
+  EXPECT_NE(message("reflectivity", 2).find("display.photometry.reflectivity"), std::string::npos);
+  EXPECT_NE(message("gamma", 2.2).find("unknown key 'gamma'"), std::string::npos);
+}

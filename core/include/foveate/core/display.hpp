@@ -37,6 +37,25 @@ struct FovAngles {
   [[nodiscard]] FovAngles mirrored() const { return {-right_deg, -left_deg, up_deg, down_deg}; }
 };
 
+/// How the display turns an 8-bit value into light: the gain-offset-gamma
+/// model with the sRGB transfer function that FovVideoVDP (Mantiuk et al.
+/// 2021) uses, L = (peak - black) srgb_to_linear(V) + black, where the black
+/// level is the panel's own (peak / contrast) plus the ambient light it
+/// reflects (ambient / pi * reflectivity), all in cd/m^2.
+struct Photometry {
+  double peak_cd_m2 = 200.0;     ///< luminance of white
+  double contrast_ratio = 1000;  ///< the panel's peak / black, without ambient light
+  double ambient_lux = 250.0;    ///< illuminance falling on the screen
+  double reflectivity = 0.005;   ///< share of the ambient light the screen reflects
+  [[nodiscard]] double black_cd_m2() const;
+  /// Luminance for a linear (already decoded) value in [0, 1].
+  [[nodiscard]] double luminance_cd_m2(double linear) const {
+    return (peak_cd_m2 - black_cd_m2()) * linear + black_cd_m2();
+  }
+  /// Throws foveate::Error naming the field (prefixed by `where`).
+  void validate(const std::string& where) const;
+};
+
 struct Display {
   std::string name = "desktop-1080p";
   int width_px = 1920;
@@ -62,6 +81,9 @@ struct Display {
   /// (the lens shows each buffer pixel at its pinhole angle). Absent: the
   /// panel is taken to be as fine as the buffer everywhere.
   std::optional<Lens> lens = std::nullopt;
+  /// The light it emits, for the perceptual metrics (FovVideoVDP). Head-mounted
+  /// presets see no ambient light.
+  Photometry photometry{};
 
   [[nodiscard]] bool head_mounted() const { return fov_h_deg > 0.0 || fov.set(); }
   /// Whether it can be rendered in stereo (four angles and an IPD).
