@@ -28,16 +28,25 @@ double Photometry::black_cd_m2() const {
 }
 
 void Photometry::validate(const std::string& where) const {
+  validate([&](const char* key) { return where + "." + key; });
+}
+
+void Photometry::validate(const std::function<std::string(const char* key)>& name) const {
   const auto check = [&](const char* key, double v, double min, double max, bool open_min) {
     if (!std::isfinite(v) || v > max || (open_min ? v <= min : v < min)) {
-      throw Error(where + "." + key + ": must be in " + (open_min ? "(" : "[") +
-                  format_number(min) + ", " + format_number(max) + "], got " + format_number(v));
+      throw Error(name(key) + ": must be in " + (open_min ? "(" : "[") + format_number(min) + ", " +
+                  format_number(max) + "], got " + format_number(v));
     }
   };
   check("peak_cd_m2", peak_cd_m2, 0.0, 1e5, true);
   check("contrast_ratio", contrast_ratio, 1.0, 1e9, true);
   check("ambient_lux", ambient_lux, 0.0, 1e6, false);
   check("reflectivity", reflectivity, 0.0, 1.0, false);
+  if (black_cd_m2() >= peak_cd_m2) {
+    throw Error(name("peak_cd_m2") +
+                ": must exceed the black level with reflected ambient light (" +
+                format_number(black_cd_m2()) + " cd/m^2), got " + format_number(peak_cd_m2));
+  }
 }
 
 double Display::eye_distance_px() const {

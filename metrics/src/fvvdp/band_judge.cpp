@@ -31,22 +31,14 @@ std::shared_ptr<const SensitivityTable> shared_table(double omega_hz, const Fvvd
   return it->second;
 }
 
-int ecc_band_of(float ecc, const std::vector<double>& edges) {
-  int band = -1;
-  for (size_t i = 0; i < edges.size(); ++i) {
-    if (ecc >= edges[i]) band = static_cast<int>(i);
-  }
-  return band;
-}
-
 }  // namespace
 
 struct BandJudge::Scratch {
   bool gaze_set = false;
   Vec2d gaze{};
-  std::vector<std::vector<SamplePosition>> positions;  // [band][sample], foveated mode
-  std::vector<std::vector<std::int8_t>> ecc_bands;     // [band][sample]: band index or -1
-  std::vector<std::vector<double>> ecc_samples;        // [ecc band][band]
+  std::vector<SamplePositions> positions;           // [band], foveated mode
+  std::vector<std::vector<std::int8_t>> ecc_bands;  // [band][sample]: band index or -1
+  std::vector<std::vector<double>> ecc_samples;     // [ecc band][band]
   std::vector<float> ecc;
   std::vector<Map> expanded;
   std::vector<std::vector<Map>> pyramid;  // [channel][level - 1]
@@ -98,21 +90,26 @@ void BandJudge::update_gaze(Vec2d gaze_px) const {
   s.positions.resize(static_cast<size_t>(bands_));
   s.ecc_bands.resize(static_cast<size_t>(bands_));
   s.ecc_samples.assign(n_ecc, std::vector<double>(static_cast<size_t>(bands_), 0.0));
+  std::vector<double> counts(n_ecc);
   for (int b = 0; b < bands_; ++b) {
-    geometry_.eccentricity(b, gaze_px, s.ecc);
-    auto& bands = s.ecc_bands[static_cast<size_t>(b)];
-    bands.resize(s.ecc.size());
-    for (size_t i = 0; i < s.ecc.size(); ++i) {
-      const int e = ecc_band_of(s.ecc[i], options_.band_edges_deg);
-      bands[i] = static_cast<std::int8_t>(e);
-      if (e >= 0) s.ecc_samples[static_cast<size_t>(e)][static_cast<size_t>(b)] += 1.0;
-    }
+    std::fill(counts.begin(), counts.end(), 0.0);
+    geometry_.bands(b, gaze_px, options_.band_edges_deg, s.ecc_bands[static_cast<size_t>(b)],
+                    counts);
+    for (size_t e = 0; e < n_ecc; ++e) s.ecc_samples[e][static_cast<size_t>(b)] = counts[e];
     if (options_.foveated) {
+      geometry_.eccentricity(b, gaze_px, s.ecc);
       const auto& rho = rho_positions_[static_cast<size_t>(b)];
       auto& pos = s.positions[static_cast<size_t>(b)];
       pos.resize(s.ecc.size());
+      // The eccentricity axis is uniform in the square root (taken as exactly so).
+      const SensitivityTable& t = *tables_[0];
+      constexpr int last = SensitivityTable::kSize - 1;
+      const float inv_step = static_cast<float>(last) / t.ecc_sqrt[last];
       for (size_t i = 0; i < s.ecc.size(); ++i) {
-        pos[i] = sample_position(rho[i], tables_[0]->locate_ecc(s.ecc[i]));
+        const float u = std::min(std::sqrt(std::min(s.ecc[i], t.ecc[last])) * inv_step,
+                                 static_cast<float>(last));
+        const int lo = std::min(static_cast<int>(u), last - 1);
+        pos.set(i, rho[i], {lo, lo + 1, u - static_cast<float>(lo)});
       }
     }
   }
@@ -145,11 +142,11 @@ void BandJudge::judge_band(int band, const std::vector<const Map*>& fine,
   // log2 sensitivity of every sample for each temporal channel's table.
   for (int cc = 0; cc < temporal_channels; ++cc) s.log_s[static_cast<size_t>(cc)].resize(n);
   if (options_.foveated) {
-    const SensitivityTable* tables[2] = {tables_[0].get(), tables_[1].get()};
-    float* log_s[2] = {s.log_s[0].data(), s.log_s[1].data()};
-    sensitivity_per_sample(s.luminance_lo.data(), s.luminance_frac.data(),
-                           s.positions[static_cast<size_t>(band)].data(), n, tables, log_s,
-                           temporal_channels);
+    for (int cc = 0; cc < temporal_channels; ++cc) {
+      sensitivity_per_sample(
+          s.luminance_lo.data(), s.luminance_frac.data(), s.positions[static_cast<size_t>(band)], n,
+          tables_[static_cast<size_t>(cc)]->values.data(), s.log_s[static_cast<size_t>(cc)].data());
+    }
   } else {
     for (int cc = 0; cc < temporal_channels; ++cc) {
       // Frequency and eccentricity are the same everywhere: interpolate the
@@ -175,28 +172,27 @@ void BandJudge::judge_band(int band, const std::vector<const Map*>& fine,
   k.p = static_cast<float>(p.mask_p);
   k.beta = static_cast<float>(p.beta);
   k.log2_d_max = std::log2(1e4f);
-  s.dbeta.resize(n);
-  if (distortion_band) *distortion_band = Map(w, h, 0.0f);
+  if (distortion_band) {
+    *distortion_band = Map(w, h, 0.0f);
+    s.dbeta.resize(n);
+  }
   const auto& ecc_bands = s.ecc_bands[static_cast<size_t>(band)];
   const size_t n_ecc = options_.band_edges_deg.size();
   for (int cc = 0; cc < temporal_channels; ++cc) {
     k.q = static_cast<float>(cc == 0 ? p.mask_q_sustained : p.mask_q_transient);
     const auto c = static_cast<size_t>(2 * cc);
+    PooledDifference pooled;
+    pooled.by_ecc_band.assign(n_ecc, 0.0);
     masked_difference(fine[c]->values.data(), s.expanded[c].values.data(),
                       fine[c + 1]->values.data(), s.expanded[c + 1].values.data(), background,
-                      s.log_s[static_cast<size_t>(cc)].data(), n, k, s.dbeta.data());
-    const float* dbeta = s.dbeta.data();
-    double sum = 0.0;
-    std::vector<double> sums(n_ecc, 0.0);
-    for (size_t i = 0; i < n; ++i) {
-      sum += dbeta[i];
-      if (ecc_bands[i] >= 0) sums[static_cast<size_t>(ecc_bands[i])] += dbeta[i];
-    }
-    out.mean[static_cast<size_t>(band)][static_cast<size_t>(cc)] = sum / static_cast<double>(n);
+                      s.log_s[static_cast<size_t>(cc)].data(), ecc_bands.data(), n, k, pooled,
+                      distortion_band ? s.dbeta.data() : nullptr);
+    out.mean[static_cast<size_t>(band)][static_cast<size_t>(cc)] =
+        pooled.all / static_cast<double>(n);
     for (size_t e = 0; e < n_ecc; ++e) {
       const double count = s.ecc_samples[e][static_cast<size_t>(band)];
       out.by_ecc[e][static_cast<size_t>(band)][static_cast<size_t>(cc)] =
-          count > 0 ? sums[e] / count : 0.0;
+          count > 0 ? pooled.by_ecc_band[e] / count : 0.0;
     }
     if (distortion_band) {
       // The heat map pools the channels linearly (transient weighted).
@@ -204,7 +200,7 @@ void BandJudge::judge_band(int band, const std::vector<const Map*>& fine,
           static_cast<float>((cc == 0 ? 1.0 : p.w_transient) / static_cast<double>(k.band_gain));
       const float inv_beta = 1.0f / k.beta;
       for (size_t i = 0; i < n; ++i) {
-        distortion_band->values[i] += weight * fast_exp2(inv_beta * fast_log2(dbeta[i]));
+        distortion_band->values[i] += weight * fast_exp2(inv_beta * fast_log2(s.dbeta[i]));
       }
     }
   }

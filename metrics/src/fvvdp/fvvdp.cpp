@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "foveate/core/error.hpp"
@@ -98,22 +99,32 @@ double fvvdp_jod_from_difference(double q, const FvvdpParameters& p) {
 }
 
 Map display_luminance(const Image& image, const Photometry& photometry) {
-  static const std::array<double, 256> linear = [] {
-    std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[static_cast<size_t>(i)] = srgb_to_linear(i / 255.0);
-    return t;
-  }();
-  const double black = photometry.black_cd_m2(), range = photometry.peak_cd_m2 - black;
-  Map out(image.width, image.height);
-  const size_t n = out.values.size();
-  for (size_t i = 0; i < n; ++i) {
-    const std::uint8_t* px = &image.rgba[i * 4];
-    // Y of linear sRGB (Rec. 709 primaries, D65).
-    const double y =
-        0.2126729 * linear[px[0]] + 0.7151522 * linear[px[1]] + 0.0721750 * linear[px[2]];
-    out.values[i] = static_cast<float>(range * y + black);
-  }
+  Map out;
+  display_luminance(image, photometry, out);
   return out;
+}
+
+void display_luminance(const Image& image, const Photometry& photometry, Map& out) {
+  // Y of linear sRGB (Rec. 709 primaries, D65) through the display: each
+  // channel's share of the luminance, in cd/m^2, per code.
+  const double black = photometry.black_cd_m2(), range = photometry.peak_cd_m2 - black;
+  std::array<std::array<float, 256>, 3> share{};
+  constexpr double weights[3] = {0.2126729, 0.7151522, 0.0721750};
+  for (size_t c = 0; c < 3; ++c) {
+    for (int i = 0; i < 256; ++i) {
+      share[c][static_cast<size_t>(i)] =
+          static_cast<float>(range * weights[c] * srgb_to_linear(i / 255.0));
+    }
+  }
+  const auto b = static_cast<float>(black);
+  out.width = image.width;
+  out.height = image.height;
+  out.values.resize(static_cast<size_t>(image.width) * image.height);
+  const size_t n = out.values.size();
+  const std::uint8_t* px = image.rgba.data();
+  for (size_t i = 0; i < n; ++i, px += 4) {
+    out.values[i] = share[0][px[0]] + share[1][px[1]] + share[2][px[2]] + b;
+  }
 }
 
 struct Fvvdp::State {
@@ -123,9 +134,9 @@ struct Fvvdp::State {
   BandJudge judge;
   std::array<std::vector<float>, 2> filters;
   // The frames the temporal filters reach, oldest first (video mode).
-  std::vector<std::shared_ptr<const Map>> window_test, window_reference;
+  std::vector<std::shared_ptr<Map>> window_test, window_reference;
   // The first frame, held until a second one says the input is a video.
-  std::shared_ptr<const Map> first_test, first_reference;
+  std::shared_ptr<Map> first_test, first_reference;
   Vec2d first_gaze{};
   int frames = 0;
   std::vector<double> frame_q;                 // per frame
@@ -186,14 +197,27 @@ struct Fvvdp::State {
            frames - 1);
   }
 
-  void add(std::shared_ptr<const Map> t, std::shared_ptr<const Map> r, Vec2d gaze_px);
+  void add(std::shared_ptr<Map> t, std::shared_ptr<Map> r, Vec2d gaze_px);
 
-  void push(std::shared_ptr<const Map> test, std::shared_ptr<const Map> reference) {
-    window_test.erase(window_test.begin());
-    window_reference.erase(window_reference.begin());
+  void push(std::shared_ptr<Map> test, std::shared_ptr<Map> reference) {
+    for (auto* window : {&window_test, &window_reference}) {
+      // A frame that leaves the window lends its storage to a coming one.
+      std::shared_ptr<Map> leaving = std::move(window->front());
+      window->erase(window->begin());
+      if (leaving.use_count() == 1 && spare.size() < 2) spare.push_back(std::move(leaving));
+    }
     window_test.push_back(std::move(test));
     window_reference.push_back(std::move(reference));
   }
+
+  // A frame's storage: a spare one when there is one (no allocation, no page faults).
+  std::shared_ptr<Map> take_frame() {
+    if (spare.empty()) return std::make_shared<Map>();
+    std::shared_ptr<Map> m = std::move(spare.back());
+    spare.pop_back();
+    return m;
+  }
+  std::vector<std::shared_ptr<Map>> spare;
 };
 
 Fvvdp::Fvvdp(const Display& display, FvvdpOptions options, FvvdpParameters parameters) {
@@ -211,15 +235,20 @@ double Fvvdp::pixels_per_degree() const { return state_->judge.pixels_per_degree
 
 void Fvvdp::add(const Image& test, const Image& reference, Vec2d gaze_px) {
   const Photometry& p = state_->display.photometry;
-  state_->add(std::make_shared<const Map>(display_luminance(test, p)),
-              std::make_shared<const Map>(display_luminance(reference, p)), gaze_px);
+  std::shared_ptr<Map> t = state_->take_frame(), r = state_->take_frame();
+  display_luminance(test, p, *t);
+  display_luminance(reference, p, *r);
+  state_->add(std::move(t), std::move(r), gaze_px);
 }
 
 void Fvvdp::add_luminance(const Map& test, const Map& reference, Vec2d gaze_px) {
-  state_->add(std::make_shared<const Map>(test), std::make_shared<const Map>(reference), gaze_px);
+  std::shared_ptr<Map> t = state_->take_frame(), r = state_->take_frame();
+  *t = test;
+  *r = reference;
+  state_->add(std::move(t), std::move(r), gaze_px);
 }
 
-void Fvvdp::State::add(std::shared_ptr<const Map> t, std::shared_ptr<const Map> r, Vec2d gaze_px) {
+void Fvvdp::State::add(std::shared_ptr<Map> t, std::shared_ptr<Map> r, Vec2d gaze_px) {
   State& s = *this;
   const Map& test = *t;
   const Map& reference = *r;
@@ -325,6 +354,36 @@ Image fvvdp_heatmap_image(const Map& distortion, const Image& reference, double 
     o[3] = 255;
   }
   return out;
+}
+
+nlohmann::json to_json(const FvvdpResult& r) {
+  const auto finite_or_null = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  nlohmann::json bands = nlohmann::json::array();
+  for (const FvvdpBand& b : r.bands) {
+    bands.push_back({{"from_deg", b.from_deg},
+                     {"to_deg", finite_or_null(b.to_deg)},
+                     {"jod", finite_or_null(b.jod)},
+                     {"pixels_fraction", b.pixels_fraction}});
+  }
+  nlohmann::json frames = nlohmann::json::array();
+  for (double v : r.frame_jod) frames.push_back(finite_or_null(v));
+  return {{"metric", "FovVideoVDP v1.2 (parameters 1.2.3)"},
+          {"jod", finite_or_null(r.jod)},
+          {"frames", r.frames},
+          {"image", r.image},
+          {"fps", r.fps},
+          {"foveated", r.foveated},
+          {"pixels_per_degree", r.pixels_per_degree},
+          {"photometry",
+           {{"peak_cd_m2", r.photometry.peak_cd_m2},
+            {"contrast_ratio", r.photometry.contrast_ratio},
+            {"ambient_lux", r.photometry.ambient_lux},
+            {"reflectivity", r.photometry.reflectivity},
+            {"black_cd_m2", r.photometry.black_cd_m2()}}},
+          {"bands", bands},
+          {"frame_jod", frames}};
 }
 
 FvvdpResult fvvdp_image(const Image& test, const Image& reference, const Display& display,

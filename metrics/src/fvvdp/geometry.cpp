@@ -31,16 +31,15 @@ ViewGeometry::ViewGeometry(const Display& display, int levels)
     LevelGeometry g;
     g.width = w;
     g.height = h;
-    g.column_deg.resize(static_cast<size_t>(w));
-    g.row_deg.resize(static_cast<size_t>(h));
     for (int i = 0; i < w; ++i) {
       const double x = sample_position(i, w, display.width_px);
-      g.column_deg[static_cast<size_t>(i)] =
-          std::atan((x - principal_.x) / eye_distance_px_) * kDeg;
+      g.column_px.push_back(x);
+      g.column_deg.push_back(std::atan((x - principal_.x) / eye_distance_px_) * kDeg);
     }
     for (int j = 0; j < h; ++j) {
       const double y = sample_position(j, h, display.height_px);
-      g.row_deg[static_cast<size_t>(j)] = std::atan((y - principal_.y) / eye_distance_px_) * kDeg;
+      g.row_px.push_back(y);
+      g.row_deg.push_back(std::atan((y - principal_.y) / eye_distance_px_) * kDeg);
     }
     // A flat image seen from its normal has more pixels per degree away from
     // the principal point: (tan(e + delta) - tan(e)) / tan(delta) at angle e
@@ -83,6 +82,30 @@ void ViewGeometry::eccentricity(int l, Vec2d gaze_px, std::vector<float>& out) c
     for (int i = 0; i < g.width; ++i) {
       const double dx = g.column_deg[static_cast<size_t>(i)] - gx;
       row[i] = static_cast<float>(std::sqrt(dx * dx + dy * dy));
+    }
+  }
+}
+
+void ViewGeometry::bands(int l, Vec2d gaze_px, const std::vector<double>& edges_deg,
+                         std::vector<std::int8_t>& out, std::vector<double>& counts) const {
+  const LevelGeometry& g = level(l);
+  const double d = eye_distance_px_;
+  const double gx = gaze_px.x - principal_.x, gy = gaze_px.y - principal_.y;
+  const double g_norm = std::sqrt(gx * gx + gy * gy + d * d);
+  // The angle exceeds an edge where its cosine is below the edge's cosine.
+  std::vector<double> cos_edges;
+  for (double e : edges_deg) cos_edges.push_back(std::cos(e * kRad));
+  out.resize(static_cast<size_t>(g.width) * g.height);
+  for (int j = 0; j < g.height; ++j) {
+    const double py = g.row_px[static_cast<size_t>(j)] - principal_.y;
+    for (int i = 0; i < g.width; ++i) {
+      const double px = g.column_px[static_cast<size_t>(i)] - principal_.x;
+      const double c =
+          (px * gx + py * gy + d * d) / (std::sqrt(px * px + py * py + d * d) * g_norm);
+      int band = -1;
+      for (size_t e = 0; e < cos_edges.size() && c <= cos_edges[e]; ++e) band = static_cast<int>(e);
+      out[static_cast<size_t>(j) * g.width + i] = static_cast<std::int8_t>(band);
+      if (band >= 0) counts[static_cast<size_t>(band)] += 1.0;
     }
   }
 }

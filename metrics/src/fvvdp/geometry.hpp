@@ -17,6 +17,8 @@ namespace foveate::metrics::fvvdp {
 struct LevelGeometry {
   int width = 0;
   int height = 0;
+  std::vector<double> column_px;   ///< image x of each column
+  std::vector<double> row_px;      ///< image y of each row
   std::vector<double> column_deg;  ///< horizontal angle of each column from the principal point
   std::vector<double> row_deg;     ///< vertical angle of each row
   /// Local pixels per degree over the centre's, at every sample (row-major).
@@ -34,6 +36,12 @@ class ViewGeometry {
   /// Eccentricity in degrees of every sample of level `l` from the gaze: the
   /// distance of the horizontal and vertical angles (the reference's measure).
   void eccentricity(int l, Vec2d gaze_px, std::vector<float>& out) const;
+  /// The eccentricity band of every sample of level `l` by the exact angle
+  /// between the rays to the sample and to the gaze (Display::eccentricity_deg,
+  /// as the other metrics band pixels): the index of the last edge not above
+  /// it, -1 below the first. Adds each band's sample count to `counts`.
+  void bands(int l, Vec2d gaze_px, const std::vector<double>& edges_deg,
+             std::vector<std::int8_t>& out, std::vector<double>& counts) const;
 
  private:
   Display display_;

@@ -67,46 +67,53 @@ void sensitivity_from_column(const std::int32_t* lo, const float* frac, std::siz
   }
 }
 
-SamplePosition sample_position(const AxisPosition& rho, const AxisPosition& ecc) {
-  constexpr int n = SensitivityTable::kSize;
-  SamplePosition p;
-  p.offset = rho.lo * n + ecc.lo;
-  p.rho_step = static_cast<std::int16_t>((rho.hi - rho.lo) * n);
-  p.ecc_step = static_cast<std::int16_t>(ecc.hi - ecc.lo);
-  p.rho_frac = rho.frac;
-  p.ecc_frac = ecc.frac;
-  return p;
+void SamplePositions::resize(std::size_t n) {
+  offset.resize(n);
+  rho_step.resize(n);
+  ecc_step.resize(n);
+  rho_frac.resize(n);
+  ecc_frac.resize(n);
 }
 
-void sensitivity_per_sample(const std::int32_t* lo, const float* frac,
-                            const SamplePosition* positions, std::size_t n,
-                            const SensitivityTable* const* table, float* const* log_s, int tables) {
-  constexpr std::size_t slice = SensitivityTable::kSize * SensitivityTable::kSize;
-  const float* values0 = table[0]->values.data();
-  const float* values1 = tables > 1 ? table[1]->values.data() : nullptr;
-  for (std::size_t i = 0; i < n; ++i) {
-    const SamplePosition& p = positions[i];
-    const std::size_t base = static_cast<std::size_t>(lo[i]) * slice + p.offset;
-    const int dr = p.rho_step, de = p.ecc_step;
-    const float fr = p.rho_frac, fe = p.ecc_frac, fy = frac[i];
-    const auto bilinear = [&](const float* v) {
-      const float e0 = v[0] + (v[dr] - v[0]) * fr;
-      const float e1 = v[de] + (v[de + dr] - v[de]) * fr;
-      return e0 + (e1 - e0) * fe;
-    };
-    const auto trilinear = [&](const float* values) {
-      const float a = bilinear(values + base), b = bilinear(values + base + slice);
-      return a + (b - a) * fy;
-    };
-    log_s[0][i] = trilinear(values0);
-    if (values1) log_s[1][i] = trilinear(values1);
-  }
+void SamplePositions::set(std::size_t i, const AxisPosition& rho, const AxisPosition& ecc) {
+  constexpr int n = SensitivityTable::kSize;
+  offset[i] = rho.lo * n + ecc.lo;
+  rho_step[i] = (rho.hi - rho.lo) * n;
+  ecc_step[i] = ecc.hi - ecc.lo;
+  rho_frac[i] = rho.frac;
+  ecc_frac[i] = ecc.frac;
 }
 
 FOVEATE_CLONES
-void masked_difference(const float* test, const float* test_low, const float* reference,
-                       const float* reference_low, const float* background, const float* log_s,
-                       std::size_t n, const MaskingConstants& k, float* d_beta) {
+void sensitivity_per_sample(const std::int32_t* lo, const float* frac,
+                            const SamplePositions& positions, std::size_t n, const float* values,
+                            float* log_s) {
+  constexpr std::int32_t slice = SensitivityTable::kSize * SensitivityTable::kSize;
+  const std::int32_t* offset = positions.offset.data();
+  const std::int32_t* rho_step = positions.rho_step.data();
+  const std::int32_t* ecc_step = positions.ecc_step.data();
+  const float* rho_frac = positions.rho_frac.data();
+  const float* ecc_frac = positions.ecc_frac.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t b0 = lo[i] * slice + offset[i], b1 = b0 + slice;
+    const std::int32_t dr = rho_step[i], de = ecc_step[i];
+    const float fr = rho_frac[i], fe = ecc_frac[i];
+    const float a0 = values[b0] + (values[b0 + dr] - values[b0]) * fr;
+    const float a1 = values[b0 + de] + (values[b0 + de + dr] - values[b0 + de]) * fr;
+    const float c0 = values[b1] + (values[b1 + dr] - values[b1]) * fr;
+    const float c1 = values[b1 + de] + (values[b1 + de + dr] - values[b1 + de]) * fr;
+    const float a = a0 + (a1 - a0) * fe, c = c0 + (c1 - c0) * fe;
+    log_s[i] = a + (c - a) * frac[i];
+  }
+}
+
+namespace {
+
+FOVEATE_CLONES
+void masked_difference_block(const float* test, const float* test_low, const float* reference,
+                             const float* reference_low, const float* background,
+                             const float* log_s, std::size_t n, const MaskingConstants& k,
+                             float* d_beta) {
   const float gain = k.band_gain, log2_k = k.log2_k, p = k.p, q = k.q, beta = k.beta;
   const float d_max = k.log2_d_max;
   for (std::size_t i = 0; i < n; ++i) {
@@ -118,6 +125,31 @@ void masked_difference(const float* test, const float* test_low, const float* re
     const float l_mask = log_s[i] + log2_k + fast_log2(std::min(std::abs(ct), std::abs(cr)));
     const float l_d = std::min(p * l_diff - fast_log2(1.0f + fast_exp2(q * l_mask)), d_max);
     d_beta[i] = fast_exp2(beta * l_d);
+  }
+}
+
+}  // namespace
+
+void masked_difference(const float* test, const float* test_low, const float* reference,
+                       const float* reference_low, const float* background, const float* log_s,
+                       const std::int8_t* ecc_band, std::size_t n, const MaskingConstants& k,
+                       PooledDifference& pooled, float* d_beta) {
+  // Blocks that stay in the L1 cache between computing and pooling.
+  constexpr std::size_t kBlock = 1024;
+  float block[kBlock];
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t count = std::min(kBlock, n - begin);
+    float* out = d_beta ? d_beta + begin : block;
+    masked_difference_block(test + begin, test_low + begin, reference + begin,
+                            reference_low + begin, background + begin, log_s + begin, count, k,
+                            out);
+    double all = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+      all += out[i];
+      const int e = ecc_band[begin + i];
+      if (e >= 0) pooled.by_ecc_band[static_cast<std::size_t>(e)] += out[i];
+    }
+    pooled.all += all;
   }
 }
 

@@ -4,6 +4,7 @@
 // picks at run time).
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "fvvdp/csf.hpp"
 
@@ -27,24 +28,22 @@ void luminance_positions(const float* background, std::size_t n, const Sensitivi
 void sensitivity_from_column(const std::int32_t* lo, const float* frac, std::size_t n,
                              const float* column, float* log_s);
 
-/// A sample's place in the table along frequency and eccentricity: the
-/// offset of its lower corner within a luminance slice, the strides to the
-/// upper nodes (0 where a query sits on the table's edge) and the fractions.
-struct SamplePosition {
-  std::int32_t offset = 0;
-  std::int16_t rho_step = 0;
-  std::int16_t ecc_step = 0;
-  float rho_frac = 0;
-  float ecc_frac = 0;
+/// Every sample's place in the table along frequency and eccentricity (one
+/// array per field, so that the lookup vectorises): the offset of its lower
+/// corner within a luminance slice, the strides to the upper nodes (0 where a
+/// query sits on the table's edge) and the fractions.
+struct SamplePositions {
+  std::vector<std::int32_t> offset, rho_step, ecc_step;
+  std::vector<float> rho_frac, ecc_frac;
+  void resize(std::size_t n);
+  void set(std::size_t i, const AxisPosition& rho, const AxisPosition& ecc);
 };
-SamplePosition sample_position(const AxisPosition& rho, const AxisPosition& ecc);
 
 /// log2 sensitivity with each sample's own frequency and eccentricity
-/// (trilinear interpolation of the table), for `tables` tables at once
-/// (the temporal channels share the positions).
+/// (trilinear interpolation of the table's values).
 void sensitivity_per_sample(const std::int32_t* lo, const float* frac,
-                            const SamplePosition* positions, std::size_t n,
-                            const SensitivityTable* const* table, float* const* log_s, int tables);
+                            const SamplePositions& positions, std::size_t n, const float* values,
+                            float* log_s);
 
 struct MaskingConstants {
   float band_gain;   ///< 1 for the finest band, 2 for the others (the reference's scaling)
@@ -54,11 +53,20 @@ struct MaskingConstants {
   float log2_d_max;  ///< differences are clamped at 1e4
 };
 
-/// D^beta per sample: Weber contrasts of test and reference against the
-/// adapting luminance, normalised by the sensitivity, through the masking
-/// model D = |T - R|^p / (1 + (k min(|T|, |R|))^q).
+/// Sums of D^beta over a band's samples: all of them and per eccentricity band.
+struct PooledDifference {
+  double all = 0.0;
+  std::vector<double> by_ecc_band;  ///< sized by the caller
+};
+
+/// D^beta per sample, pooled: Weber contrasts of test and reference against
+/// the adapting luminance, normalised by the sensitivity, through the masking
+/// model D = |T - R|^p / (1 + (k min(|T|, |R|))^q), summed over all samples and
+/// per eccentricity band (ecc_band[i]: the band's index, or -1 for none).
+/// `d_beta`, when not null, receives every sample's value.
 void masked_difference(const float* test, const float* test_low, const float* reference,
                        const float* reference_low, const float* background, const float* log_s,
-                       std::size_t n, const MaskingConstants& k, float* d_beta);
+                       const std::int8_t* ecc_band, std::size_t n, const MaskingConstants& k,
+                       PooledDifference& pooled, float* d_beta);
 
 }  // namespace foveate::metrics::fvvdp

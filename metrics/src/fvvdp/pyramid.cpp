@@ -62,8 +62,12 @@ void reduce(const Map& in, Map& out, Map& rows) {
   for (int i = 0; i < oh; ++i) {
     const Taps t = reduce_taps(i, h, h);
     float* dst = &rows.values[static_cast<size_t>(i) * w];
-    std::fill(dst, dst + w, 0.0f);
-    for (int k = 0; k < t.count; ++k) {
+    {
+      const float* src = &in.values[static_cast<size_t>(t.index[0]) * w];
+      const float w0 = t.weight[0];
+      for (int x = 0; x < w; ++x) dst[x] = w0 * src[x];
+    }
+    for (int k = 1; k < t.count; ++k) {
       const float* src = &in.values[static_cast<size_t>(t.index[k]) * w];
       const float wk = t.weight[k];
       for (int x = 0; x < w; ++x) dst[x] += wk * src[x];

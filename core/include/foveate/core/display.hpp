@@ -8,6 +8,7 @@
 // eye may instead be described by its four edge angles (asymmetric field of
 // view, as OpenXR's XrFovf): then the eye's optical axis meets the image at the
 // principal point, not at the centre, and every angle is taken from there.
+#include <functional>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
@@ -52,8 +53,10 @@ struct Photometry {
   [[nodiscard]] double luminance_cd_m2(double linear) const {
     return (peak_cd_m2 - black_cd_m2()) * linear + black_cd_m2();
   }
-  /// Throws foveate::Error naming the field (prefixed by `where`).
+  /// Throws foveate::Error naming the field ("where.peak_cd_m2: ...").
   void validate(const std::string& where) const;
+  /// The same with the names `name(key)` gives the fields (a command line's flags).
+  void validate(const std::function<std::string(const char* key)>& name) const;
 };
 
 struct Display {

@@ -14,6 +14,7 @@
 // window, not by the length of the sequence.
 #include <limits>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <vector>
 
 #include "foveate/core/display.hpp"
@@ -121,6 +122,12 @@ class Fvvdp {
   std::unique_ptr<State> state_;
 };
 
+/// The result as JSON: "metric" (name and version), "jod", "frames", "image",
+/// "fps", "foveated", "pixels_per_degree", "photometry" (with the derived
+/// "black_cd_m2"), "bands" ("from_deg", "to_deg" (null: infinity), "jod" (null:
+/// empty), "pixels_fraction") and "frame_jod". The heat maps are not included.
+nlohmann::json to_json(const FvvdpResult& result);
+
 /// One image pair (judged as an image).
 FvvdpResult fvvdp_image(const Image& test, const Image& reference, const Display& display,
                         Vec2d gaze_px, const FvvdpOptions& options = {});
@@ -128,6 +135,8 @@ FvvdpResult fvvdp_image(const Image& test, const Image& reference, const Display
 /// Luminance in cd/m^2 of every pixel of an sRGB image on the display: Y of
 /// linear sRGB (Rec. 709 primaries) through Photometry.
 Map display_luminance(const Image& image, const Photometry& photometry);
+/// The same into `out`, reusing its storage.
+void display_luminance(const Image& image, const Photometry& photometry, Map& out);
 
 /// The metric's mapping from a pooled difference Q to JOD (eq. 19 of the
 /// paper): 10 - (|a|^(1/b) Q)^b, b = 10^log_jod_exp.
