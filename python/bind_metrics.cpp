@@ -8,6 +8,7 @@
 
 #include "convert.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/metrics/fvvdp.hpp"
 #include "foveate/metrics/metrics.hpp"
 
 namespace foveate::python {
@@ -42,9 +43,87 @@ metrics::QualityOptions quality_options(const AcuityModel& acuity, bool flip,
   return o;
 }
 
+// The frames of an image (HxWxC) or a sequence (FxHxWxC) array.
+std::vector<Image> frames_of(py::handle array, const std::string& what) {
+  const auto a = py::array::ensure(array);
+  if (!a) throw py::type_error(what + ": expected a numpy array");
+  if (a.ndim() == 3) return {image_from_array(a, what)};
+  if (a.ndim() != 4) {
+    throw py::value_error(what + ": expected HxWx3 or HxWx4 (an image) or FxHxWx3 or FxHxWx4 "
+                                 "(a sequence), got " + std::to_string(a.ndim()) + " dimensions");
+  }
+  std::vector<Image> out;
+  for (py::ssize_t f = 0; f < a.shape(0); ++f) {
+    out.push_back(image_from_array(a[py::int_(f)], what + "[" + std::to_string(f) + "]"));
+  }
+  return out;
+}
+
+py::dict fvvdp(py::handle test, py::handle reference, py::handle display, py::handle gaze,
+               double fps, bool foveated, bool heatmap, std::vector<double> band_edges_deg) {
+  const std::vector<Image> tests = frames_of(test, "test"), refs = frames_of(reference, "reference");
+  if (tests.size() != refs.size()) {
+    throw py::value_error("test has " + std::to_string(tests.size()) + " frames, reference " +
+                          std::to_string(refs.size()));
+  }
+  const Image& first = refs[0];
+  for (size_t f = 0; f < tests.size(); ++f) {
+    for (const Image* img : {&tests[f], &refs[f]}) {
+      if (img->width != first.width || img->height != first.height) {
+        throw py::value_error("frame " + std::to_string(f) + ": shape (" +
+                              std::to_string(img->height) + ", " + std::to_string(img->width) +
+                              ") differs from the reference's first frame's (" +
+                              std::to_string(first.height) + ", " + std::to_string(first.width) +
+                              ")");
+      }
+    }
+  }
+  // The gaze: None (the centre), one point, or one point per frame.
+  std::vector<Vec2d> gazes;
+  const Vec2d centre{first.width / 2.0, first.height / 2.0};
+  const auto points = py::array::ensure(gaze);
+  if (!gaze.is_none() && points && points.ndim() == 2) {
+    if (static_cast<size_t>(points.shape(0)) != tests.size() || points.shape(1) != 2) {
+      throw py::value_error("gaze: expected (x, y) or an array of shape (" +
+                            std::to_string(tests.size()) + ", 2), one point per frame");
+    }
+    for (py::ssize_t f = 0; f < points.shape(0); ++f) {
+      gazes.push_back(point_from(points[py::int_(f)], "gaze[" + std::to_string(f) + "]"));
+    }
+  } else {
+    gazes.assign(tests.size(), point_from(gaze, "gaze", centre));
+  }
+  metrics::FvvdpOptions o;
+  o.fps = fps;
+  o.foveated = foveated;
+  o.heatmap = heatmap;
+  o.band_edges_deg = std::move(band_edges_deg);
+  metrics::Fvvdp metric(display_from(display, first.width, first.height), o);
+  for (size_t f = 0; f < tests.size(); ++f) metric.add(tests[f], refs[f], gazes[f]);
+  const metrics::FvvdpResult r = metric.result();
+  py::dict out = to_python(metrics::to_json(r));
+  if (heatmap) {
+    out["heatmap"] = map_to_array(r.heatmap);
+    out["worst_heatmap"] = map_to_array(r.worst_heatmap);
+    out["worst_frame"] = r.worst_frame;
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_metrics(py::module_& m) {
+  m.def("fvvdp", &fvvdp, py::arg("test"), py::arg("reference"),
+        py::arg("display") = "desktop-1080p", py::arg("gaze") = py::none(),
+        py::arg("fps") = 60.0, py::arg("foveated") = true, py::arg("heatmap") = false,
+        py::arg("band_edges_deg") = std::vector<double>{0, 5, 10, 20},
+        "FovVideoVDP (Mantiuk et al. 2021, v1.2): how visible test's difference from reference "
+        "is, in JOD (10 = none; 1 JOD apart = 75 % prefer the higher). test and reference: "
+        "HxWx3/4 images or FxHxWx3/4 sequences (uint8 sRGB or float 0..1); display: a Display "
+        "or preset name (its photometry and field of view, resized to the frames); gaze: None "
+        "(centre), (x, y) in pixels, or an (F, 2) array per frame; fps: the sequence's frame "
+        "rate. Returns a dict: 'jod', 'bands' (JOD per eccentricity band), 'frame_jod', "
+        "'photometry', ... and with heatmap=True the distortion maps (HxW float32, JOD).");
   m.def(
       "mse",
       [](py::handle r, py::handle t) {

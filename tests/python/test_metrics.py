@@ -102,3 +102,36 @@ def test_bad_arrays_raise_clear_errors(fv):
         fv.compare(img, img, gaze=(1, 2, 3))
     with pytest.raises(fv.Error, match="nope"):
         fv.compare(img, img, display="nope")
+
+
+def test_fvvdp_images_and_sequences(fv):
+    # FovVideoVDP: 10 JOD for identical inputs, lower with noise, lower still
+    # where the viewer looks at the noise; sequences as FxHxWxC.
+    ref = texture(96, 160)
+    assert fv.fvvdp(ref, ref)["jod"] == 10.0
+    rng = np.random.default_rng(5)
+    noisy = np.clip(ref.astype(np.int16) + rng.integers(-12, 13, ref.shape), 0, 255).astype(np.uint8)
+    r = fv.fvvdp(noisy, ref, display="desktop-1080p")
+    assert 0 < r["jod"] < 10 and r["image"] and r["frames"] == 1
+    assert r["photometry"]["peak_cd_m2"] == 200 and len(r["bands"]) == 4
+    half = ref.copy()
+    half[:, 80:] = noisy[:, 80:]
+    on = fv.fvvdp(half, ref, gaze=(140, 48))["jod"]
+    away = fv.fvvdp(half, ref, gaze=(5, 48))["jod"]
+    assert on < away
+    seq_ref = np.stack([np.roll(ref, i, axis=1) for i in range(5)])
+    seq_test = np.stack([np.roll(noisy, i, axis=1) for i in range(5)])
+    s = fv.fvvdp(seq_test, seq_ref, fps=30, gaze=np.array([[80.0, 48.0]] * 5), heatmap=True)
+    assert not s["image"] and s["frames"] == 5 and s["fps"] == 30 and len(s["frame_jod"]) == 5
+    assert s["heatmap"].shape == (96, 160) and s["heatmap"].dtype == np.float32
+    assert fv.fvvdp(seq_ref, seq_ref)["jod"] == 10.0
+
+
+def test_fvvdp_errors_name_the_input(fv):
+    ref = texture(48, 64)
+    with pytest.raises(ValueError, match="2 frames, reference 1"):
+        fv.fvvdp(np.stack([ref, ref]), ref)
+    with pytest.raises(ValueError, match="one point per frame"):
+        fv.fvvdp(np.stack([ref, ref]), np.stack([ref, ref]), gaze=np.zeros((3, 2)))
+    with pytest.raises(fv.Error, match="fvvdp.fps"):
+        fv.fvvdp(np.stack([ref, ref]), np.stack([ref, ref]), fps=0)
