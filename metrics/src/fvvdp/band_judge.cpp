@@ -142,11 +142,11 @@ void BandJudge::judge_band(int band, const std::vector<const Map*>& fine,
   // log2 sensitivity of every sample for each temporal channel's table.
   for (int cc = 0; cc < temporal_channels; ++cc) s.log_s[static_cast<size_t>(cc)].resize(n);
   if (options_.foveated) {
-    for (int cc = 0; cc < temporal_channels; ++cc) {
-      sensitivity_per_sample(
-          s.luminance_lo.data(), s.luminance_frac.data(), s.positions[static_cast<size_t>(band)], n,
-          tables_[static_cast<size_t>(cc)]->values.data(), s.log_s[static_cast<size_t>(cc)].data());
-    }
+    const bool both = temporal_channels > 1;
+    sensitivity_per_sample(s.luminance_lo.data(), s.luminance_frac.data(),
+                           s.positions[static_cast<size_t>(band)], n, tables_[0]->values.data(),
+                           both ? tables_[1]->values.data() : nullptr, s.log_s[0].data(),
+                           both ? s.log_s[1].data() : nullptr);
   } else {
     for (int cc = 0; cc < temporal_channels; ++cc) {
       // Frequency and eccentricity are the same everywhere: interpolate the

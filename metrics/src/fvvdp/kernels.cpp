@@ -84,10 +84,9 @@ void SamplePositions::set(std::size_t i, const AxisPosition& rho, const AxisPosi
   ecc_frac[i] = ecc.frac;
 }
 
-FOVEATE_CLONES
 void sensitivity_per_sample(const std::int32_t* lo, const float* frac,
-                            const SamplePositions& positions, std::size_t n, const float* values,
-                            float* log_s) {
+                            const SamplePositions& positions, std::size_t n, const float* values0,
+                            const float* values1, float* log_s0, float* log_s1) {
   constexpr std::int32_t slice = SensitivityTable::kSize * SensitivityTable::kSize;
   const std::int32_t* offset = positions.offset.data();
   const std::int32_t* rho_step = positions.rho_step.data();
@@ -97,13 +96,17 @@ void sensitivity_per_sample(const std::int32_t* lo, const float* frac,
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t b0 = lo[i] * slice + offset[i], b1 = b0 + slice;
     const std::int32_t dr = rho_step[i], de = ecc_step[i];
-    const float fr = rho_frac[i], fe = ecc_frac[i];
-    const float a0 = values[b0] + (values[b0 + dr] - values[b0]) * fr;
-    const float a1 = values[b0 + de] + (values[b0 + de + dr] - values[b0 + de]) * fr;
-    const float c0 = values[b1] + (values[b1 + dr] - values[b1]) * fr;
-    const float c1 = values[b1 + de] + (values[b1 + de + dr] - values[b1 + de]) * fr;
-    const float a = a0 + (a1 - a0) * fe, c = c0 + (c1 - c0) * fe;
-    log_s[i] = a + (c - a) * frac[i];
+    const float fr = rho_frac[i], fe = ecc_frac[i], fy = frac[i];
+    const auto trilinear = [&](const float* v) {
+      const float a0 = v[b0] + (v[b0 + dr] - v[b0]) * fr;
+      const float a1 = v[b0 + de] + (v[b0 + de + dr] - v[b0 + de]) * fr;
+      const float c0 = v[b1] + (v[b1 + dr] - v[b1]) * fr;
+      const float c1 = v[b1 + de] + (v[b1 + de + dr] - v[b1 + de]) * fr;
+      const float a = a0 + (a1 - a0) * fe, c = c0 + (c1 - c0) * fe;
+      return a + (c - a) * fy;
+    };
+    log_s0[i] = trilinear(values0);
+    if (values1) log_s1[i] = trilinear(values1);
   }
 }
 

@@ -40,10 +40,11 @@ struct SamplePositions {
 };
 
 /// log2 sensitivity with each sample's own frequency and eccentricity
-/// (trilinear interpolation of the table's values).
+/// (trilinear interpolation of the tables' values), for one or two tables
+/// (the temporal channels share the positions); `values1` may be null.
 void sensitivity_per_sample(const std::int32_t* lo, const float* frac,
-                            const SamplePositions& positions, std::size_t n, const float* values,
-                            float* log_s);
+                            const SamplePositions& positions, std::size_t n, const float* values0,
+                            const float* values1, float* log_s0, float* log_s1);
 
 struct MaskingConstants {
   float band_gain;   ///< 1 for the finest band, 2 for the others (the reference's scaling)
