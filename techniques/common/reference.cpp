@@ -1,5 +1,7 @@
 #include "foveate/techniques/reference.hpp"
 
+#include <cmath>
+
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/gpu/frame.hpp"

@@ -2,6 +2,8 @@
 // the library, parameters resolved and checked from their declarations.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "bars_technique.hpp"
 #include "errors.hpp"
 #include "foveate/techniques/reference.hpp"

@@ -17,8 +17,8 @@
 
 #include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
+#include "foveate/core/gaze_state.hpp"
 #include "foveate/core/models.hpp"
-#include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
 
