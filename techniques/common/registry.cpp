@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "foveate/core/error.hpp"
-#include "kit.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate {
 
@@ -217,7 +217,7 @@ void check_scene(const TechniqueInfo& info, const SceneInfo& scene) {
 }
 
 struct OverlayRenderer::Impl {
-  tech::Kit kit;
+  tech::PassKit kit;
 };
 
 OverlayRenderer::OverlayRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -225,7 +225,7 @@ OverlayRenderer::~OverlayRenderer() = default;
 
 void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes,
                            const gpu::RenderTarget& target) {
-  tech::Kit& kit = impl_->kit;
+  tech::PassKit& kit = impl_->kit;
   const gpu::Program& p = kit.fullscreen("common/overlay.frag");
   const int n = static_cast<int>(std::min<size_t>(shapes.size(), 32));
   const int height = target.height();

@@ -43,8 +43,8 @@
 #include <optional>
 #include <tuple>
 
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -409,7 +409,7 @@ class LogPolar final : public Technique {
   double fovea_deg_, history_;
   KernelLogPolar model_;
   KernelPlan plan_;
-  Kit kit_;
+  PassKit kit_;
   gpu::RenderTarget buffer_, fovea_;
   gpu::RenderTarget blurred_;  // the shown buffer with the second level's Gaussian
   std::array<gpu::RenderTarget, 2> history_targets_;

@@ -1,4 +1,4 @@
-#include "regions.hpp"
+#include "foveate/techniques/depth_regions.hpp"
 
 #include <algorithm>
 

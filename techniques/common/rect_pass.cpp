@@ -1,4 +1,4 @@
-#include "rects.hpp"
+#include "foveate/techniques/rect_pass.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,17 +1,22 @@
 #pragma once
-// Shared machinery of the techniques: one shader compiler over every module's
-// embedded GLSL, passes with explicit state into explicit targets, shading
-// passes that evaluate a scene's shading function at positions given by a
-// mapping, and fragment counting with occlusion queries.
+// The pass machinery every technique renders with, the built-in ones and
+// those written outside the library: one shader compiler over every module's
+// embedded GLSL (and the technique's own), passes with explicit state into
+// explicit targets, shading passes that evaluate a scene's shading function
+// at positions given by a mapping, and fragment counting with occlusion
+// queries. Each pass is timed (gpu::ProfileScope) under its fragment file's
+// stem: the names TechniqueInfo::resolve_passes lists.
 #include <functional>
 #include <map>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
+#include "foveate/techniques/depth_regions.hpp"
+#include "foveate/techniques/rect_pass.hpp"
 #include "foveate/techniques/technique.hpp"
-#include "rects.hpp"
-#include "regions.hpp"
 
 namespace foveate::tech {
 
@@ -19,9 +24,11 @@ namespace foveate::tech {
 using SetUniforms = std::function<void(const gpu::Program&, gpu::Samplers&)>;
 
 /// Compiler over gpu, scenes and techniques GLSL; a full-screen triangle VAO.
-class Kit {
+class PassKit {
  public:
-  Kit();
+  /// `shaders`: GLSL files of a technique outside the library (its own
+  /// fragment shaders and includes), found by name beside the library's.
+  explicit PassKit(std::vector<std::span<const embedded::EmbeddedFile>> shaders = {});
   [[nodiscard]] const gpu::ShaderCompiler& compiler() const { return compiler_; }
   /// A program of fullscreen.vert + `fragment` (embedded name), cached.
   const gpu::Program& fullscreen(const std::string& fragment);
@@ -95,6 +102,7 @@ class Kit {
   void draw_triangle(const gpu::Program& program) const;
   /// What a program's passes are timed as (gpu::ProfileScope).
   [[nodiscard]] const char* pass_name(const gpu::Program& program) const;
+  std::vector<std::span<const embedded::EmbeddedFile>> shaders_;  ///< the technique's own
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
   gpu::Query query_;

@@ -1,4 +1,4 @@
-#include "kit.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 #include <algorithm>
 
@@ -17,19 +17,29 @@ std::string pass_name_of(const std::string& file) {
   const size_t dot = stem.find('.');
   return dot == std::string::npos ? stem : stem.substr(0, dot);
 }
+
+// The tables a PassKit compiles from: the library's technique and scene GLSL,
+// then the technique's own.
+std::vector<std::span<const embedded::EmbeddedFile>> with_library(
+    std::vector<std::span<const embedded::EmbeddedFile>> tables) {
+  tables.insert(tables.begin(), {embedded::techniques_shaders(), scene_shader_files()});
+  return tables;
+}
+
 }  // namespace
 
-Kit::Kit()
-    : compiler_({embedded::techniques_shaders(), scene_shader_files()}),
+PassKit::PassKit(std::vector<std::span<const embedded::EmbeddedFile>> shaders)
+    : shaders_(std::move(shaders)),
+      compiler_(with_library(shaders_)),
       vao_(gpu::VertexArray::create()),
       query_(gpu::Query::create(GL_SAMPLES_PASSED)) {}
 
-const gpu::Program& Kit::fullscreen(const std::string& fragment) {
+const gpu::Program& PassKit::fullscreen(const std::string& fragment) {
   return built(fragment, "fullscreen.vert", fragment);
 }
 
-const gpu::Program& Kit::built(const std::string& key, const std::string& vertex,
-                               const std::string& fragment) {
+const gpu::Program& PassKit::built(const std::string& key, const std::string& vertex,
+                                   const std::string& fragment) {
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   const gpu::Program& p = programs_.emplace(key, compiler_.build(vertex, fragment)).first->second;
@@ -37,20 +47,21 @@ const gpu::Program& Kit::built(const std::string& key, const std::string& vertex
   return p;
 }
 
-const gpu::Program& Kit::shading(const Scene& scene, const std::string& mapping, bool early,
-                                 int samples) {
+const gpu::Program& PassKit::shading(const Scene& scene, const std::string& mapping, bool early,
+                                     int samples) {
   if (samples > 1)
     return scene_program_with(scene, mapping, "common/shade_main_msaa.frag", samples);
   return scene_program_with(scene, mapping,
                             early ? "common/shade_main_early.frag" : "common/shade_main.frag");
 }
 
-const gpu::Program& Kit::scene_program(const Scene& scene, const std::string& main, int samples) {
+const gpu::Program& PassKit::scene_program(const Scene& scene, const std::string& main,
+                                           int samples) {
   return scene_program_with(scene, "", main, samples);
 }
 
-const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::string& before,
-                                            const std::string& main, int samples) {
+const gpu::Program& PassKit::scene_program_with(const Scene& scene, const std::string& before,
+                                                const std::string& main, int samples) {
   const std::string key =
       scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples);
   auto it = programs_.find(key);
@@ -63,8 +74,7 @@ const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::strin
   }
   pieces.push_back({main, {}});
   auto tables = scene.shader_files();
-  tables.push_back(embedded::techniques_shaders());
-  tables.push_back(scene_shader_files());
+  for (const auto& t : with_library(shaders_)) tables.push_back(t);
   const gpu::ShaderCompiler c(tables);
   gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
                             gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
@@ -74,19 +84,19 @@ const gpu::Program& Kit::scene_program_with(const Scene& scene, const std::strin
   return stored;
 }
 
-void Kit::draw_triangle(const gpu::Program& program) const {
+void PassKit::draw_triangle(const gpu::Program& program) const {
   program.use();
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-const char* Kit::pass_name(const gpu::Program& program) const {
+const char* PassKit::pass_name(const gpu::Program& program) const {
   const auto it = pass_names_.find(program.id());
   return it == pass_names_.end() ? "pass" : it->second.c_str();
 }
 
-void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
-               const gpu::PassState& state, const SetUniforms& set) {
+void PassKit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
+                   const gpu::PassState& state, const SetUniforms& set) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::Samplers samplers;
   if (set) set(program, samplers);
@@ -95,9 +105,9 @@ void Kit::pass(const gpu::Program& program, const gpu::RenderTarget& target,
   draw_triangle(program);
 }
 
-void Kit::pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner,
-                           double outer, const std::string& inside, const std::string& band,
-                           const std::string& outside, const SetUniforms& set) {
+void PassKit::pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner,
+                               double outer, const std::string& inside, const std::string& band,
+                               const std::string& outside, const SetUniforms& set) {
   if (!DepthRegions::usable(target)) {
     pass(fullscreen(band), target, {}, set);
     return;
@@ -116,39 +126,39 @@ void Kit::pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double
   regions_.rest(out);
 }
 
-const gpu::Program& Kit::over_rects(const std::string& fragment) {
+const gpu::Program& PassKit::over_rects(const std::string& fragment) {
   return built("rects|" + fragment, "common/rects.vert", fragment);
 }
 
-const gpu::Program& Kit::over_regions(const std::string& fragment) {
+const gpu::Program& PassKit::over_regions(const std::string& fragment) {
   return built("regions|" + fragment, "common/region.vert", fragment);
 }
 
-void Kit::rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
-                    const gpu::RenderTarget& target, const gpu::PassState& state,
-                    const SetUniforms& set) {
+void PassKit::rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                        const gpu::RenderTarget& target, const gpu::PassState& state,
+                        const SetUniforms& set) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::Samplers samplers;
   if (set) set(program, samplers);
   rect_pass_.draw(program, rects, target, state);
 }
 
-void Kit::rect_pass_in_bound(const gpu::Program& program, const std::vector<PixelRect>& rects,
-                             int width, int height, const gpu::PassState& state) {
+void PassKit::rect_pass_in_bound(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                                 int width, int height, const gpu::PassState& state) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::apply(state);
   rect_pass_.draw(program, rects, width, height);
 }
 
-void Kit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state) {
+void PassKit::pass_in_bound(const gpu::Program& program, const gpu::PassState& state) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::apply(state);
   draw_triangle(program);
 }
 
-void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program,
-                     const gpu::RenderTarget& target, const gpu::PassState& state,
-                     const SetUniforms& set, const std::vector<PixelRect>* cover) {
+void PassKit::scene_pass(Scene& scene, const View& view, const gpu::Program& program,
+                         const gpu::RenderTarget& target, const gpu::PassState& state,
+                         const SetUniforms& set, const std::vector<PixelRect>* cover) {
   const gpu::ProfileScope timed(pass_name(program));
   gpu::Samplers samplers;
   scene.bind(program, view, samplers);
@@ -176,9 +186,10 @@ void Kit::scene_pass(Scene& scene, const View& view, const gpu::Program& program
   gpu::apply(state);
 }
 
-double Kit::shade(Scene& scene, const View& view, const std::string& mapping,
-                  const gpu::RenderTarget& target, const SetUniforms& set,
-                  const gpu::PassState& state, bool early, const std::vector<PixelRect>* cover) {
+double PassKit::shade(Scene& scene, const View& view, const std::string& mapping,
+                      const gpu::RenderTarget& target, const SetUniforms& set,
+                      const gpu::PassState& state, bool early,
+                      const std::vector<PixelRect>* cover) {
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
   const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, query_.id());
