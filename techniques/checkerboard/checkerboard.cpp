@@ -295,6 +295,8 @@ TechniqueInfo checkerboard_info() {
             "after it",
             "", ParamType::Real, 0.0, 1.0, 0.2),
   };
+  t.resolve_passes = {"reconstruct_down", "reconstruct_h", "reconstruct", "reconstruct_fovea",
+                      "reconstruct_outer"};
   t.make = construct<Checkerboard>();
   return t;
 }

@@ -19,7 +19,8 @@ std::string number(double v) {
   return buf;
 }
 
-const char* type_name(ParamType t) {
+// What a value of the type must be, for errors.
+const char* type_requirement(ParamType t) {
   switch (t) {
     case ParamType::Integer:
       return "a whole number";
@@ -98,7 +99,24 @@ int ParamValues::integer(std::string_view key) const {
 
 bool ParamValues::boolean(std::string_view key) const { return real(key) != 0.0; }
 
+const char* param_type_name(ParamType t) {
+  switch (t) {
+    case ParamType::Integer:
+      return "integer";
+    case ParamType::Boolean:
+      return "boolean";
+    default:
+      return "real";
+  }
+}
+
 const std::vector<TechniqueInfo>& techniques() { return registry().all; }
+
+std::vector<std::string> technique_names() {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
+  return names;
+}
 
 void register_technique(TechniqueInfo info) {
   validate_declaration(info);
@@ -128,7 +146,7 @@ void check_value(const TechniqueInfo& info, const ParamDecl& p, double x) {
                 (p.unit.empty() ? "" : " " + p.unit));
   }
   if (p.type != ParamType::Real && x != std::floor(x))
-    throw Error(what + ": must be " + type_name(p.type));
+    throw Error(what + ": must be " + type_requirement(p.type));
 }
 
 }  // namespace

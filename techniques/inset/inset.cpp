@@ -165,6 +165,7 @@ TechniqueInfo inset_info() {
       param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
             ParamType::Real, 0.0, 4.0, 1.0),
   };
+  t.resolve_passes = {"blur", "upscale", "composite"};
   t.make = construct<Inset>();
   return t;
 }

@@ -556,6 +556,8 @@ TechniqueInfo layered_info() {
             "", ParamType::Integer, 0, 2, 0),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
+  t.resolve_passes = {"temporal", "temporal_reproject", "copy",
+                      "warp",     "composite",          "composite_inner"};
   t.make = construct<Layered>();
   return t;
 }

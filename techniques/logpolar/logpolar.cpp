@@ -464,6 +464,8 @@ TechniqueInfo logpolar_info() {
             "supersampled reference it adds more acuity error than it removes (docs/fidelity.md)",
             "", ParamType::Real, 0.0, 0.95, 0.0),
   };
+  t.resolve_passes = {"temporal", "temporal_reproject", "blur",
+                      "inverse",  "inverse_fovea",      "inverse_outer"};
   t.make = construct<LogPolar>();
   return t;
 }

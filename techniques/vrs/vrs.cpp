@@ -534,6 +534,7 @@ TechniqueInfo vrs_info() {
                            "fragments made from a full-resolution frame (as slow as native; "
                            "to test and judge that path without the GPU)",
                            "", ParamType::Boolean, 0, 1, 0));
+  t.resolve_passes = {"hardware_reconstruct", "reconstruct", "reconstruct_copy"};
   t.make = construct<Vrs>();
   return t;
 }
