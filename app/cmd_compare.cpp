@@ -15,6 +15,7 @@
 #include "foveate/core/parse.hpp"
 #include "foveate/metrics/metrics.hpp"
 #include "progress.hpp"
+#include "session_args.hpp"
 
 namespace foveate::app {
 
@@ -42,10 +43,10 @@ struct CompareArgs {
 std::string db(double v) {
   if (std::isinf(v)) return "inf";
   if (std::isnan(v)) return "-";
-  return fmt(v, 2);
+  return format_fixed(v, 2);
 }
 
-std::string num(double v, int digits) { return std::isfinite(v) ? fmt(v, digits) : "-"; }
+std::string num(double v, int digits) { return std::isfinite(v) ? format_fixed(v, digits) : "-"; }
 
 void run_compare(const CompareArgs& a) {
   const Image ref = read_image(a.reference);
@@ -76,7 +77,7 @@ void run_compare(const CompareArgs& a) {
                 std::to_string(ref.height) + " images (pixels 0.." + std::to_string(ref.width - 1) +
                 ", 0.." + std::to_string(ref.height - 1) + ", or normalized 0.0..1.0)");
   }
-  opt.acuity = acuity_from_options(a.quality, a.slope);
+  opt.acuity = bench::acuity_from(a.quality, a.slope);
   opt.flip = !a.no_flip;
   opt.jnd_threshold = a.threshold;
   opt.contrast.peak_cd_m2 = a.peak;
@@ -114,24 +115,25 @@ void run_compare(const CompareArgs& a) {
 
   std::cout << "reference " << a.reference << "\ntest      " << a.test << "\n";
   std::cout << ref.width << 'x' << ref.height << " on display " << display.name << ", gaze ("
-            << fmt(gaze.x, 1) << ", " << fmt(gaze.y, 1)
-            << ") px, acuity w(e) = " << fmt(opt.acuity.slope, 4) << " e + "
-            << fmt(opt.acuity.w0_deg, 4) << " deg\n\n";
+            << format_fixed(gaze.x, 1) << ", " << format_fixed(gaze.y, 1)
+            << ") px, acuity w(e) = " << format_fixed(opt.acuity.slope, 4) << " e + "
+            << format_fixed(opt.acuity.w0_deg, 4) << " deg\n\n";
   if (std::isinf(r.psnr_db)) std::cout << "identical images (PSNR infinite)\n";
   std::cout << "PSNR " << db(r.psnr_db) << " dB   SSIM " << num(r.ssim, 4);
   if (opt.flip)
-    std::cout << "   FLIP " << num(r.flip_mean, 4) << " (at " << fmt(r.flip_ppd, 1) << " px/deg)";
+    std::cout << "   FLIP " << num(r.flip_mean, 4) << " (at " << format_fixed(r.flip_ppd, 1)
+              << " px/deg)";
   std::cout << "\nacuity-filtered error: RMSE " << num(r.acuity_rmse, 3)
             << " (8-bit luminance codes)\nvisibility: mean " << num(r.jnd_mean, 3)
-            << " JND, visible (>= " << fmt(r.jnd_threshold, 2) << " JND) "
+            << " JND, visible (>= " << format_fixed(r.jnd_threshold, 2) << " JND) "
             << num(100.0 * r.visible_fraction, 3) << " % of pixels (Barten CSF, white "
-            << fmt(opt.contrast.peak_cd_m2, 0) << " cd/m^2)\n\n";
+            << format_fixed(opt.contrast.peak_cd_m2, 0) << " cd/m^2)\n\n";
   std::printf("%-12s %8s %9s %8s %12s %9s %9s%s\n", "eccentricity", "pixels", "PSNR dB", "SSIM",
               "acuity RMSE", "JND mean", "visible", opt.flip ? "     FLIP" : "");
   for (const metrics::BandStats& b : r.bands) {
-    const std::string range = std::isinf(b.to_deg)
-                                  ? fmt(b.from_deg, 0) + "+ deg"
-                                  : fmt(b.from_deg, 0) + "-" + fmt(b.to_deg, 0) + " deg";
+    const std::string range = std::isinf(b.to_deg) ? format_fixed(b.from_deg, 0) + "+ deg"
+                                                   : format_fixed(b.from_deg, 0) + "-" +
+                                                         format_fixed(b.to_deg, 0) + " deg";
     std::printf("%-12s %7.1f%% %9s %8s %12s %9s %8s%%", range.c_str(), 100.0 * b.pixels_fraction,
                 db(b.psnr_db).c_str(), num(b.ssim, 4).c_str(), num(b.acuity_rmse, 3).c_str(),
                 num(b.jnd_mean, 3).c_str(), num(100.0 * b.visible_fraction, 2).c_str());
@@ -163,9 +165,7 @@ void register_compare(CLI::App& app) {
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5), inside the images; default "
                   "centre");
-  sub->add_option("--quality", a->quality,
-                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
-  sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
+  add_acuity_options(sub, a->quality, a->slope);
   sub->add_option("--threshold", a->threshold,
                   "Pooled visibility (JND) from which a pixel counts as visibly different")
       ->capture_default_str();
