@@ -1,5 +1,5 @@
 // The benchmark and the session with GL (each run makes its own headless
-// context): a technique registered at run time is benchmarked beside the
+// context): techniques registered at run time are benchmarked beside the
 // built-in ones, sweeps apply only where the key exists, every pass is timed,
 // and errors name the field of the options.
 #include <gtest/gtest.h>
@@ -16,6 +16,7 @@
 #include "errors.hpp"
 #include "foveate/bench/bench.hpp"
 #include "foveate/bench/report.hpp"
+#include "native_copy.hpp"
 
 using namespace foveate;
 using namespace foveate::bench;
@@ -70,6 +71,40 @@ TEST(Bench, ARunTimeTechniqueIsBenchmarkedBesideNative) {
   EXPECT_FALSE(r.results[0].metrics.has_value());  // native is the reference
   write_bench_report(r, out);
   EXPECT_EQ(read_json(out + "/results.json")["results"][1]["technique"], test::kBarsTechnique);
+  std::filesystem::remove_all(out);
+}
+
+// A technique from outside the library (examples/bench_consumer: its own
+// shader through PassKit, its copy declared a resolve pass) needs nothing
+// but its registration to be listed, measured by default and reported.
+TEST(Bench, AnOutsideTechniqueIsListedMeasuredByDefaultAndReported) {
+  example::register_native_copy();
+  const std::vector<std::string> names = technique_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), example::kNativeCopy), names.end());
+  const std::string out = fresh_dir("foveate-bench-outside");
+  BenchOptions o = tiny();
+  o.frames = 1;
+  o.warmup = 0;
+  o.passes = true;
+  const BenchResult r = run_bench(o);  // no technique list: every one the scene can run
+  const std::vector<std::string> runs = measured(r);
+  EXPECT_NE(std::find(runs.begin(), runs.end(), example::kNativeCopy), runs.end());
+  EXPECT_NE(std::find(runs.begin(), runs.end(), "vrs"), runs.end());
+  EXPECT_EQ(std::find(runs.begin(), runs.end(), "lodmask"), runs.end());  // needs meshes
+  ASSERT_EQ(r.skipped.size(), 1u);
+  EXPECT_EQ(r.skipped[0].rfind("lodmask (", 0), 0u);
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  bool reported = false;
+  for (const nlohmann::json& t : j["results"]) {
+    if (t["technique"] != example::kNativeCopy) continue;
+    reported = true;
+    EXPECT_GT(t["resolve_share"].get<double>(), 0.0);  // its declared copy pass
+  }
+  EXPECT_TRUE(reported);
+  std::ifstream html(out + "/report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find(example::kNativeCopy), std::string::npos);
   std::filesystem::remove_all(out);
 }
 
