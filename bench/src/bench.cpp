@@ -68,6 +68,8 @@ BenchResult BenchRun::run() {
   orders_ = interleaved_orders(runs_.size(), options_.frames);
   for (int k = 0; k < options_.frames; ++k) measure(k);
   if (callbacks_.finish) callbacks_.finish();
+  for (const std::string& e : session_.take_gl_errors())
+    notice(NoticeKind::Warning, {"GL debug error: " + e, {}});
   out_.gaze_report = session_.gaze().report();
   finish_environment(out_.environment);
   if (video_) {

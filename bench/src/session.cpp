@@ -32,7 +32,9 @@ Session::~Session() = default;
 
 void Session::make_context() {
   if (!options_.window) {
-    context_ = gpu::create_headless_context();
+    gpu::ContextOptions co;
+    co.debug = options_.gl_debug;
+    context_ = gpu::create_headless_context(co);
     return;
   }
   auto w =
@@ -92,6 +94,12 @@ void Session::announce() const {
         {}}});
   const SavingsCheck savings = check_savings(display_, options_.acuity);
   if (savings.nothing_to_save) callbacks_.notice({NoticeKind::Note, savings.note});
+}
+
+std::vector<std::string> Session::take_gl_errors() {
+  std::vector<std::string> out;
+  for (const gpu::DebugMessage& m : context_->take_debug_errors()) out.push_back(m.text);
+  return out;
 }
 
 std::array<GazeState, 2> Session::eye_gazes(const GazeState& combined) const {

@@ -16,6 +16,7 @@
 #include "errors.hpp"
 #include "foveate/bench/bench.hpp"
 #include "foveate/bench/report.hpp"
+#include "foveate/gpu/gl.hpp"
 #include "native_copy.hpp"
 
 using namespace foveate;
@@ -30,7 +31,18 @@ BenchOptions tiny() {
   o.session.size = {64, 36};
   o.frames = 2;
   o.warmup = 1;
+  o.session.gl_debug = true;
   return o;
+}
+
+// The benchmark, failing the test on every warning it gives (a GL error the
+// debug context reported among them).
+BenchResult run(const BenchOptions& o) {
+  BenchCallbacks callbacks;
+  callbacks.session.notice = [](const Notice& n) {
+    if (n.kind == NoticeKind::Warning) ADD_FAILURE() << n.text.render();
+  };
+  return run_bench(o, callbacks);
 }
 
 std::string fresh_dir(const std::string& name) {
@@ -57,7 +69,7 @@ TEST(Bench, ARunTimeTechniqueIsBenchmarkedBesideNative) {
   const std::string out = fresh_dir("foveate-bench-bars");
   BenchOptions o = tiny();
   o.techniques = std::vector<std::string>{"native", test::kBarsTechnique};
-  const BenchResult r = run_bench(o);
+  const BenchResult r = run(o);
   ASSERT_EQ(r.results.size(), 2u);
   const TechniqueResult& bars = r.results[1];
   EXPECT_EQ(bars.technique, test::kBarsTechnique);
@@ -86,7 +98,7 @@ TEST(Bench, AnOutsideTechniqueIsListedMeasuredByDefaultAndReported) {
   o.frames = 1;
   o.warmup = 0;
   o.passes = true;
-  const BenchResult r = run_bench(o);  // no technique list: every one the scene can run
+  const BenchResult r = run(o);  // no technique list: every one the scene can run
   const std::vector<std::string> runs = measured(r);
   EXPECT_NE(std::find(runs.begin(), runs.end(), example::kNativeCopy), runs.end());
   EXPECT_NE(std::find(runs.begin(), runs.end(), "vrs"), runs.end());
@@ -116,8 +128,8 @@ TEST(Bench, SweptRunsOnlyForTechniquesWithTheKey) {
   o.image_metrics = false;
   o.techniques = std::vector<std::string>{"native", test::kBarsTechnique, "inset"};
   o.sweep = Sweep::range("bar_px", 0, 2, 2);
-  EXPECT_EQ(measured(run_bench(o)), (std::vector<std::string>{"native", test::kBarsTechnique,
-                                                              test::kBarsTechnique, "inset"}));
+  EXPECT_EQ(measured(run(o)), (std::vector<std::string>{"native", test::kBarsTechnique,
+                                                        test::kBarsTechnique, "inset"}));
 }
 
 TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
@@ -132,7 +144,7 @@ TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
   o.image_metrics = false;
   o.techniques = std::vector<std::string>{"native", "checkerboard"};
   o.sweep = Sweep::range("margin", 1, 2, 1);
-  const BenchResult r = run_bench(o);
+  const BenchResult r = run(o);
   ASSERT_EQ(r.results.size(), 3u);
   const auto r1 = [](const TechniqueResult& t) {
     for (const auto& [key, value] : t.parameters)
@@ -164,6 +176,7 @@ TEST(Session, ErrorsNameTheField) {
   d.display = "nope";
   EXPECT_EQ(error_of([&] { Session s(d); }).rfind("display: ", 0), 0u);
   o.gaze = "";
+  o.gl_debug = true;
   Session s(o);
   ParamOverrides nine;
   nine.set("layers", 9);
@@ -172,6 +185,11 @@ TEST(Session, ErrorsNameTheField) {
             }).find("params: layered parameter layers=9: out of range"),
             std::string::npos);
   EXPECT_NE(error_of([&] { s.make("lodmask", {}); }).find("needs a scene with"), std::string::npos);
+  // Nothing above reached the GL wrongly, and the debug context does report
+  // what does.
+  EXPECT_TRUE(s.take_gl_errors().empty());
+  glEnable(0x1234);
+  EXPECT_EQ(s.take_gl_errors().size(), 1u);
 }
 
 // A frame past the frame timeout: the front end is told at the deadline
@@ -209,7 +227,7 @@ TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
   o.passes = true;
   o.image_metrics = false;
   o.frames = 3;
-  const BenchResult r = run_bench(o);
+  const BenchResult r = run(o);
   // layered settles in 6 frames with half-rate layers (asked for 1).
   EXPECT_EQ(r.warmup, 6);
   ASSERT_EQ(r.results.size(), 3u);

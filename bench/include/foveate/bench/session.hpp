@@ -79,6 +79,8 @@ class Session {
   [[nodiscard]] FrameWatchdog& watchdog() { return *watchdog_; }
   /// The GL renderer's name (GL_RENDERER).
   [[nodiscard]] std::string gl_renderer() const { return context_->renderer(); }
+  /// The GL errors reported since the last call (SessionOptions::gl_debug).
+  std::vector<std::string> take_gl_errors();
 
   /// The configuration a technique for `eye` (Left for the one view) gets:
   /// the display, `acuity` (the session's when unset) and the margin.

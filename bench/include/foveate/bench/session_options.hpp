@@ -40,6 +40,10 @@ struct SessionOptions {
   bool stereo = false;
   /// Stereo: the distance in metres the eyes converge at; unset = parallel.
   std::optional<double> vergence_m;
+  /// A debug GL context (headless sessions): the errors the driver reports
+  /// are collected (Session::take_gl_errors; a benchmark ends with a warning
+  /// per error), for tests and for hunting a technique's GL mistakes.
+  bool gl_debug = false;
 };
 
 /// Throws an OptionError naming the field of the first bad value.
