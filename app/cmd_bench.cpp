@@ -7,12 +7,16 @@
 #include <optional>
 #include <sstream>
 
-#include "bench.hpp"
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "foveate/bench/report.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "invocation.hpp"
+#include "messages.hpp"
 #include "output_dir.hpp"
+#include "progress.hpp"
+#include "session_args.hpp"
 
 namespace foveate::app {
 
@@ -20,10 +24,10 @@ namespace {
 
 struct BenchArgs {
   SessionArgs session;
-  std::string techniques = kDefaultTechniques;
+  std::string techniques = join(technique_names(), ",");
   bool techniques_given = false;
-  int frames = 12;
-  int warmup = 2;
+  int frames = bench::BenchOptions{}.frames;
+  int warmup = bench::BenchOptions{}.warmup;
   std::string sweep;
   std::string out = "bench-out";
   std::string reference = "native";
@@ -45,33 +49,43 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-BenchOptions to_options(const BenchArgs& a, const std::string& command_line) {
-  BenchOptions o;
+/// --sweep KEY=FROM:TO:STEP.
+bench::Sweep parse_sweep(const std::string& text) {
+  const auto eq = text.find('=');
+  std::vector<std::string> parts;
+  if (eq != std::string::npos) {
+    std::stringstream in(text.substr(eq + 1));
+    for (std::string item; std::getline(in, item, ':');) parts.push_back(item);
+  }
+  if (eq == std::string::npos || eq == 0 || parts.size() != 3) {
+    throw Error(
+        "--sweep: expected KEY=FROM:TO:STEP (e.g. slope=0.015:0.035:0.005 or "
+        "layered.layers=2:5:1), got '" +
+        text + "'");
+  }
+  double v[3];
+  for (size_t i = 0; i < 3; ++i) {
+    if (!parse_number(parts[i], v[i])) throw Error("--sweep: '" + parts[i] + "' is not a number");
+  }
+  return bench::Sweep::range(text.substr(0, eq), v[0], v[1], v[2]);
+}
+
+bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
+  bench::BenchOptions o;
   o.session = to_session_options(a.session);
-  o.techniques = split(a.techniques, ',');
-  for (const std::string& t : o.techniques)
-    with_flag("--techniques", [&] { return technique_info(t); });
+  if (a.techniques_given) o.techniques = split(a.techniques, ',');
   o.params = parse_params(a.session.params);
-  validate_params(o.params, o.techniques);
-  o.gaze = a.session.gaze;
   o.frames = a.frames;
   o.warmup = a.warmup;
   o.image_metrics = !a.no_metrics;
   o.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
-  if (o.session.stereo && o.reference > 1) {
-    throw Error(
-        "--reference: the supersampled reference is monocular; not available with --stereo "
-        "(each eye is judged against native for that eye)");
-  }
-  o.out = a.out;
-  o.progress = !quiet() && !a.json;
-  o.skip_unfit = !a.techniques_given;
   o.allow_fallback = a.allow_fallback;
   o.passes = a.passes;
-  o.command_line = command_line;
+  o.command = invocation().empty() ? command : invocation();
   o.video = a.video;
   o.side_by_side = a.side_by_side;
-  if (!a.sweep.empty()) o.sweep = Sweep::parse(a.sweep);
+  if (!a.sweep.empty()) o.sweep = parse_sweep(a.sweep);
+  bench::validate(o);
   return o;
 }
 
@@ -114,24 +128,46 @@ void add_common(CLI::App* sub, BenchArgs& a) {
       ->needs(video);
 }
 
-void print_summary(const BenchResult& r, bool json) {
+// Runs the benchmark with a progress display unless --quiet or --json, and
+// writes the report into --out.
+bench::BenchResult run_and_write(const BenchArgs& a, const bench::BenchOptions& o,
+                                 const char* what) {
+  const OutputDirLock out_lock(a.out, "--out");
+  std::optional<Progress> progress;
+  bench::BenchCallbacks callbacks;
+  callbacks.session = session_callbacks();
+  callbacks.start = [&](int steps, int metrics_steps) {
+    progress.emplace("bench", "steps", steps, !quiet() && !a.json);
+    progress->expect("metrics", metrics_steps);
+  };
+  callbacks.step = [&](const std::string& detail, const std::string& kind) {
+    progress->step(detail, kind);
+  };
+  callbacks.finish = [&] { progress->finish(); };
+  const bench::BenchResult r = bench::run_bench(o, callbacks);
+  if (!quiet() && !a.json) std::cerr << what << ": writing the report" << std::endl;
+  bench::write_bench_report(r, a.out);
+  return r;
+}
+
+void print_summary(const bench::BenchResult& r, const BenchArgs& a) {
   // The video written (and its encoder) is a result: said even with --quiet.
   if (!r.video_summary.empty()) std::cerr << r.video_summary << "\n";
-  if (json) {
-    std::cout << bench_json(r).dump(2) << '\n';
+  if (a.json) {
+    std::cout << bench::bench_json(r).dump(2) << '\n';
     return;
   }
   if (quiet()) {
-    std::cout << bench_markdown(r);
+    std::cout << bench::bench_markdown(r);
     return;
   }
   std::cout << "\n"
             << r.scene << " at " << r.options.session.size.width << 'x'
             << r.options.session.size.height << ", " << r.options.frames << " frames, renderer "
             << r.renderer << "\n\n"
-            << bench_markdown(r)
-            << "\nreport: " << (std::filesystem::path(r.options.out) / "report.html").string()
-            << "\nresults: " << (std::filesystem::path(r.options.out) / "results.json").string()
+            << bench::bench_markdown(r)
+            << "\nreport: " << (std::filesystem::path(a.out) / "report.html").string()
+            << "\nresults: " << (std::filesystem::path(a.out) / "results.json").string()
             << " (.csv, .md)\n";
 }
 
@@ -146,12 +182,8 @@ void register_bench(CLI::App& app) {
                   "Sweep KEY=FROM:TO:STEP: slope (the techniques' plan and the metrics' "
                   "yardstick), margin (the plan only: see --margin), or a technique parameter");
   sub->callback([a] {
-    const BenchOptions o = to_options(*a, "foveate bench");
-    const OutputDirLock out_lock(o.out, "--out");
-    const BenchResult r = run_bench(o);
-    if (!quiet() && !a->json) std::cerr << "bench: writing the report" << std::endl;
-    write_bench_outputs(r);
-    print_summary(r, a->json);
+    const bench::BenchOptions o = to_options(*a, "foveate bench");
+    print_summary(run_and_write(*a, o, "bench"), *a);
   });
 }
 
@@ -171,12 +203,8 @@ void register_demo(CLI::App& app) {
       std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
                 << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
                 << ", display " << a->session.display << " at " << a->session.size << std::endl;
-    const BenchOptions o = to_options(*a, "foveate demo");
-    const OutputDirLock out_lock(o.out, "--out");
-    const BenchResult r = run_bench(o);
-    if (!quiet() && !a->json) std::cerr << "demo: writing the report" << std::endl;
-    write_bench_outputs(r);
-    print_summary(r, a->json);
+    const bench::BenchOptions o = to_options(*a, "foveate demo");
+    print_summary(run_and_write(*a, o, "demo"), *a);
   });
 }
 

@@ -23,6 +23,7 @@
 #include "foveate/metrics/metrics.hpp"
 #include "photometry_flags.hpp"
 #include "progress.hpp"
+#include "session_args.hpp"
 
 namespace foveate::app {
 
@@ -56,10 +57,10 @@ struct CompareArgs {
 std::string db(double v) {
   if (std::isinf(v)) return "inf";
   if (std::isnan(v)) return "-";
-  return fmt(v, 2);
+  return format_fixed(v, 2);
 }
 
-std::string num(double v, int digits) { return std::isfinite(v) ? fmt(v, digits) : "-"; }
+std::string num(double v, int digits) { return std::isfinite(v) ? format_fixed(v, digits) : "-"; }
 
 bool is_image_file(const fs::path& p) {
   std::string ext = p.extension().string();
@@ -137,7 +138,7 @@ class FrameGaze {
   }
   [[nodiscard]] std::string describe() const {
     return source_ ? source_->describe()
-                   : "(" + fmt(fixed_.x, 1) + ", " + fmt(fixed_.y, 1) + ") px";
+                   : "(" + format_fixed(fixed_.x, 1) + ", " + format_fixed(fixed_.y, 1) + ") px";
   }
 
  private:
@@ -149,18 +150,21 @@ class FrameGaze {
 };
 
 void print_fvvdp(const metrics::FvvdpResult& r) {
-  std::cout << "FovVideoVDP " << fmt(r.jod, 4) << " JOD (10 = no visible difference; 1 JOD = 75 % "
+  std::cout << "FovVideoVDP " << format_fixed(r.jod, 4)
+            << " JOD (10 = no visible difference; 1 JOD = 75 % "
             << "of observers prefer the higher)\n  "
-            << (r.image ? std::string("an image")
-                        : std::to_string(r.frames) + " frames at " + fmt(r.fps, 3) + " fps")
+            << (r.image
+                    ? std::string("an image")
+                    : std::to_string(r.frames) + " frames at " + format_fixed(r.fps, 3) + " fps")
             << ", " << (r.foveated ? "foveated" : "not foveated") << ", "
-            << fmt(r.pixels_per_degree, 1) << " px/deg, white " << fmt(r.photometry.peak_cd_m2, 1)
-            << " cd/m^2, black " << fmt(r.photometry.black_cd_m2(), 4) << " cd/m^2\n";
+            << format_fixed(r.pixels_per_degree, 1) << " px/deg, white "
+            << format_fixed(r.photometry.peak_cd_m2, 1) << " cd/m^2, black "
+            << format_fixed(r.photometry.black_cd_m2(), 4) << " cd/m^2\n";
   std::printf("  %-12s %8s %9s\n", "eccentricity", "pixels", "JOD");
   for (const auto& b : r.bands) {
-    const std::string range = std::isinf(b.to_deg)
-                                  ? fmt(b.from_deg, 0) + "+ deg"
-                                  : fmt(b.from_deg, 0) + "-" + fmt(b.to_deg, 0) + " deg";
+    const std::string range = std::isinf(b.to_deg) ? format_fixed(b.from_deg, 0) + "+ deg"
+                                                   : format_fixed(b.from_deg, 0) + "-" +
+                                                         format_fixed(b.to_deg, 0) + " deg";
     std::printf("  %-12s %7.1f%% %9s\n", range.c_str(), 100.0 * b.pixels_fraction,
                 num(b.jod, 4).c_str());
   }
@@ -168,7 +172,7 @@ void print_fvvdp(const metrics::FvvdpResult& r) {
 
 metrics::QualityOptions diagnostic_options(const CompareArgs& a, const Display& display) {
   metrics::QualityOptions opt;
-  opt.acuity = acuity_from_options(a.quality, a.slope);
+  opt.acuity = bench::acuity_from(a.quality, a.slope);
   opt.flip = !a.no_flip;
   opt.jnd_threshold = a.threshold;
   // The JND diagnostic sees the same light as FovVideoVDP.
@@ -178,22 +182,23 @@ metrics::QualityOptions diagnostic_options(const CompareArgs& a, const Display& 
 }
 
 void print_diagnostics(const metrics::QualityReport& r, const metrics::QualityOptions& opt) {
-  std::cout << "\ndiagnostics: acuity w(e) = " << fmt(opt.acuity.slope, 4) << " e + "
-            << fmt(opt.acuity.w0_deg, 4) << " deg\n";
+  std::cout << "\ndiagnostics: acuity w(e) = " << format_fixed(opt.acuity.slope, 4) << " e + "
+            << format_fixed(opt.acuity.w0_deg, 4) << " deg\n";
   if (std::isinf(r.psnr_db)) std::cout << "identical images (PSNR infinite)\n";
   std::cout << "PSNR " << db(r.psnr_db) << " dB   SSIM " << num(r.ssim, 4);
   if (opt.flip)
-    std::cout << "   FLIP " << num(r.flip_mean, 4) << " (at " << fmt(r.flip_ppd, 1) << " px/deg)";
+    std::cout << "   FLIP " << num(r.flip_mean, 4) << " (at " << format_fixed(r.flip_ppd, 1)
+              << " px/deg)";
   std::cout << "\nacuity-filtered error: RMSE " << num(r.acuity_rmse, 3)
             << " (8-bit luminance codes)\nvisibility: mean " << num(r.jnd_mean, 3)
-            << " JND, visible (>= " << fmt(r.jnd_threshold, 2) << " JND) "
+            << " JND, visible (>= " << format_fixed(r.jnd_threshold, 2) << " JND) "
             << num(100.0 * r.visible_fraction, 3) << " % of pixels (Barten CSF)\n\n";
   std::printf("%-12s %8s %9s %8s %12s %9s %9s%s\n", "eccentricity", "pixels", "PSNR dB", "SSIM",
               "acuity RMSE", "JND mean", "visible", opt.flip ? "     FLIP" : "");
   for (const metrics::BandStats& b : r.bands) {
-    const std::string range = std::isinf(b.to_deg)
-                                  ? fmt(b.from_deg, 0) + "+ deg"
-                                  : fmt(b.from_deg, 0) + "-" + fmt(b.to_deg, 0) + " deg";
+    const std::string range = std::isinf(b.to_deg) ? format_fixed(b.from_deg, 0) + "+ deg"
+                                                   : format_fixed(b.from_deg, 0) + "-" +
+                                                         format_fixed(b.to_deg, 0) + " deg";
     std::printf("%-12s %7.1f%% %9s %8s %12s %9s %8s%%", range.c_str(), 100.0 * b.pixels_fraction,
                 db(b.psnr_db).c_str(), num(b.ssim, 4).c_str(), num(b.acuity_rmse, 3).c_str(),
                 num(b.jnd_mean, 3).c_str(), num(100.0 * b.visible_fraction, 2).c_str());
@@ -340,9 +345,7 @@ void register_compare(CLI::App& app) {
                   "reference as a PNG: green invisible, red --heatmap-max JOD");
   sub->add_option("--heatmap-max", a->heatmap_max, "JOD at the top of the heat map's scale")
       ->capture_default_str();
-  sub->add_option("--quality", a->quality,
-                  "Diagnostics' acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
-  sub->add_option("--slope", a->slope, "Diagnostics: custom MAR slope m");
+  add_acuity_options(sub, a->quality, a->slope);
   sub->add_option("--threshold", a->threshold,
                   "Diagnostics: pooled visibility (JND) from which a pixel counts as visible")
       ->capture_default_str();

@@ -29,7 +29,7 @@ using namespace foveate::gaze;
 Display display_from(const std::string& name, const std::string& size) {
   Display d = Display::load(name);
   if (!size.empty()) {
-    const Size s = parse_size(size, "--size");
+    const PixelSize s = parse_size(size, "--size");
     d = d.resized(s.width, s.height);
   }
   return d;
@@ -211,7 +211,7 @@ void run_record(const RecordArgs& a) {
                   std::to_string(po.port) + " answered, but " + why);
     }
     throw Error("cannot reach Pupil Capture at " + po.host + ":" + std::to_string(po.port) +
-                " within " + fmt(a.connect_timeout, 1) + " s (is Pupil Remote enabled?)" +
+                " within " + format_fixed(a.connect_timeout, 1) + " s (is Pupil Remote enabled?)" +
                 (why.empty() ? "" : ": " + why));
   }
   const StopSignals signals;

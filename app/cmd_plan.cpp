@@ -11,14 +11,19 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "foveate/bench/svg_plot.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/core/planner.hpp"
 #include "progress.hpp"
-#include "svg_plot.hpp"
+#include "session_args.hpp"
 
 namespace foveate::app {
+
+using bench::ChartOptions;
+using bench::Series;
+using bench::svg_line_chart;
 
 namespace {
 
@@ -151,10 +156,10 @@ void run_plan(const PlanArgs& a) {
 
   Display display = Display::load(a.display);
   {
-    const Size sz = parse_size(a.size, "--size");
+    const PixelSize sz = parse_size(a.size, "--size");
     display = display.resized(sz.width, sz.height);
   }
-  const AcuityModel acuity = acuity_from_options(a.quality, a.slope);
+  const AcuityModel acuity = bench::acuity_from(a.quality, a.slope);
   note_savings(display, acuity);
   PlannerOptions opt;
   opt.layers = a.layers;
@@ -213,20 +218,22 @@ void run_plan(const PlanArgs& a) {
   const Display& d = plan.display;
   std::cout << "display " << d.name << ": " << d.width_px << 'x' << d.height_px;
   if (d.head_mounted()) {
-    std::cout << ", head-mounted, " << fmt(d.horizontal_fov_deg(), 1)
+    std::cout << ", head-mounted, " << format_fixed(d.horizontal_fov_deg(), 1)
               << " deg horizontal field of view\n";
   } else {
-    std::cout << ", " << fmt(d.width_mm, 0) << " mm wide viewed from " << fmt(d.distance_mm, 0)
-              << " mm\n";
+    std::cout << ", " << format_fixed(d.width_mm, 0) << " mm wide viewed from "
+              << format_fixed(d.distance_mm, 0) << " mm\n";
   }
-  std::cout << "  e* (half field of view) = " << fmt(d.half_fov_deg(), 2)
-            << " deg, w* (sharpness) = " << fmt(d.sharpness_deg(), 4)
-            << " deg, w0/w* = " << fmt(100.0 * acuity.w0_deg / d.sharpness_deg(), 0) << " %\n";
-  std::cout << "acuity: w(e) = " << fmt(acuity.slope, 4) << " e + " << fmt(acuity.w0_deg, 4)
-            << " deg";
+  std::cout << "  e* (half field of view) = " << format_fixed(d.half_fov_deg(), 2)
+            << " deg, w* (sharpness) = " << format_fixed(d.sharpness_deg(), 4)
+            << " deg, w0/w* = " << format_fixed(100.0 * acuity.w0_deg / d.sharpness_deg(), 0)
+            << " %\n";
+  std::cout << "acuity: w(e) = " << format_fixed(acuity.slope, 4) << " e + "
+            << format_fixed(acuity.w0_deg, 4) << " deg";
   if (acuity.slope == kSlopeQualityA) std::cout << " (quality A)";
   if (acuity.slope == kSlopeQualityB) std::cout << " (quality B)";
-  std::cout << "\ngaze at (" << fmt(gaze.x, 1) << ", " << fmt(gaze.y, 1) << ") px\n\n";
+  std::cout << "\ngaze at (" << format_fixed(gaze.x, 1) << ", " << format_fixed(gaze.y, 1)
+            << ") px\n\n";
   std::printf("%-6s %11s %11s %9s %13s %11s  %s\n", "layer", "radius deg", "radius px", "s_i",
               "target px", "pixels", "on screen (x0,y0)-(x1,y1)");
   for (size_t i = 0; i < plan.layers.size(); ++i) {
@@ -268,9 +275,7 @@ void register_plan(CLI::App& app) {
                       ") or JSON file; through a lens (hmd-rift-dk1, hmd-quest2-lens) no layer "
                       "samples finer than the panel shows")
       ->capture_default_str();
-  sub->add_option("--quality", a->quality,
-                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
-  sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
+  add_acuity_options(sub, a->quality, a->slope);
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre (with a "

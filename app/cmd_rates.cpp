@@ -17,6 +17,7 @@
 #include "foveate/core/image.hpp"
 #include "foveate/core/shading_rate.hpp"
 #include "foveate/techniques/technique.hpp"
+#include "session_args.hpp"
 
 namespace foveate::app {
 
@@ -118,10 +119,12 @@ void run_rates(const RatesArgs& a) {
     throw Error("--preview: the file must end in .png, got '" + a.preview + "'");
   }
   if (!(a.latency_ms >= 0.0) || a.latency_ms > 10000.0) {
-    throw Error("--latency-ms: expected 0..10000 milliseconds, got " + fmt(a.latency_ms, 3));
+    throw Error("--latency-ms: expected 0..10000 milliseconds, got " +
+                format_fixed(a.latency_ms, 3));
   }
   if (!(a.max_saccade >= 0.0) || a.max_saccade > 1000.0) {
-    throw Error("--max-saccade: expected 0..1000 degrees per second, got " + fmt(a.max_saccade, 3));
+    throw Error("--max-saccade: expected 0..1000 degrees per second, got " +
+                format_fixed(a.max_saccade, 3));
   }
   if (a.tile != 8 && a.tile != 16 && a.tile != 32) {
     throw Error("--tile: expected 8, 16 or 32 pixels, got " + std::to_string(a.tile));
@@ -145,15 +148,16 @@ void run_rates(const RatesArgs& a) {
   }
   Display display = Display::load(a.display);
   if (!a.size.empty()) {
-    const Size sz = parse_size(a.size, "--size");
+    const PixelSize sz = parse_size(a.size, "--size");
     display = display.resized(sz.width, sz.height);
   }
-  const AcuityModel judged = acuity_from_options(a.quality, a.slope);
+  const AcuityModel judged = bench::acuity_from(a.quality, a.slope);
   // The vrs technique's plan: --margin, else its own planning margin.
   TechniqueConfig vrs;
   vrs.display = display;
   vrs.acuity = judged;
-  if (a.margin) vrs.margin = checked_margin(*a.margin);
+  if (a.margin) bench::check_margin(*a.margin);
+  vrs.margin = a.margin;
   const double margin = resolve_parameters(technique_info("vrs"), vrs).real(kPlanMarginKey);
   const AcuityModel acuity = judged.finer(margin);
   const Vec2d gaze = a.gaze.empty()
@@ -217,11 +221,12 @@ void run_rates(const RatesArgs& a) {
   if (!a.preview.empty()) write_png(a.preview, preview(m, gaze));
 
   std::cout << "display " << display.name << " " << display.width_px << 'x' << display.height_px
-            << ", gaze (" << fmt(gaze.x, 1) << ", " << fmt(gaze.y, 1)
-            << ") px, acuity w(e) = " << fmt(judged.slope, 4) << " e + " << fmt(judged.w0_deg, 4)
-            << " deg planned with margin " << fmt(margin, 3);
+            << ", gaze (" << format_fixed(gaze.x, 1) << ", " << format_fixed(gaze.y, 1)
+            << ") px, acuity w(e) = " << format_fixed(judged.slope, 4) << " e + "
+            << format_fixed(judged.w0_deg, 4) << " deg planned with margin "
+            << format_fixed(margin, 3);
   if (opt.latency_margin_deg > 0.0) {
-    std::cout << ", latency margin " << fmt(opt.latency_margin_deg, 2) << " deg";
+    std::cout << ", latency margin " << format_fixed(opt.latency_margin_deg, 2) << " deg";
   }
   std::cout << "\n"
             << m.tiles_x << 'x' << m.tiles_y << " tiles of " << m.tile_px << " px, "
@@ -267,9 +272,7 @@ void register_rates(CLI::App& app) {
   sub->add_option("--out", a->out, "Output: FILE.bin (one byte per tile) or FILE.json")->required();
   sub->add_option("--preview", a->preview, "Also write a PNG: a colour per rate and a legend");
   sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
-  sub->add_option("--quality", a->quality,
-                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
-  sub->add_option("--slope", a->slope, "Custom MAR slope m (degrees per degree of eccentricity)");
+  add_acuity_options(sub, a->quality, a->slope);
   sub->add_option("--margin", a->margin,
                   "Plan for an acuity this many times finer (1 to 4; 1 = two samples per MAR "
                   "cycle of the model itself); default: the vrs technique's own planning margin, "

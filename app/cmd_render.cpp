@@ -1,5 +1,5 @@
-// foveate render / scenes / techniques: render frames of any scene with any
-// technique to PNG, and list what there is.
+// foveate render: frames of any scene with any technique, to PNG files or a
+// video.
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -10,15 +10,17 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "foveate/bench/session.hpp"
+#include "foveate/bench/video.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/techniques/reference.hpp"
+#include "messages.hpp"
 #include "output_dir.hpp"
 #include "process_stats.hpp"
 #include "progress.hpp"
-#include "session.hpp"
-#include "video.hpp"
+#include "session_args.hpp"
 
 namespace foveate::app {
 
@@ -39,175 +41,225 @@ struct RenderArgs {
   bool json = false;
 };
 
-void run_render(const RenderArgs& a) {
+// Pixels shaded over the run: both eyes together (or the one view), and each eye's.
+struct Totals {
+  double shaded = 0, native = 0;
+  std::array<double, 2> eye_shaded{0, 0}, eye_native{0, 0};
+};
+
+// What one render run works with, checked before anything is created.
+struct RenderSetup {
+  bench::SessionOptions session;
+  bench::ParamOverrides params;
+  int reference = 1;
+  int out_width = 0;
+};
+
+RenderSetup check(const RenderArgs& a) {
   if (a.frames < 1 || a.frames > 100000)
     throw Error("--frames: expected 1..100000, got " + std::to_string(a.frames));
   if (a.stats_every < 0) {
     throw Error("--stats: expected a frame interval >= 0, got " + std::to_string(a.stats_every));
   }
-  SessionOptions o = to_session_options(a.session);
+  RenderSetup s;
+  s.session = to_session_options(a.session);
   if (!a.mouse.empty()) {
-    o.mouse_px = parse_point(a.mouse, o.size.width, o.size.height, "--mouse");
-    o.mouse_down = true;
+    s.session.mouse_px =
+        parse_point(a.mouse, s.session.size.width, s.session.size.height, "--mouse");
+    s.session.mouse_down = true;
   }
   with_flag("--technique", [&] { return technique_info(a.technique); });
-  const int reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
-  const ParamArgs params = parse_params(a.session.params);
-  validate_params(params, {a.technique});
+  s.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
+  s.params = parse_params(a.session.params);
+  s.params.validate({a.technique});
   if (a.out.empty() && a.video.empty() && !a.no_write)
     throw CLI::RequiredError("--out, --video or --no-write");
-  if (reference > 1 && a.out.empty())
+  if (s.reference > 1 && a.out.empty())
     throw Error("--reference: the reference frames are PNG files; give --out DIR too");
-  if (o.stereo && a.side_by_side) {
+  if (s.session.stereo && a.side_by_side) {
     throw Error(
         "--side-by-side: not available with --stereo (a stereo frame is already the two eyes "
         "side by side)");
   }
-  if (o.stereo && reference > 1) {
+  if (s.session.stereo && s.reference > 1) {
     throw Error(
         "--reference: the supersampled reference is monocular; not available with --stereo");
   }
-  const int out_width = o.size.width * (o.stereo ? 2 : 1);
-  std::optional<OutputDirLock> out_lock;
-  if (!a.out.empty() && !a.no_write) out_lock.emplace(a.out, "--out");
-  // Opened before rendering, so that a bad path fails at once.
-  std::unique_ptr<VideoWriter> video;
-  if (!a.video.empty()) {
-    video = with_flag("--video", [&] {
-      return std::make_unique<VideoWriter>(a.video, out_width * (a.side_by_side ? 2 : 1),
-                                           o.size.height, o.fps);
-    });
+  s.out_width = s.session.size.width * (s.session.stereo ? 2 : 1);
+  return s;
+}
+
+std::string frame_file(const char* prefix, int k) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s-%04d.png", prefix, k);
+  return name;
+}
+
+class RenderRun {
+ public:
+  RenderRun(const RenderArgs& a, const RenderSetup& s)
+      : a_(a), s_(s), session_(s.session, session_callbacks()) {
+    session_.set_overlay(a.overlay);
+    technique_ = session_.make(a.technique, s.params);
+    if (a.side_by_side) native_ = session_.make("native", s.params);
+    if (s.reference > 1) supersampled_ = session_.make_reference(s.reference);
   }
-  Session session(o, a.session.gaze);
-  Renderer& renderer = session.renderer();
-  StereoRenderer* stereo = session.stereo();
-  renderer.set_overlay(a.overlay);
-  if (stereo) stereo->set_overlay(a.overlay);
-  std::unique_ptr<Technique> technique;
-  std::array<std::unique_ptr<Technique>, 2> eyes;
-  if (stereo) {
-    eyes = session.make_stereo(a.technique, params);
-  } else {
-    technique = session.make(a.technique, params);
+
+  void run(bench::VideoWriter* video) {
+    Progress progress("render", "frames", a_.frames, a_.frames > 1);
+    for (int k = 0; k < a_.frames; ++k) {
+      frame(k, video);
+      progress.step(frame_file("frame", k));
+    }
   }
-  std::array<double, 2> eye_shaded{0, 0}, eye_native{0, 0};
-  const auto native = a.side_by_side ? session.make("native", params) : nullptr;
-  const std::unique_ptr<Reference> supersampled =
-      reference > 1 ? session.make_reference(reference) : nullptr;
-  double shaded = 0, native_pixels = 0;
-  Progress progress("render", "frames", a.frames, a.frames > 1);
-  for (int k = 0; k < a.frames; ++k) {
-    const GazeState gaze = session.gaze().at(renderer.frame_input(k).time_s);
+  [[nodiscard]] const Totals& totals() const { return totals_; }
+  [[nodiscard]] bench::Session& session() { return session_; }
+
+ private:
+  void frame(int k, bench::VideoWriter* video) {
+    const GazeState gaze = session_.gaze().at(session_.renderer().frame_input(k).time_s);
     Image native_image;
-    if (native) {
-      session.watchdog().run("frame " + std::to_string(k) + " (native)",
-                             [&] { return renderer.render(*native, k, gaze); });
-      native_image = renderer.read_output();
+    if (native_.view) {
+      session_.watchdog().run("frame " + std::to_string(k) + " (native)",
+                              [&] { return session_.render(native_, k, gaze); });
+      native_image = session_.read_output();
     }
-    const std::string frame = "frame " + std::to_string(k) + " (" + a.technique + ")";
-    FrameStats s;
-    if (stereo) {
-      const std::array<GazeState, 2> g = session.eye_gazes(gaze);
-      const std::array<FrameStats, 2> st =
-          session.watchdog().run(frame, [&] { return stereo->render(*eyes[0], *eyes[1], k, g); });
-      for (size_t i = 0; i < 2; ++i) {
-        s.shaded_pixels += st[i].shaded_pixels;
-        s.native_pixels += st[i].native_pixels;
-        eye_shaded[i] += st[i].shaded_pixels;
-        eye_native[i] += st[i].native_pixels;
-      }
-    } else {
-      s = session.watchdog().run(frame, [&] { return renderer.render(*technique, k, gaze); });
-    }
-    shaded += s.shaded_pixels;
-    native_pixels += s.native_pixels;
-    if (a.stats_every > 0 && (k % a.stats_every == 0 || k + 1 == a.frames)) {
+    const bench::SessionFrame st =
+        session_.watchdog().run("frame " + std::to_string(k) + " (" + a_.technique + ")",
+                                [&] { return session_.render(technique_, k, gaze); });
+    add(st);
+    if (a_.stats_every > 0 && (k % a_.stats_every == 0 || k + 1 == a_.frames))
       std::cerr << process_stats_line(k) << std::endl;
-    }
-    Image image = stereo ? stereo->read_output() : renderer.read_output();
+    Image image = session_.read_output();
     if (verbose())
       std::fprintf(stderr, "render: frame %d: %s shaded pixels\n", k,
-                   format_number(s.shaded_pixels, 0).c_str());
-    char name[64];
-    std::snprintf(name, sizeof name, "frame-%04d.png", k);
-    const auto reference_image = [&] {
-      return session.watchdog().run(
-          "frame " + std::to_string(k) + " of the ssaa:" + std::to_string(reference) + " reference",
-          [&] { return supersampled->render(renderer.frame_input(k)); },
-          double(reference) * reference);
-    };
-    if (a.no_write && !video) {
+                   format_number(st.total.shaded_pixels, 0).c_str());
+    if (a_.no_write && !video) {
       // Read back as a written run would (the readback is part of the frame's cost).
-      if (supersampled) (void)reference_image();
-      progress.step(name);
-      continue;
+      if (supersampled_) (void)reference_image(k);
+      return;
     }
-    if (!a.out.empty() && !a.no_write)
-      write_png((std::filesystem::path(a.out) / name).string(), image);
-    if (video && native) {
-      mark_gaze(native_image, gaze.gaze_px);
-      mark_gaze(image, gaze.gaze_px);
-      video->write(tile({&native_image, &image}));
+    if (!a_.out.empty() && !a_.no_write)
+      write_png((std::filesystem::path(a_.out) / frame_file("frame", k)).string(), image);
+    if (video && native_.view) {
+      bench::mark_gaze(native_image, gaze.gaze_px);
+      bench::mark_gaze(image, gaze.gaze_px);
+      video->write(bench::tile({&native_image, &image}));
     } else if (video) {
       video->write(image);
     }
-    if (supersampled && !a.no_write) {
-      char ref[64];
-      std::snprintf(ref, sizeof ref, "reference-%04d.png", k);
-      write_png((std::filesystem::path(a.out) / ref).string(), reference_image());
+    if (supersampled_ && !a_.no_write) {
+      write_png((std::filesystem::path(a_.out) / frame_file("reference", k)).string(),
+                reference_image(k));
     }
-    progress.step(name);
   }
+
+  Image reference_image(int k) {
+    return session_.watchdog().run(
+        "frame " + std::to_string(k) + " of the ssaa:" + std::to_string(s_.reference) +
+            " reference",
+        [&] { return supersampled_->render(session_.renderer().frame_input(k)); },
+        double(s_.reference) * s_.reference);
+  }
+
+  void add(const bench::SessionFrame& st) {
+    totals_.shaded += st.total.shaded_pixels;
+    totals_.native += st.total.native_pixels;
+    if (!session_.options().stereo) return;
+    for (size_t i = 0; i < 2; ++i) {
+      totals_.eye_shaded[i] += st.eyes[i].shaded_pixels;
+      totals_.eye_native[i] += st.eyes[i].native_pixels;
+    }
+  }
+
+  const RenderArgs& a_;
+  const RenderSetup& s_;
+  bench::Session session_;
+  bench::SessionTechnique technique_, native_;
+  std::unique_ptr<bench::ReferenceScene> supersampled_;
+  Totals totals_;
+};
+
+void print_json(const RenderArgs& a, const RenderSetup& s, RenderRun& run) {
+  bench::Session& session = run.session();
+  const Totals& t = run.totals();
+  const bench::SessionOptions& o = s.session;
+  nlohmann::json j = {
+      {"frames", a.frames},
+      {"scene", session.scene().info().name},
+      {"technique", a.technique},
+      {"size", {s.out_width, o.size.height}},
+      {"out", a.out.empty()
+                  ? nlohmann::json(nullptr)
+                  : nlohmann::json(std::filesystem::path(a.out).lexically_normal().string())},
+      {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
+      {"shaded_pixels_per_frame", t.shaded / a.frames},
+      {"native_pixels_per_frame", t.native / a.frames},
+      {"pixel_ratio", t.shaded / t.native},
+      {"gaze_report", session.gaze().report()}};
+  if (o.stereo) {
+    const double v = o.vergence_m.value_or(std::numeric_limits<double>::infinity());
+    j["stereo"] = {{"display", session.stereo_display().left.name},
+                   {"eye_size", {o.size.width, o.size.height}},
+                   {"ipd_mm", session.stereo_display().ipd_mm},
+                   {"vergence_m", std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf")}};
+    for (Eye e : kEyes) {
+      const size_t i = static_cast<size_t>(e);
+      j["stereo"]["eyes"][eye_name(e)] = {{"shaded_pixels_per_frame", t.eye_shaded[i] / a.frames},
+                                          {"pixel_ratio", t.eye_shaded[i] / t.eye_native[i]}};
+    }
+  }
+  std::cout << j.dump(2) << '\n';
+}
+
+void print_text(const RenderArgs& a, const RenderSetup& s, RenderRun& run) {
+  bench::Session& session = run.session();
+  const Totals& t = run.totals();
+  const PixelSize size = s.session.size;
+  const std::string where =
+      a.out.empty() ? (a.video.empty() ? std::string(" (not written)") : " to " + a.video)
+                    : " to " + (std::filesystem::path(a.out) / "").lexically_normal().string() +
+                          (a.video.empty() ? "" : " and " + a.video);
+  std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
+            << a.technique << " at " << s.out_width << 'x' << size.height
+            << (s.session.stereo ? " (two " + std::to_string(size.width) + "x" +
+                                       std::to_string(size.height) + " eyes side by side)"
+                                 : std::string())
+            << where << "\n";
+  std::cout << "shaded pixels: " << format_fixed(t.shaded / a.frames, 0) << " per frame ("
+            << format_fixed(100.0 * t.shaded / t.native, 1) << " % of native)\n"
+            << (s.session.stereo ? "per eye: left " +
+                                       format_fixed(100.0 * t.eye_shaded[0] / t.eye_native[0], 1) +
+                                       " %, right " +
+                                       format_fixed(100.0 * t.eye_shaded[1] / t.eye_native[1], 1) +
+                                       " % of native\n"
+                                 : std::string())
+            << session.gaze().report() << "\n";
+}
+
+void run_render(const RenderArgs& a) {
+  const RenderSetup s = check(a);
+  std::optional<OutputDirLock> out_lock;
+  if (!a.out.empty() && !a.no_write) out_lock.emplace(a.out, "--out");
+  // Opened before rendering, so that a bad path fails at once.
+  std::unique_ptr<bench::VideoWriter> video;
+  if (!a.video.empty()) {
+    video = with_flag("--video", [&] {
+      return std::make_unique<bench::VideoWriter>(a.video, s.out_width * (a.side_by_side ? 2 : 1),
+                                                  s.session.size.height, s.session.fps);
+    });
+  }
+  RenderRun run(a, s);
+  run.run(video.get());
   if (video) {
     video->finish();
-    std::cerr << video_summary(*video, o.fps) << "\n";
+    std::cerr << bench::video_summary(*video, s.session.fps) << "\n";
   }
   if (a.json) {
-    nlohmann::json j = {
-        {"frames", a.frames},
-        {"scene", session.scene().info().name},
-        {"technique", a.technique},
-        {"size", {out_width, o.size.height}},
-        {"out", a.out.empty()
-                    ? nlohmann::json(nullptr)
-                    : nlohmann::json(std::filesystem::path(a.out).lexically_normal().string())},
-        {"video", a.video.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.video)},
-        {"shaded_pixels_per_frame", shaded / a.frames},
-        {"native_pixels_per_frame", native_pixels / a.frames},
-        {"pixel_ratio", shaded / native_pixels},
-        {"gaze_report", session.gaze().report()}};
-    if (stereo) {
-      j["stereo"] = {{"display", session.stereo_display().left.name},
-                     {"eye_size", {o.size.width, o.size.height}},
-                     {"ipd_mm", session.stereo_display().ipd_mm},
-                     {"vergence_m", std::isfinite(o.vergence_m) ? nlohmann::json(o.vergence_m)
-                                                                : nlohmann::json("inf")}};
-      for (Eye e : kEyes) {
-        const size_t i = static_cast<size_t>(e);
-        j["stereo"]["eyes"][eye_name(e)] = {{"shaded_pixels_per_frame", eye_shaded[i] / a.frames},
-                                            {"pixel_ratio", eye_shaded[i] / eye_native[i]}};
-      }
-    }
-    std::cout << j.dump(2) << '\n';
-    return;
+    print_json(a, s, run);
+  } else {
+    print_text(a, s, run);
   }
-  std::cout << "rendered " << a.frames << " frame(s) of " << session.scene().info().name << " with "
-            << a.technique << " at " << out_width << 'x' << o.size.height
-            << (stereo ? " (two " + std::to_string(o.size.width) + "x" +
-                             std::to_string(o.size.height) + " eyes side by side)"
-                       : std::string())
-            << (a.out.empty()
-                    ? (a.video.empty() ? std::string(" (not written)") : " to " + a.video)
-                    : " to " + (std::filesystem::path(a.out) / "").lexically_normal().string() +
-                          (a.video.empty() ? "" : " and " + a.video))
-            << "\n";
-  std::cout << "shaded pixels: " << fmt(shaded / a.frames, 0) << " per frame ("
-            << fmt(100.0 * shaded / native_pixels, 1) << " % of native)\n"
-            << (stereo ? "per eye: left " + fmt(100.0 * eye_shaded[0] / eye_native[0], 1) +
-                             " %, right " + fmt(100.0 * eye_shaded[1] / eye_native[1], 1) +
-                             " % of native\n"
-                       : std::string())
-            << session.gaze().report() << "\n";
 }
 
 }  // namespace
@@ -249,107 +301,6 @@ void register_render(CLI::App& app) {
   sub->callback([a] { run_render(*a); });
 }
 
-void register_scenes(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("scenes", "List the built-in scenes");
-  auto json = std::make_shared<bool>(false);
-  sub->add_flag("--json", *json, "Print the list as JSON");
-  sub->callback([json] {
-    if (*json) {
-      nlohmann::json j = nlohmann::json::array();
-      for (const SceneListing& s : builtin_scenes())
-        j.push_back({{"name", s.name}, {"description", s.description}});
-      std::cout << j.dump(2) << '\n';
-      return;
-    }
-    for (const SceneListing& s : builtin_scenes())
-      std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
-    std::printf(
-        "\nAlso: a Shadertoy shader file (.glsl, .frag) or a mesh file (OBJ, glTF/GLB, PLY, FBX, "
-        "3DS, ...).\n");
-  });
-}
-
-void register_techniques(CLI::App& app) {
-  auto display = std::make_shared<std::string>("desktop-1080p");
-  auto size = std::make_shared<std::string>(kDefaultSize);
-  auto json = std::make_shared<bool>(false);
-  auto quality = std::make_shared<std::string>();
-  auto slope = std::make_shared<std::optional<double>>();
-  auto margin = std::make_shared<std::optional<double>>();
-  CLI::App* sub =
-      app.add_subcommand("techniques", "List the techniques with their parameters and defaults");
-  sub->add_option("--display", *display, "Display for the derived defaults")->capture_default_str();
-  sub->add_option("--size", *size, "Render size for the derived defaults (render's default)")
-      ->capture_default_str();
-  sub->add_flag("--json", *json, "Print the techniques, parameters and defaults as JSON");
-  sub->add_option("--quality", *quality, "Acuity preset A or B (default A)");
-  sub->add_option("--slope", *slope, "Custom MAR slope m");
-  sub->add_option("--margin", *margin,
-                  "Derive the defaults for every technique planned with this margin (as "
-                  "render's and bench's --margin, 1 to 4; default: each technique's own)");
-  sub->callback([=] {
-    const Size sz = parse_size(*size, "--size");
-    TechniqueConfig c;
-    c.display = with_flag("--display", [&] {
-                  return Display::load(*display);
-                }).resized(sz.width, sz.height);
-    const AcuityModel judged = acuity_from_options(*quality, *slope);
-    note_savings(c.display, judged);
-    c.acuity = judged;
-    const std::optional<double> forced =
-        *margin ? std::optional<double>(checked_margin(**margin)) : std::nullopt;
-    c.margin = forced;
-    if (*json) {
-      nlohmann::json j = {{"display", c.display},
-                          {"size", {sz.width, sz.height}},
-                          {"acuity", {{"slope", judged.slope}, {"w0_deg", judged.w0_deg}}},
-                          {"margin", forced ? nlohmann::json(*forced) : nlohmann::json()}};
-      nlohmann::json list = nlohmann::json::array();
-      for (const TechniqueInfo& t : techniques()) {
-        const ParamValues values = resolve_parameters(t, c);
-        nlohmann::json params = nlohmann::json::array();
-        for (const ParamDecl& p : t.params) {
-          params.push_back({{"key", p.key},
-                            {"value", values.real(p.key)},
-                            {"unit", p.unit},
-                            {"type", p.type == ParamType::Real      ? "real"
-                                     : p.type == ParamType::Integer ? "integer"
-                                                                    : "boolean"},
-                            {"min", p.min},
-                            {"max", p.max},
-                            {"help", p.help}});
-        }
-        list.push_back({{"name", t.name},
-                        {"summary", t.summary},
-                        {"after", t.source},
-                        {"needs_meshes", t.needs.meshes},
-                        {"parameters", params}});
-      }
-      j["techniques"] = list;
-      std::cout << j.dump(2) << '\n';
-      return;
-    }
-    std::printf("defaults derived for %s at %dx%d, MAR slope %s%s\n\n", c.display.name.c_str(),
-                sz.width, sz.height, format_number(judged.slope, 4).c_str(),
-                forced ? (", margin " + format_number(*forced, 3)).c_str()
-                       : " (each technique planned with its own margin)");
-    for (const TechniqueInfo& t : techniques()) {
-      std::printf("%s — %s\n  after: %s\n", t.name.c_str(), t.summary.c_str(), t.source.c_str());
-      if (t.needs.meshes) std::printf("  needs: a scene with meshes\n");
-      const ParamValues values = resolve_parameters(t, c);
-      for (const ParamDecl& p : t.params) {
-        const std::string value = fmt(values.real(p.key), p.type == ParamType::Real ? 3 : 0) +
-                                  (p.unit.empty() ? "" : " " + p.unit);
-        std::printf("  %-22s = %-14s %s [%s..%s]\n", p.key.c_str(), value.c_str(), p.help.c_str(),
-                    format_number(p.min).c_str(), format_number(p.max).c_str());
-      }
-      std::printf("\n");
-    }
-  });
-}
-
 const CommandRegistrar kRender(20, register_render);
-const CommandRegistrar kScenes(21, register_scenes);
-const CommandRegistrar kTechniques(22, register_techniques);
 
 }  // namespace foveate::app

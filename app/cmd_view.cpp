@@ -17,7 +17,8 @@
 #include "foveate/core/file.hpp"
 #include "foveate/gaze/gaze.hpp"
 #include "foveate/gpu/frame.hpp"
-#include "session.hpp"
+#include "messages.hpp"
+#include "session_args.hpp"
 #include "viewer/viewer.hpp"
 #include "viewer/viewer_script.hpp"
 #include "viewer/viewer_ui.hpp"
@@ -55,20 +56,20 @@ void run_view(const ViewArgs& a) {
   std::optional<Script> script;
   if (!a.commands.empty()) script.emplace(a.commands, "--commands");
   if (!a.script.empty()) script.emplace(read_file(a.script), "--script " + a.script);
-  SessionOptions o = to_session_options(a.session, "now");
+  bench::SessionOptions o = to_session_options(a.session, "now");
   o.window = true;
   o.window_size = {o.size.width * (o.stereo ? 2 : 1) + kPanelWidth, std::max(o.size.height, 560)};
   with_flag("--technique", [&] { return technique_info(a.technique); });
-  const ParamArgs params = parse_params(a.session.params);
+  const bench::ParamOverrides params = parse_params(a.session.params);
   // Any technique can be switched to: a KEY=VALUE must belong to one of them.
-  std::vector<std::string> all;
-  for (const TechniqueInfo& t : techniques()) all.push_back(t.name);
-  validate_params(params, all);
+  params.validate(technique_names());
   // The mouse is the gaze unless --gaze says otherwise (normalized, top-left),
   // while it is over the image and not over the panel or the divider.
   std::optional<Vec2d> mouse;
-  Session session(o, a.session.gaze.empty() ? "mouse" : a.session.gaze,
-                  [&]() -> std::optional<Vec2d> { return mouse; });
+  if (o.gaze.empty()) o.gaze = "mouse";
+  bench::SessionCallbacks callbacks = session_callbacks();
+  callbacks.mouse = [&]() -> std::optional<Vec2d> { return mouse; };
+  bench::Session session(o, callbacks);
   gpu::Window& window = *session.window();
   Viewer view(session, a.technique, params, a.session.quality, a.session.slope);
   view.set_overlay(a.overlay);
@@ -125,7 +126,7 @@ void run_view(const ViewArgs& a) {
     }
     const GazeState gaze = session.gaze().at(wall);
     FrameInput input = session.renderer().frame_input(frame);
-    input.time_s = o.start_time + wall;  // the viewer runs on the wall clock
+    input.time_s = o.start_time_s + wall;  // the viewer runs on the wall clock
     session.watchdog().run("frame " + std::to_string(frame) + " (" + view.technique().name() + ")",
                            [&] { view.render_frame(input, gaze, wall); });
     ui.draw(view);

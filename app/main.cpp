@@ -5,8 +5,10 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "foveate/bench/field_text.hpp"
 #include "foveate/core/error.hpp"
-#include "run_environment.hpp"
+#include "invocation.hpp"
+#include "messages.hpp"
 
 #ifndef FOVEATE_VERSION
 #define FOVEATE_VERSION "unknown"
@@ -25,6 +27,10 @@ int main(int argc, char** argv) {
     // CLI11 prints the message; --help and --version exit 0, every usage
     // error (unknown option, missing value, a value of the wrong type) 2.
     return app.exit(e) == 0 ? 0 : 2;
+  } catch (const foveate::bench::OptionError& e) {
+    // The library names the field; the command line says the flag.
+    std::fprintf(stderr, "foveate: error: %s\n", e.message(foveate::app::flag_for).c_str());
+    return 1;
   } catch (const foveate::Error& e) {
     std::fprintf(stderr, "foveate: error: %s\n", e.what());
     return 1;

@@ -11,35 +11,9 @@
 #include <filesystem>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/file.hpp"
 
 namespace foveate::app {
-
-void make_output_dir(const std::string& dir, const std::string& flag) {
-  namespace fs = std::filesystem;
-  const std::string name = flag + " " + dir;
-  if (dir.empty()) throw Error(flag + ": give a folder");
-  std::error_code ec;
-  const fs::file_status st = fs::status(dir, ec);
-  if (fs::exists(st)) {
-    if (!fs::is_directory(st)) throw Error(name + ": exists and is not a folder");
-    return;
-  }
-  // A new folder named like a file is almost always a mistaken --out
-  // (frames and reports go inside it, as frame-0000.png, results.json, ...).
-  std::string ext = fs::path(dir).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  for (const char* file : {".png", ".jpg", ".jpeg", ".mp4", ".mkv", ".webm", ".json", ".csv", ".md",
-                           ".html", ".txt"}) {
-    if (ext == file) {
-      throw Error(name + ": names a file (" + ext + "), but " + flag +
-                  " is the folder the outputs are written into; give a folder, e.g. " + flag + " " +
-                  fs::path(dir).replace_extension().string());
-    }
-  }
-  fs::create_directories(dir, ec);
-  if (ec) throw Error(name + ": cannot create the folder: " + ec.message());
-}
 
 OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag) {
   make_output_dir(dir, flag);

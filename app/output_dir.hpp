@@ -6,14 +6,10 @@
 
 namespace foveate::app {
 
-/// Creates `dir` and its parents; a foveate::Error names `flag`, the folder
-/// and the reason when it cannot.
-void make_output_dir(const std::string& dir, const std::string& flag);
-
-/// make_output_dir, then an exclusive lock (flock) on DIR/.foveate.lock, held
-/// until destruction or the end of the process (the kernel releases it even
-/// when the process is killed). A second run on the same folder gets an error
-/// naming the folder and the run that holds it. The lock file stays.
+/// make_output_dir (foveate/core/file.hpp), then an exclusive lock (flock) on DIR/.foveate.lock,
+/// held until destruction or the end of the process (the kernel releases it even when the process
+/// is killed). A second run on the same folder gets an error naming the folder and the run that
+/// holds it. The lock file stays.
 class OutputDirLock {
  public:
   OutputDirLock(const std::string& dir, const std::string& flag);

@@ -1,45 +1,54 @@
-// Running a benchmark in-process (the same run_bench as `foveate bench`),
+// The benchmark in-process (foveate::bench, as `foveate bench` runs it),
 // reading results back, and the techniques with their parameters.
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
-#include "bench.hpp"
 #include "convert.hpp"
+#include "foveate/bench/report.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/techniques/reference.hpp"
-#include "session.hpp"
 
 namespace foveate::python {
 
 namespace {
 
-// The app's messages name the command-line flag ("--size: ..."); here the
-// same value came as a keyword argument ("size: ...").
-[[noreturn]] void rethrow_for_python(const Error& e) {
-  std::string msg = e.what();
-  if (msg.rfind("--", 0) == 0) {
-    const auto colon = msg.find(':');
-    std::string flag = msg.substr(2, colon == std::string::npos ? 0 : colon - 2);
-    for (char& c : flag) c = c == '-' ? '_' : c;
-    if (flag == "no_metrics") flag = "metrics";
-    if (colon != std::string::npos) msg = flag + msg.substr(colon);
+// The library's fields as this module's keyword arguments, where they differ.
+std::string keyword_for(const std::string& field) {
+  if (field == "image_metrics") return "metrics";
+  if (field == "vergence_m") return "vergence";
+  return field;
+}
+
+// Runs `fn`; an error in one of the options names the keyword argument.
+template <class Fn>
+auto keywords(Fn&& fn) -> decltype(fn()) {
+  try {
+    return fn();
+  } catch (const bench::OptionError& e) {
+    throw Error(e.message(keyword_for));
   }
-  throw Error(msg);
 }
 
-std::string size_text(py::handle size) {
-  if (py::isinstance<py::str>(size)) return size.cast<std::string>();
+PixelSize size_from(py::handle size) {
+  if (py::isinstance<py::str>(size)) return parse_size(size.cast<std::string>(), "size");
   const Vec2d p = point_from(size, "size");
-  return std::to_string(static_cast<long long>(p.x)) + "x" +
-         std::to_string(static_cast<long long>(p.y));
+  return {static_cast<int>(p.x), static_cast<int>(p.y)};
 }
 
-std::vector<std::string> param_items(const py::dict& params) {
-  std::vector<std::string> out;
+std::optional<double> vergence_from(py::handle vergence) {
+  if (vergence.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(vergence) && vergence.cast<std::string>().empty())
+    return std::nullopt;
+  return py::float_(py::reinterpret_borrow<py::object>(vergence)).cast<double>();
+}
+
+bench::ParamOverrides params_from(const py::dict& params) {
+  bench::ParamOverrides out;
   for (const auto& [k, v] : params) {
     double value = 0;
     try {
@@ -48,66 +57,25 @@ std::vector<std::string> param_items(const py::dict& params) {
       throw py::type_error("params['" + std::string(py::str(k)) + "']: expected a number, got " +
                            std::string(py::repr(v)));
     }
-    std::ostringstream s;
-    s.precision(17);
-    s << std::string(py::str(k)) << "=" << value;
-    out.push_back(s.str());
+    out.set(std::string(py::str(k)), value);
   }
   return out;
 }
 
-py::dict run(const std::string& scene, const std::vector<std::string>& techniques, py::handle size,
-             int frames, int warmup, const std::string& display, const std::string& quality,
-             std::optional<double> slope, std::optional<double> margin, const py::dict& params,
-             const std::string& gaze, const std::string& reference, bool metrics,
-             const std::string& sweep, double fps, const std::string& out, const std::string& video,
-             bool side_by_side, bool images, bool stereo, const std::string& vergence) {
-  app::BenchOptions o;
-  try {
-    app::SessionArgs sa;
-    sa.scene = scene;
-    sa.size = size_text(size);
-    sa.display = display;
-    sa.quality = quality;
-    sa.slope = slope;
-    sa.margin = margin;
-    sa.params = param_items(params);
-    sa.gaze = gaze;
-    sa.fps = fps;
-    sa.stereo = stereo;
-    sa.vergence = vergence;
-    o.session = app::to_session_options(sa);
-    o.techniques = techniques;
-    for (const std::string& t : o.techniques)
-      app::with_flag("--techniques", [&] { return technique_info(t); });
-    o.params = app::parse_params(sa.params);
-    app::validate_params(o.params, o.techniques);
-    o.gaze = gaze;
-    o.frames = frames;
-    o.warmup = warmup;
-    o.image_metrics = metrics;
-    o.reference = app::with_flag("--reference", [&] { return parse_reference(reference); });
-    o.out = out;
-    o.progress = false;
-    o.command_line = "foveate.bench (Python)";
-    o.video = video;
-    o.side_by_side = side_by_side;
-    if (side_by_side && video.empty()) throw Error("--side-by-side: only with video=FILE");
-    if (!sweep.empty()) o.sweep = app::Sweep::parse(sweep);
-  } catch (const Error& e) {
-    rethrow_for_python(e);
-  }
-  app::BenchResult r;
-  {
-    py::gil_scoped_release unlocked;
-    try {
-      r = app::run_bench(o);
-      if (!out.empty()) app::write_bench_outputs(r);
-    } catch (const Error& e) {
-      rethrow_for_python(e);
-    }
-  }
-  auto d = to_python(app::bench_json(r)).cast<py::dict>();
+bench::Sweep sweep_from(py::handle sweep) {
+  if (sweep.is_none()) return {};
+  const auto t = sweep.cast<py::tuple>();
+  if (t.size() != 4) throw py::value_error("sweep: expected (key, from, to, step)");
+  return bench::Sweep::range(t[0].cast<std::string>(), t[1].cast<double>(), t[2].cast<double>(),
+                             t[3].cast<double>());
+}
+
+}  // namespace
+
+namespace {
+
+py::dict result_dict(const bench::BenchResult& r, bool images) {
+  auto d = to_python(bench::bench_json(r)).cast<py::dict>();
   d["gaze_report"] = r.gaze_report;
   d["video"] = r.video_summary.empty() ? py::object(py::none()) : py::str(r.video_summary);
   if (images) {
@@ -121,86 +89,133 @@ py::dict run(const std::string& scene, const std::vector<std::string>& technique
   return d;
 }
 
+py::dict run(const std::string& scene, std::optional<std::vector<std::string>> techniques,
+             py::handle size, int frames, int warmup, const std::string& display,
+             const std::string& quality, std::optional<double> slope, std::optional<double> margin,
+             const py::dict& params, const std::string& gaze, const std::string& reference,
+             bool metrics, py::handle sweep, double fps, const std::string& out,
+             const std::string& video, bool side_by_side, bool images, bool stereo,
+             py::handle vergence, double frame_timeout_s) {
+  bench::BenchOptions o;
+  keywords([&] {
+    o.session.scene = scene;
+    o.session.size = size_from(size);
+    o.session.display = display;
+    o.session.acuity = bench::acuity_from(quality, slope);
+    o.session.margin = margin;
+    o.session.gaze = gaze;
+    o.session.fps = fps;
+    o.session.stereo = stereo;
+    o.session.vergence_m = vergence_from(vergence);
+    o.session.frame_timeout_s = frame_timeout_s;
+    o.techniques = std::move(techniques);
+    o.params = params_from(params);
+    o.frames = frames;
+    o.warmup = warmup;
+    o.image_metrics = metrics;
+    o.reference = bench::for_field("reference", [&] { return parse_reference(reference); });
+    o.command = "foveate.bench (Python)";
+    o.video = video;
+    o.side_by_side = side_by_side;
+    o.sweep = sweep_from(sweep);
+    bench::validate(o);
+  });
+  bench::BenchResult r;
+  {
+    py::gil_scoped_release unlocked;
+    keywords([&] {
+      r = bench::run_bench(o);
+      if (!out.empty()) bench::write_bench_report(r, out);
+    });
+  }
+  return result_dict(r, images);
+}
+
+py::list technique_list(py::handle display, py::handle size, const AcuityModel& acuity) {
+  TechniqueConfig c;
+  const Vec2d sz = point_from(size, "size", {1920, 1080});
+  if (!(sz.x >= 1 && sz.y >= 1 && sz.x <= 16384 && sz.y <= 16384))
+    throw py::value_error("size: each side must be 1..16384");
+  c.display = display_from(display, static_cast<int>(sz.x), static_cast<int>(sz.y));
+  c.acuity = acuity;
+  py::list out;
+  for (const TechniqueInfo& t : foveate::techniques()) {
+    const ParamValues values = resolve_parameters(t, c);
+    py::list ps;
+    for (const ParamDecl& p : t.params) {
+      py::dict pd;
+      pd["key"] = p.key;
+      pd["help"] = p.help;
+      pd["unit"] = p.unit;
+      pd["type"] = param_type_name(p.type);
+      pd["min"] = p.min;
+      pd["max"] = p.max;
+      pd["default"] = values.real(p.key);
+      ps.append(pd);
+    }
+    py::dict td;
+    td["name"] = t.name;
+    td["summary"] = t.summary;
+    td["source"] = t.source;
+    td["needs_meshes"] = t.needs.meshes;
+    td["params"] = ps;
+    out.append(td);
+  }
+  return out;
+}
+
+py::object read_results(const std::string& path) {
+  std::error_code ec;
+  const std::string file = std::filesystem::is_directory(path, ec)
+                               ? (std::filesystem::path(path) / "results.json").string()
+                               : path;
+  const std::string text = read_file(file);
+  try {
+    return to_python(nlohmann::json::parse(text));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(file + ": not valid JSON: " + e.what());
+  }
+}
+
 }  // namespace
 
 void bind_bench(py::module_& m) {
+  const bench::BenchOptions defaults;
   m.def("bench", &run, py::kw_only(), py::arg("scene") = "cheap",
-        py::arg("techniques") =
-            std::vector<std::string>{"native", "layered", "logpolar", "checkerboard", "inset"},
-        py::arg("size") = "960x540", py::arg("frames") = 10, py::arg("warmup") = 2,
-        py::arg("display") = "desktop-1080p", py::arg("quality") = "",
+        py::arg("techniques") = py::none(), py::arg("size") = "960x540",
+        py::arg("frames") = defaults.frames, py::arg("warmup") = defaults.warmup,
+        py::arg("display") = defaults.session.display, py::arg("quality") = "",
         py::arg("slope") = py::none(), py::arg("margin") = py::none(),
         py::arg("params") = py::dict(), py::arg("gaze") = "", py::arg("reference") = "native",
-        py::arg("metrics") = true, py::arg("sweep") = "", py::arg("fps") = 60.0,
-        py::arg("out") = "", py::arg("video") = "", py::arg("side_by_side") = false,
-        py::arg("images") = false, py::arg("stereo") = false, py::arg("vergence") = "",
+        py::arg("metrics") = defaults.image_metrics, py::arg("sweep") = py::none(),
+        py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("video") = "",
+        py::arg("side_by_side") = false, py::arg("images") = false, py::arg("stereo") = false,
+        py::arg("vergence") = py::none(),
+        py::arg("frame_timeout_s") = defaults.session.frame_timeout_s,
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
-entry per technique (mean_ms, median_ms, speedup (mean over mean), speedup_ci95, shaded_pixels, pixel_ratio,
-quality, ...). Arguments as the command's options: size "WxH" or (w, h); params
-{"layers": 3} or {"layered.layers": 3}; gaze a --gaze spec ("0.3,0.4",
-"synthetic:7", "trace:FILE"); reference "native" or "ssaa:4"; margin as
---margin (plan every technique for an acuity that many times finer than the
-metrics'; None: each technique's own planning margin); sweep "slope=0.02:0.03:0.005" or "margin=1:2:0.5"; out a folder for results.json, .csv, .md, report.html;
-video a file (.mp4) of the frames. images=True adds each technique's last frame
-("image", HxWx3 uint8) and "native_image". stereo=True renders both eyes of a
-stereo display (display="hmd-quest2"; size is one eye's; vergence "2" metres or
-"inf"): "stereo" and each result's "eyes" hold the per-eye figures.)");
-  m.def(
-      "read_results",
-      [](const std::string& path) {
-        std::error_code ec;
-        const std::string file = std::filesystem::is_directory(path, ec)
-                                     ? (std::filesystem::path(path) / "results.json").string()
-                                     : path;
-        const std::string text = read_file(file);
-        try {
-          return to_python(nlohmann::json::parse(text));
-        } catch (const nlohmann::json::exception& e) {
-          throw Error(file + ": not valid JSON: " + e.what());
-        }
-      },
-      py::arg("path"), "results.json of a bench run (the file or its folder) as a dict");
-  m.def(
-      "techniques",
-      [](py::handle display, py::handle size, const AcuityModel& acuity) {
-        TechniqueConfig c;
-        const Vec2d sz = point_from(size, "size", {1920, 1080});
-        if (!(sz.x >= 1 && sz.y >= 1 && sz.x <= 16384 && sz.y <= 16384))
-          throw py::value_error("size: each side must be 1..16384");
-        c.display = display_from(display, static_cast<int>(sz.x), static_cast<int>(sz.y));
-        c.acuity = acuity;
-        py::list out;
-        for (const TechniqueInfo& t : foveate::techniques()) {
-          const ParamValues values = resolve_parameters(t, c);
-          py::list params;
-          for (const ParamDecl& p : t.params) {
-            py::dict pd;
-            pd["key"] = p.key;
-            pd["help"] = p.help;
-            pd["unit"] = p.unit;
-            pd["type"] = p.type == ParamType::Real      ? "real"
-                         : p.type == ParamType::Integer ? "integer"
-                                                        : "boolean";
-            pd["min"] = p.min;
-            pd["max"] = p.max;
-            pd["default"] = values.real(p.key);
-            params.append(pd);
-          }
-          py::dict td;
-          td["name"] = t.name;
-          td["summary"] = t.summary;
-          td["source"] = t.source;
-          td["needs_meshes"] = t.needs.meshes;
-          td["params"] = params;
-          out.append(td);
-        }
-        return out;
-      },
-      py::arg("display") = "desktop-1080p", py::arg("size") = py::none(),
-      py::arg("acuity") = AcuityModel{},
-      "Every technique with its parameters and the defaults derived for the display at `size` "
-      "((w, h), default the display's own 1920x1080)");
+entry per technique (mean_ms, median_ms, speedup (mean over mean), speedup_ci95,
+shaded_pixels, pixel_ratio, quality, ...). techniques: a list of names; None
+measures every registered technique the scene can run (the others are listed
+in "skipped"). size "WxH" or (w, h); params {"layers": 3} or
+{"layered.layers": 3}; gaze a --gaze spec ("0.3,0.4", "synthetic:7",
+"trace:FILE"); reference "native" or "ssaa:4"; margin as --margin (plan every
+technique for an acuity that many times finer than the metrics'; None: each
+technique's own planning margin); sweep (key, from, to, step), e.g.
+("slope", 0.02, 0.03, 0.005) or ("margin", 1, 2, 0.5); out a folder for
+results.json, .csv, .md, report.html; video a file (.mp4) of the frames.
+images=True adds each technique's last frame ("image", HxWx3 uint8) and
+"native_image". stereo=True renders both eyes of a stereo display
+(display="hmd-quest2"; size is one eye's; vergence in metres, 2 or "inf"):
+"stereo" and each result's "eyes" hold the per-eye figures. frame_timeout_s:
+a frame whose GPU work runs longer raises foveate.Error once it has finished
+(a GL draw cannot be interrupted); 0 = no limit.)");
+  m.def("read_results", &read_results, py::arg("path"),
+        "results.json of a bench run (the file or its folder) as a dict");
+  m.def("techniques", &technique_list, py::arg("display") = "desktop-1080p",
+        py::arg("size") = py::none(), py::arg("acuity") = AcuityModel{},
+        "Every technique with its parameters and the defaults derived for the display at `size` "
+        "((w, h), default the display's own 1920x1080)");
 }
 
 }  // namespace foveate::python

@@ -36,6 +36,8 @@ Display display_from(const py::handle& obj, int width = 0, int height = 0);
 /// (x, y) from any sequence of two numbers; None gives `fallback`.
 Vec2d point_from(const py::handle& obj, const std::string& what, Vec2d fallback = {});
 
+/// Binds everything below into `m`, with foveate.Error.
+void bind_module(py::module_& m);
 void bind_core(py::module_& m);
 void bind_metrics(py::module_& m);
 void bind_bench(py::module_& m);

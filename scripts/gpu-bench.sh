@@ -48,7 +48,6 @@ bin=${FOVEATE_BIN:-build/release/app/foveate}
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-all=native,layered,logpolar,checkerboard,inset,vrs
 
 # The renderer string names the file.
 "$bin" bench --scene cheap --size 64x36 --frames 1 --techniques native --no-metrics --quiet \
@@ -82,18 +81,17 @@ tmpdoc="$work/doc.md"
 
 IFS=, read -r -a size_list <<< "$sizes"
 for size in "${size_list[@]}"; do
+  # Every technique the scene can run (bench's default: lodmask needs meshes).
   for scene in guenter raymarch examples/shadertoy/mandelbulb.glsl; do
-    techniques=$all
-    [ "$scene" = guenter ] && techniques=$all,lodmask
     name=$(basename "$scene" .glsl)
     dir="$work/$name-$size"
     echo "gpu-bench.sh: $name at $size" >&2
-    "$bin" bench --scene "$scene" --size "$size" --techniques "$techniques" --frames "$frames" \
+    "$bin" bench --scene "$scene" --size "$size" --frames "$frames" \
       --no-metrics --passes "${plan[@]}" --quiet --out "$dir" >/dev/null
     {
       echo "## $name at $size"
       echo
-      echo "\`foveate bench --scene $scene --size $size --techniques $techniques --frames $frames --no-metrics --passes$shown_plan\`"
+      echo "\`foveate bench --scene $scene --size $size --frames $frames --no-metrics --passes$shown_plan\`"
       echo
       cat "$dir/results.md"
       echo
@@ -110,16 +108,14 @@ first=${size_list[0]}
 # alone takes minutes a frame at 1080p).
 if [ "$quality" = 1 ]; then
   for scene in guenter raymarch; do
-    techniques=$all
-    [ "$scene" = guenter ] && techniques=$all,lodmask
     dir="$work/quality-$scene"
     echo "gpu-bench.sh: $scene against the 4x4 reference" >&2
-    "$bin" bench --scene "$scene" --size $first --techniques "$techniques" --reference ssaa:4 \
+    "$bin" bench --scene "$scene" --size $first --reference ssaa:4 \
       --frames 3 --warmup 2 "${plan[@]}" --quiet --out "$dir" >/dev/null
     {
       echo "## Quality: $scene at $first against the 4x4 supersampled reference"
       echo
-      echo "\`foveate bench --scene $scene --size $first --techniques $techniques --reference ssaa:4 --frames 3 --warmup 2$shown_plan\`"
+      echo "\`foveate bench --scene $scene --size $first --reference ssaa:4 --frames 3 --warmup 2$shown_plan\`"
       echo
       sed -n '/^| technique/,/^$/p' "$dir/results.md"
     } >> "$tmpdoc"

@@ -11,10 +11,11 @@ jobs=$(nproc)
 cmake --preset debug >/dev/null
 cmake --build --preset debug -j "$jobs"
 
-# The installed package works for consumers: a planner program and a user's
-# own scene foveated by a technique.
+# The installed package works for consumers: a planner program, a user's
+# own scene foveated by a technique, and a benchmark run with a technique of
+# the program's own, its report written.
 prefix=$(pwd)/build/debug-install
-rm -rf "$prefix" build/consumer build/own_renderer
+rm -rf "$prefix" build/consumer build/own_renderer build/bench_consumer
 cmake --install build/debug --prefix "$prefix" >/dev/null
 cmake -S examples/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build build/consumer >/dev/null
@@ -22,7 +23,10 @@ cmake --build build/consumer >/dev/null
 cmake -S examples/own_renderer -B build/own_renderer -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build build/own_renderer >/dev/null
 (cd build/own_renderer && ./own_renderer layered own_renderer.png && ./own_renderer letterbox letterbox.png)
-echo "installed package: consumer and own_renderer built with find_package(foveate) and ran"
+cmake -S examples/bench_consumer -B build/bench_consumer -G Ninja -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build build/bench_consumer >/dev/null
+(cd build/bench_consumer && ./bench_consumer report >/dev/null && test -s report/report.html && test -s report/results.json)
+echo "installed package: consumer, own_renderer and bench_consumer built with find_package(foveate) and ran"
 
 # FovVideoVDP's reference values (../shared/fvvdp beside the clone, as in CI):
 # when they are there, the tests that read them must run, not skip.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cli_util.hpp"
 #include "foveate/core/error.hpp"
 
 namespace foveate::app::viewer {
@@ -22,48 +23,37 @@ double ema(double old, double sample, double weight, bool first) {
 
 }  // namespace
 
-Viewer::Viewer(Session& session, const std::string& technique, const ParamArgs& params,
-               const std::string& quality, std::optional<double> slope)
+Viewer::Viewer(bench::Session& session, const std::string& technique,
+               const bench::ParamOverrides& params, const std::string& quality,
+               std::optional<double> slope)
     : session_(session), name_(technique) {
-  acuity_ = acuity_from_options(quality, slope);
+  acuity_ = bench::acuity_from(quality, slope);
   quality_ =
       slope ? "custom" : (quality.empty() ? "A" : std::string(1, char(std::toupper(quality[0]))));
   for (const TechniqueInfo& t : techniques()) {
     if (!scene_mismatch(t, session_.scene().info()).empty()) continue;
     available_.push_back(t.name);
-    params_[t.name] = params_for(params, t.name);
+    params_[t.name] = params.for_technique(t.name);
   }
   // The one asked for: refused with render's message when the scene cannot
   // run it (lodmask without meshes), its --param values checked.
   with_flag("--technique", [&] { return technique_info(technique); });
-  params_[technique] = params_for(params, technique);
-  technique_ = with_flag("--param", [&] { return build(technique); });
-  right_technique_ = with_flag("--param", [&] { return build_right(technique); });
+  params_[technique] = params.for_technique(technique);
+  technique_ = build(technique);
   native_ = build("native");
-  right_native_ = build_right("native");
 }
 
 Viewer::~Viewer() = default;
 
-std::unique_ptr<Technique> Viewer::build_right(const std::string& name) const {
-  return session_.options().stereo ? build(name, Eye::Right) : nullptr;
-}
-
-std::unique_ptr<Technique> Viewer::build(const std::string& name, Eye eye) const {
-  const TechniqueInfo& info = technique_info(name);
-  check_scene(info, session_.scene().info());
-  TechniqueConfig c;
-  c.display = session_.options().stereo ? session_.stereo_display().eye(eye) : session_.display();
-  c.acuity = acuity_;
-  c.margin = session_.options().margin;  // --margin, else each technique's own
-  auto it = params_.find(name);
-  if (it != params_.end()) c.params = it->second;
-  return make_technique(name, c);
+bench::SessionTechnique Viewer::build(const std::string& name) const {
+  bench::ParamOverrides mine;
+  if (const auto it = params_.find(name); it != params_.end())
+    mine.per_technique[name] = it->second;
+  return session_.make(name, mine, acuity_);
 }
 
 void Viewer::rebuild() {
   technique_ = build(name_);
-  right_technique_ = build_right(name_);
   frames_since_build_ = 0;
 }
 
@@ -73,10 +63,7 @@ void Viewer::set_technique(const std::string& name) {
   if (name == name_) return;
   const TechniqueInfo& info = technique_info(name);  // names the unknown one
   check_scene(info, session_.scene().info());
-  auto t = build(name);
-  auto right = build_right(name);
-  technique_ = std::move(t);
-  right_technique_ = std::move(right);
+  technique_ = build(name);
   name_ = name;
   frames_since_build_ = 0;
 }
@@ -96,10 +83,7 @@ void Viewer::set_param(const std::string& technique, const std::string& key, dou
     if (tech == name_) {
       rebuild();
     } else {
-      TechniqueConfig c;
-      c.display = session_.display();
-      c.acuity = acuity_;
-      c.margin = session_.options().margin;  // --margin, else each technique's own
+      TechniqueConfig c = session_.technique_config(Eye::Left, acuity_);
       c.params = mine;
       const ParamValues v = resolve_parameters(info, c);
       if (info.check) info.check(v);
@@ -164,10 +148,7 @@ void Viewer::set_divider(double fraction) {
   divider_ = fraction;
 }
 
-void Viewer::set_overlay(bool on) {
-  if (StereoRenderer* stereo = session_.stereo()) stereo->set_overlay(on);
-  session_.renderer().set_overlay(on);
-}
+void Viewer::set_overlay(bool on) { session_.set_overlay(on); }
 
 std::optional<double> Viewer::speedup() const {
   if (name_ == "native") return 1.0;
@@ -177,7 +158,7 @@ std::optional<double> Viewer::speedup() const {
 
 std::vector<LegendEntry> Viewer::legend() const {
   std::vector<LegendEntry> out;
-  for (const OverlayShape& s : technique_->overlay(gaze_)) {
+  for (const OverlayShape& s : technique_.view->overlay(gaze_)) {
     const std::string label = s.label.empty() ? "(unlabelled)" : s.label;
     const bool seen = std::any_of(out.begin(), out.end(), [&](const LegendEntry& e) {
       return e.label == label && e.r == s.r && e.g == s.g && e.b == s.b;
@@ -187,30 +168,14 @@ std::vector<LegendEntry> Viewer::legend() const {
   return out;
 }
 
-double Viewer::timed_render(Technique& t, Technique* right, const FrameInput& input,
-                            const GazeState& gaze, bool overlay, FrameStats* stats) {
-  Renderer& r = session_.renderer();
-  StereoRenderer* stereo = session_.stereo();
-  const bool was = r.options().overlay;
-  if (stereo) stereo->set_overlay(overlay && was);
-  r.set_overlay(overlay && was);
+double Viewer::timed_render(bench::SessionTechnique& t, const FrameInput& input,
+                            const GazeState& gaze, bool with_overlay, FrameStats* stats) {
+  const bool was = overlay();
+  session_.set_overlay(with_overlay && was);
   timer_.start();
-  FrameStats s;
-  if (stereo && right) {
-    FrameInput in = input;
-    in.eye.reset();  // each eye sets its own
-    const std::array<FrameStats, 2> st = stereo->render(t, *right, in, session_.eye_gazes(gaze));
-    s = st[0];
-    s.shaded_pixels += st[1].shaded_pixels;
-    s.native_pixels += st[1].native_pixels;
-    for (size_t p = 0; p < s.parts.size() && p < st[1].parts.size(); ++p)
-      s.parts[p].pixels += st[1].parts[p].pixels;
-  } else {
-    s = r.render(t, input, gaze);
-  }
+  FrameStats s = session_.render(t, input, gaze).total;
   const double ms = timer_.stop();
-  if (stereo) stereo->set_overlay(was);
-  r.set_overlay(was);
+  session_.set_overlay(was);
   if (stats) *stats = std::move(s);
   return ms;
 }
@@ -252,27 +217,27 @@ void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double
   if (native_due) {
     // Native on the same frame, timed alike; its image is not shown.
     next_native_s_ = wall_s + kNativePeriodS;
-    record_native(timed_render(*native_, right_native_.get(), input, gaze, false, nullptr));
+    record_native(timed_render(native_, input, gaze, false, nullptr));
   }
   const int W = width();
   const int split_px = std::clamp(static_cast<int>(std::lround(divider_ * W)), 0, W);
   if (split_) {
     // Left: native; right: the technique.
-    const double nms = timed_render(*native_, right_native_.get(), input, gaze, false, nullptr);
+    const double nms = timed_render(native_, input, gaze, false, nullptr);
     record_native(nms);
     blit_columns(0, split_px);
   }
   if (show_native_ && !split_) {
-    const double nms = timed_render(*native_, right_native_.get(), input, gaze, false, nullptr);
+    const double nms = timed_render(native_, input, gaze, false, nullptr);
     record_native(nms);
     blit_columns(0, W);
   } else {
     FrameStats s;
-    const double ms = timed_render(*technique_, right_technique_.get(), input, gaze, true, &s);
+    const double ms = timed_render(technique_, input, gaze, true, &s);
     stats_.last = std::move(s);
     stats_.last_ms = ms;
     // The first frames after a (re)build compile shaders and fill history.
-    const bool settling = frames_since_build_ <= technique_->settle_frames();
+    const bool settling = frames_since_build_ <= technique_.view->settle_frames();
     stats_.frame_ms = ema(stats_.frame_ms, ms, kFrameWeight, settling || stats_.frame_ms <= 0);
     ++frames_since_build_;
     blit_columns(split_ ? split_px : 0, W);
@@ -289,7 +254,7 @@ nlohmann::json Viewer::state() const {
   j["frame"] = frame_;
   j["technique"] = name_;
   nlohmann::json params = nlohmann::json::object();
-  for (const auto& [k, v] : technique_->values().items()) params[k] = v;
+  for (const auto& [k, v] : technique_.view->values().items()) params[k] = v;
   j["params"] = params;
   nlohmann::json over = nlohmann::json::object();
   for (const auto& [k, v] : overrides()) over[k] = v;

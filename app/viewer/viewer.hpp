@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "foveate/bench/session.hpp"
 #include "foveate/gpu/frame.hpp"
-#include "session.hpp"
 
 namespace foveate::app::viewer {
 
@@ -36,7 +36,7 @@ class Viewer {
  public:
   /// `params` (from --param) seed every technique's parameters; the quality
   /// ("A", "B" or "" for A) or `slope` the acuity model.
-  Viewer(Session& session, const std::string& technique, const ParamArgs& params,
+  Viewer(bench::Session& session, const std::string& technique, const bench::ParamOverrides& params,
          const std::string& quality, std::optional<double> slope);
   ~Viewer();
 
@@ -60,7 +60,7 @@ class Viewer {
   // State.
   [[nodiscard]] const std::vector<std::string>& available() const { return available_; }
   [[nodiscard]] const std::string& technique_name() const { return name_; }
-  [[nodiscard]] const Technique& technique() const { return *technique_; }
+  [[nodiscard]] const Technique& technique() const { return *technique_.view; }
   [[nodiscard]] const std::map<std::string, double>& overrides() const;
   [[nodiscard]] const std::string& quality() const { return quality_; }  ///< "A", "B", "custom"
   [[nodiscard]] double slope() const { return acuity_.slope; }
@@ -78,7 +78,7 @@ class Viewer {
     return session_.options().size.width * (session_.options().stereo ? 2 : 1);
   }
   [[nodiscard]] int height() const { return session_.options().size.height; }
-  [[nodiscard]] Session& session() { return session_; }
+  [[nodiscard]] bench::Session& session() { return session_; }
 
   /// Renders one frame (wall time `wall_s` since the start) and copies it to
   /// the window's top-left W x H; the rest of the window is cleared for the UI.
@@ -90,24 +90,20 @@ class Viewer {
   void rebuild();
   /// Rebuilds with `next`; restores the previous model when that fails.
   void use_acuity(const AcuityModel& next);
-  /// `eye` picks the eye's display in stereo sessions.
-  std::unique_ptr<Technique> build(const std::string& name, Eye eye = Eye::Left) const;
-  /// The right eye's instance (stereo sessions; null otherwise).
-  std::unique_ptr<Technique> build_right(const std::string& name) const;
-  double timed_render(Technique& t, Technique* right, const FrameInput& input,
-                      const GazeState& gaze, bool overlay, FrameStats* stats);
+  /// The technique with its overrides (one instance per eye in stereo).
+  bench::SessionTechnique build(const std::string& name) const;
+  double timed_render(bench::SessionTechnique& t, const FrameInput& input, const GazeState& gaze,
+                      bool with_overlay, FrameStats* stats);
   void blit_columns(int x0, int x1);
 
-  Session& session_;
+  bench::Session& session_;
   std::vector<std::string> available_;
   std::map<std::string, std::map<std::string, double>> params_;  // per technique
   std::string name_;
   std::string quality_ = "A";
   AcuityModel acuity_;
-  std::unique_ptr<Technique> technique_;  ///< the one view's, or the left eye's
-  std::unique_ptr<Technique> native_;
-  std::unique_ptr<Technique> right_technique_;  ///< stereo: the right eye's own instances
-  std::unique_ptr<Technique> right_native_;
+  bench::SessionTechnique technique_;
+  bench::SessionTechnique native_;
   bool show_native_ = false;
   bool split_ = false;
   double divider_ = 0.5;

@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -124,6 +126,33 @@ void write_file_atomic(const std::string& path, std::string_view contents) {
     fs::remove(tmp, ec);
     throw Error(path + ": cannot move the finished file into place: " + ec.message());
   }
+}
+
+void make_output_dir(const std::string& dir, const std::string& option) {
+  namespace fs = std::filesystem;
+  const std::string name = option + " " + dir;
+  if (dir.empty()) throw Error(option + ": give a folder");
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);
+  if (fs::exists(st)) {
+    if (!fs::is_directory(st)) throw Error(name + ": exists and is not a folder");
+    return;
+  }
+  // A new folder named like a file is almost always a mistaken output
+  // folder (frames and reports go inside it, as frame-0000.png, results.json, ...).
+  std::string ext = fs::path(dir).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  for (const char* file : {".png", ".jpg", ".jpeg", ".mp4", ".mkv", ".webm", ".json", ".csv", ".md",
+                           ".html", ".txt"}) {
+    if (ext == file) {
+      throw Error(name + ": names a file (" + ext + "), but " + option +
+                  " is the folder the outputs are written into; give a folder, e.g. " + option +
+                  " " + fs::path(dir).replace_extension().string());
+    }
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw Error(name + ": cannot create the folder: " + ec.message());
 }
 
 }  // namespace foveate

@@ -27,6 +27,12 @@ std::string format_number(double v, int max_decimals) {
   return s;
 }
 
+std::string format_fixed(double value, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, value);
+  return buf;
+}
+
 bool parse_number(const std::string& s, double& out) {
   if (s.empty()) return false;
   char* end = nullptr;
@@ -50,6 +56,27 @@ Vec2d parse_point(const std::string& text, int width, int height, const std::str
     throw Error(option + ": point '" + text + "' is absurdly far off screen");
   }
   return {x, y};
+}
+
+std::string size_problem(PixelSize size) {
+  if (size.width >= 1 && size.height >= 1 && size.width <= kMaxSizePx && size.height <= kMaxSizePx)
+    return {};
+  return "each side must be 1.." + std::to_string(kMaxSizePx) + " pixels, got " +
+         std::to_string(size.width) + "x" + std::to_string(size.height);
+}
+
+PixelSize parse_size(const std::string& text, const std::string& option) {
+  const auto x = text.find_first_of("xX");
+  double w = 0, h = 0;
+  if (x == std::string::npos || !parse_number(text.substr(0, x), w) ||
+      !parse_number(text.substr(x + 1), h) || w != std::floor(w) || h != std::floor(h)) {
+    throw Error(option + ": expected WIDTHxHEIGHT in pixels (e.g. 640x360), got '" + text + "'");
+  }
+  if (w < 1 || h < 1 || w > kMaxSizePx || h > kMaxSizePx) {
+    throw Error(option + ": each side must be 1.." + std::to_string(kMaxSizePx) + " pixels, got '" +
+                text + "'");
+  }
+  return {static_cast<int>(w), static_cast<int>(h)};
 }
 
 }  // namespace foveate

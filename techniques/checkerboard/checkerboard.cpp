@@ -34,8 +34,8 @@
 #include <string>
 #include <tuple>
 
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -236,7 +236,7 @@ class Checkerboard final : public Technique {
   double blend_;
   std::array<double, 3> thresholds_px_{};
   std::array<double, 3> sigmas_{};  // reconstruction Gaussian of regions 1..3, pixels
-  Kit kit_;
+  PassKit kit_;
   gpu::RenderTarget frame_;
   int scale_ = 2;                             // f: pixels per texel of the filtered images
   std::array<gpu::RenderTarget, 3> reduced_;  // block average, horizontal, vertical
@@ -295,6 +295,8 @@ TechniqueInfo checkerboard_info() {
             "after it",
             "", ParamType::Real, 0.0, 1.0, 0.2),
   };
+  t.resolve_passes = {"reconstruct_down", "reconstruct_h", "reconstruct", "reconstruct_fovea",
+                      "reconstruct_outer"};
   t.make = construct<Checkerboard>();
   return t;
 }

@@ -1,10 +1,12 @@
 #include "foveate/techniques/reference.hpp"
 
+#include <cmath>
+
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 #include "foveate/techniques/technique.hpp"
-#include "kit.hpp"
 
 namespace foveate {
 
@@ -12,7 +14,7 @@ struct SupersampledReference::Impl {
   Display display;
   std::unique_ptr<Technique> native;
   gpu::RenderTarget big, out;
-  tech::Kit kit;
+  tech::PassKit kit;
 };
 
 SupersampledReference::SupersampledReference(const Display& display, int factor)

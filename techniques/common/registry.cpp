@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "foveate/core/error.hpp"
-#include "kit.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate {
 
@@ -19,7 +19,8 @@ std::string number(double v) {
   return buf;
 }
 
-const char* type_name(ParamType t) {
+// What a value of the type must be, for errors.
+const char* type_requirement(ParamType t) {
   switch (t) {
     case ParamType::Integer:
       return "a whole number";
@@ -98,7 +99,24 @@ int ParamValues::integer(std::string_view key) const {
 
 bool ParamValues::boolean(std::string_view key) const { return real(key) != 0.0; }
 
+const char* param_type_name(ParamType t) {
+  switch (t) {
+    case ParamType::Integer:
+      return "integer";
+    case ParamType::Boolean:
+      return "boolean";
+    default:
+      return "real";
+  }
+}
+
 const std::vector<TechniqueInfo>& techniques() { return registry().all; }
+
+std::vector<std::string> technique_names() {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
+  return names;
+}
 
 void register_technique(TechniqueInfo info) {
   validate_declaration(info);
@@ -128,7 +146,7 @@ void check_value(const TechniqueInfo& info, const ParamDecl& p, double x) {
                 (p.unit.empty() ? "" : " " + p.unit));
   }
   if (p.type != ParamType::Real && x != std::floor(x))
-    throw Error(what + ": must be " + type_name(p.type));
+    throw Error(what + ": must be " + type_requirement(p.type));
 }
 
 }  // namespace
@@ -217,7 +235,7 @@ void check_scene(const TechniqueInfo& info, const SceneInfo& scene) {
 }
 
 struct OverlayRenderer::Impl {
-  tech::Kit kit;
+  tech::PassKit kit;
 };
 
 OverlayRenderer::OverlayRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -225,7 +243,7 @@ OverlayRenderer::~OverlayRenderer() = default;
 
 void OverlayRenderer::draw(const std::vector<OverlayShape>& shapes,
                            const gpu::RenderTarget& target) {
-  tech::Kit& kit = impl_->kit;
+  tech::PassKit& kit = impl_->kit;
   const gpu::Program& p = kit.fullscreen("common/overlay.frag");
   const int n = static_cast<int>(std::min<size_t>(shapes.size(), 32));
   const int height = target.height();

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <tuple>
 
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -128,7 +128,7 @@ class Inset final : public Technique {
  private:
   Display display_;
   double scale_, fovea_deg_, border_frac_, latency_ms_, max_saccade_, blur_;
-  Kit kit_;
+  PassKit kit_;
   gpu::RenderTarget blurred_;  // the periphery after the tent blur
   gpu::RenderTarget periphery_, inset_;
 };
@@ -165,6 +165,7 @@ TechniqueInfo inset_info() {
       param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
             ParamType::Real, 0.0, 4.0, 1.0),
   };
+  t.resolve_passes = {"blur", "upscale", "composite"};
   t.make = construct<Inset>();
   return t;
 }

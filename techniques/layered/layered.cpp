@@ -28,12 +28,12 @@
 #include <optional>
 #include <string>
 
-#include "../common/kit.hpp"
-#include "../common/regions.hpp"
 #include "../common/registry.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/profiler.hpp"
+#include "foveate/techniques/depth_regions.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -498,7 +498,7 @@ class Layered final : public Technique {
   int msaa_;
   int layer_lod_;
   LayerPlan plan_;
-  Kit kit_;
+  PassKit kit_;
   std::array<LayerState, kMaxLayers> state_;
   int frames_ = 0;
 };
@@ -556,6 +556,8 @@ TechniqueInfo layered_info() {
             "", ParamType::Integer, 0, 2, 0),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
+  t.resolve_passes = {"temporal", "temporal_reproject", "copy",
+                      "warp",     "composite",          "composite_inner"};
   t.make = construct<Layered>();
   return t;
 }

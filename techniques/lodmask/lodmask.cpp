@@ -22,9 +22,9 @@
 #include <cmath>
 #include <tuple>
 
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -175,7 +175,7 @@ class LodMask final : public Technique {
   double hold_px_;
   bool held_ = false;
   Vec2d held_centre_{};
-  Kit kit_;
+  PassKit kit_;
 };
 
 }  // namespace

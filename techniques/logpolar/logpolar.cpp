@@ -43,8 +43,8 @@
 #include <optional>
 #include <tuple>
 
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -409,7 +409,7 @@ class LogPolar final : public Technique {
   double fovea_deg_, history_;
   KernelLogPolar model_;
   KernelPlan plan_;
-  Kit kit_;
+  PassKit kit_;
   gpu::RenderTarget buffer_, fovea_;
   gpu::RenderTarget blurred_;  // the shown buffer with the second level's Gaussian
   std::array<gpu::RenderTarget, 2> history_targets_;
@@ -464,6 +464,8 @@ TechniqueInfo logpolar_info() {
             "supersampled reference it adds more acuity error than it removes (docs/fidelity.md)",
             "", ParamType::Real, 0.0, 0.95, 0.0),
   };
+  t.resolve_passes = {"temporal", "temporal_reproject", "blur",
+                      "inverse",  "inverse_fovea",      "inverse_outer"};
   t.make = construct<LogPolar>();
   return t;
 }

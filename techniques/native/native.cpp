@@ -1,6 +1,6 @@
 // native: the reference. Every pixel shaded once, at the display's sampling.
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -21,7 +21,7 @@ class Native final : public Technique {
   std::vector<OverlayShape> overlay(const GazeState& g) const override { return {gaze_dot(g)}; }
 
  private:
-  Kit kit_;
+  PassKit kit_;
 };
 
 }  // namespace

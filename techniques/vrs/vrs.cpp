@@ -20,10 +20,10 @@
 #include <optional>
 #include <string>
 
-#include "../common/kit.hpp"
 #include "../common/registry.hpp"
 #include "foveate/core/shading_rate.hpp"
 #include "foveate/gpu/profiler.hpp"
+#include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
 
@@ -494,7 +494,7 @@ class Vrs final : public Technique {
   mutable std::array<double, 4> cached_key_{};
   mutable ShadingRateImage cached_rates_;
   bool fixed_;
-  Kit kit_;
+  PassKit kit_;
   gpu::Texture classes_;
   int grid_w_ = 0, grid_h_ = 0;
   std::array<gpu::RenderTarget, kClasses> targets_;
@@ -534,6 +534,7 @@ TechniqueInfo vrs_info() {
                            "fragments made from a full-resolution frame (as slow as native; "
                            "to test and judge that path without the GPU)",
                            "", ParamType::Boolean, 0, 1, 0));
+  t.resolve_passes = {"hardware_reconstruct", "reconstruct", "reconstruct_copy"};
   t.make = construct<Vrs>();
   return t;
 }

@@ -46,7 +46,7 @@ def test_parameters_sweeps_and_video(fv, tmp_path):
     r = tiny(fv, techniques=["layered"], params={"layered.layers": 2}, metrics=False)
     assert [x["technique"] for x in r["results"]] == ["layered"]  # native measured, not listed
     assert r["results"][0]["parameters"]["layers"] == 2
-    s = tiny(fv, techniques=["layered"], sweep="slope=0.02:0.03:0.01", metrics=False, frames=1)
+    s = tiny(fv, techniques=["layered"], sweep=("slope", 0.02, 0.03, 0.01), metrics=False, frames=1)
     assert [x["sweep_value"] for x in s["results"]] == pytest.approx([0.02, 0.03])
     m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=2.0, metrics=False, frames=1)
     plain = tiny(fv, techniques=["checkerboard"], size=(640, 360), metrics=False, frames=1)
@@ -72,13 +72,29 @@ def test_bad_bench_input_raises(fv, tmp_path):
         tiny(fv, params={"nope": 1})
     with pytest.raises(TypeError, match="params\\['layers'\\]: expected a number"):
         tiny(fv, params={"layers": "three"})
-    with pytest.raises(fv.Error, match="frames"):
+    with pytest.raises(fv.Error, match="frames: expected 1..100000"):
         tiny(fv, frames=0)
+    with pytest.raises(fv.Error, match="sweep slope: .* over the limit of 50"):
+        tiny(fv, sweep=("slope", 0, 1, 1e-9))
+    with pytest.raises(fv.Error, match="side_by_side: only with video"):
+        tiny(fv, side_by_side=True)
+    with pytest.raises(fv.Error, match="vergence: only with stereo"):
+        tiny(fv, vergence=2)
+    with pytest.raises(fv.Error, match="frame_timeout_s: expected 0"):
+        tiny(fv, frame_timeout_s=-1)
     with pytest.raises(fv.Error, match="results.json"):
         fv.read_results(str(tmp_path))
     (tmp_path / "results.json").write_text("{broken")
     with pytest.raises(fv.Error, match="not valid JSON"):
         fv.read_results(str(tmp_path / "results.json"))
+
+
+def test_the_default_run_measures_every_technique_the_scene_can_run(fv):
+    r = fv.bench(scene="cheap", size=(48, 27), frames=1, warmup=0, metrics=False)
+    names = [x["technique"] for x in r["results"]]
+    listed = [t["name"] for t in fv.techniques()]
+    assert names == [n for n in listed if n != "lodmask"]  # lodmask needs meshes
+    assert r["skipped"][0].startswith("lodmask (")
 
 
 def test_a_stereo_bench_reports_each_eye(fv):

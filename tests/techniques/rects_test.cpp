@@ -1,7 +1,5 @@
 // Passes drawn over rectangles (techniques/common/rects.hpp): the covers they
 // compute and the pixels they reach.
-#include "rects.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,8 +10,9 @@
 
 #include "foveate/core/shading_rate.hpp"
 #include "foveate/gpu/frame.hpp"
+#include "foveate/techniques/pass_kit.hpp"
+#include "foveate/techniques/rect_pass.hpp"
 #include "gl_fixture.hpp"
-#include "kit.hpp"
 
 namespace foveate::tech {
 namespace {
@@ -136,7 +135,7 @@ TEST(Rects, MergedRunsCoverTheSamePixels) {
 class RectPassTest : public test::GlTest {};
 
 TEST_F(RectPassTest, DrawsExactlyTheRectangles) {
-  Kit kit;
+  PassKit kit;
   gpu::RenderTarget t;
   t.ensure(64, 48, GL_RGBA8);
   t.clear(1, 1, 1, 1);
@@ -163,7 +162,7 @@ TEST_F(RectPassTest, BackToBackPassesEachDrawTheirOwnRectangles) {
   // driver 580 drew the earlier passes from the last pass's rectangles while
   // one buffer was rewritten in place (llvmpipe never did: it cannot fail
   // here, but it does on such a driver).
-  Kit kit;
+  PassKit kit;
   gpu::RenderTarget t;
   t.ensure(64, 48, GL_RGBA8);
   t.clear(1, 1, 1, 1);
@@ -236,7 +235,7 @@ struct HardwareVrsFrame {
     gpu::RenderTarget t;
     t.ensure(W, H, GL_RGBA8);
     t.clear(0, 0, 0, 1);
-    Kit kit;
+    PassKit kit;
     kit.rect_pass(kit.over_rects("vrs/hardware_reconstruct.frag"), {{kTile, 0, W, H}}, t, {},
                   [&](const gpu::Program& p, gpu::Samplers& smp) {
                     smp.bind(p, "u_frame", src);

@@ -2,6 +2,8 @@
 // the library, parameters resolved and checked from their declarations.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "bars_technique.hpp"
 #include "errors.hpp"
 #include "foveate/techniques/reference.hpp"
@@ -31,12 +33,15 @@ TechniqueInfo minimal(const std::string& name) {
 }  // namespace
 
 TEST(Registry, BuiltinsInTheirOrder) {
-  std::vector<std::string> names;
-  for (const TechniqueInfo& t : techniques()) names.push_back(t.name);
-  ASSERT_GE(names.size(), 6u);
-  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 6),
+  const std::vector<std::string> names = technique_names();
+  ASSERT_GE(names.size(), 7u);
+  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 7),
             (std::vector<std::string>{"native", "layered", "logpolar", "checkerboard", "lodmask",
-                                      "inset"}));
+                                      "inset", "vrs"}));
+  // Every technique but native resolves what it shaded into the output in
+  // passes it declares (reports sum them as the resolve share).
+  for (const TechniqueInfo& t : techniques())
+    EXPECT_EQ(t.resolve_passes.empty(), t.name == "native" || t.name == "lodmask") << t.name;
   EXPECT_TRUE(technique_info("lodmask").needs.mesh_lods);
   EXPECT_FALSE(technique_info("layered").needs.meshes);
 }

@@ -22,6 +22,12 @@ std::string read_file(const std::string& path, const std::string& what = "file",
                       std::uint64_t max_bytes = UINT64_MAX, const std::string& how_to_raise = {});
 void write_file_atomic(const std::string& path, std::string_view contents);
 
+/// Creates the output folder `dir` and its parents. A foveate::Error names
+/// `option` (what gave the folder: "--out", "out"), the folder and the
+/// reason: an existing file, a name that looks like a file's (frames and
+/// reports go inside the folder), a read-only mount.
+void make_output_dir(const std::string& dir, const std::string& option);
+
 /// A limit in MiB from the environment variable `name` (a positive integer),
 /// or `fallback_mib` when it is unset; a bad value is an error naming it.
 std::uint64_t limit_from_env_mib(const char* name, std::uint64_t fallback_mib);

@@ -8,19 +8,12 @@
 #include <string>
 
 #include "foveate/core/display.hpp"
+#include "foveate/core/gaze_state.hpp"
 #include "foveate/gaze/filter.hpp"
 #include "foveate/gaze/gaze.hpp"
 #include "foveate/gaze/latency.hpp"
 
 namespace foveate {
-
-/// The gaze for one frame, after filtering: what a technique foveates around.
-struct GazeState {
-  Vec2d gaze_px{0.0, 0.0};   ///< pixels, origin top-left
-  double fovea_scale = 1.0;  ///< > 1 widens every foveal region (tracker fallback)
-  double latency_ms = 0.0;   ///< end-to-end gaze latency: regions grow by the saccade reach
-  double max_saccade_deg_per_s = 200.0;  ///< the fastest the eye moves (S_max of Swafford eq. 1)
-};
 
 namespace gaze {
 

@@ -17,8 +17,8 @@
 
 #include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
+#include "foveate/core/gaze_state.hpp"
 #include "foveate/core/models.hpp"
-#include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
 
@@ -39,6 +39,8 @@ struct TechniqueConfig {
 };
 
 enum class ParamType { Real, Integer, Boolean };
+/// "real", "integer" or "boolean" (the technique listings' names).
+const char* param_type_name(ParamType type);
 
 /// Parameter values in declaration order, read by type.
 class ParamValues {
@@ -161,6 +163,12 @@ struct TechniqueInfo {
   std::string source;  ///< the paper it implements
   std::vector<ParamDecl> params;
   SceneNeeds needs;
+  /// The passes (by the names they are timed under: a PassKit pass's
+  /// fragment file stem, or a gpu::ProfileScope's name) that resolve what the
+  /// technique shaded at a lower rate or resolution into the output:
+  /// composites, reconstructions, temporal passes, warps, blurs, upscales
+  /// and copies. Reports sum their time as the frame's resolve share.
+  std::vector<std::string> resolve_passes;
   /// Checks between parameters after overrides (throws foveate::Error); optional.
   std::function<void(const ParamValues&)> check;
   /// Creates the technique from its configuration and resolved parameters.
@@ -176,8 +184,10 @@ auto construct() {
 }
 
 /// All techniques: the built-in ones (native, layered, logpolar, checkerboard,
-/// lodmask, inset) in that order, then those registered at run time.
+/// lodmask, inset, vrs) in that order, then those registered at run time.
 const std::vector<TechniqueInfo>& techniques();
+/// The names of techniques(), in their order.
+std::vector<std::string> technique_names();
 /// Adds a technique; throws foveate::Error when the name is taken or empty,
 /// or a parameter declaration is inconsistent (range, default, duplicate key).
 void register_technique(TechniqueInfo info);

@@ -1,0 +1,124 @@
+#pragma once
+// The benchmark: the same frames (camera, time, gaze) rendered with each
+// technique in one process, interleaved frame by frame in an order shuffled
+// every frame (interleaved_orders), timed with a steady clock around
+// glFinish, and judged against a reference for quality.
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "foveate/bench/environment.hpp"
+#include "foveate/bench/params.hpp"
+#include "foveate/bench/session.hpp"
+#include "foveate/bench/sweep.hpp"
+#include "foveate/core/image.hpp"
+#include "foveate/gpu/profiler.hpp"
+#include "foveate/metrics/metrics.hpp"
+
+namespace foveate::bench {
+
+struct BenchOptions {
+  SessionOptions session;
+  /// The techniques to measure; unset, every registered technique the scene
+  /// can run (each one left out is said in a note and in the result).
+  /// Native always runs, as the reference for speed.
+  std::optional<std::vector<std::string>> techniques;
+  ParamOverrides params;
+  int frames = 12;  ///< measured frames per technique
+  int warmup = 2;   ///< at least; each technique warms up as long as it needs
+  /// What the image metrics judge against: 1 = native itself, N > 1 = native
+  /// with N x N supersampling (SupersampledReference), which native is then
+  /// judged against too.
+  int reference = 1;
+  bool image_metrics = true;  ///< compare every frame with the reference (PSNR, SSIM, ...)
+  /// Time every pass: bracketed with glFinish on software renderers,
+  /// timestamp queries on a GPU. Adds a little to frame times.
+  bool passes = false;
+  Sweep sweep;
+  std::string command;  ///< what started the run, recorded in the results
+  /// A video of the measured frames (empty = none): the reported runs tiled
+  /// side by side; with `side_by_side`, native first even when not listed,
+  /// and the gaze marked on every tile.
+  std::string video;
+  bool side_by_side = false;
+  /// A live gaze source (pupil) that does not answer within connect_timeout_s
+  /// is an error unless this is set; then the fallback gaze is measured.
+  bool allow_fallback = false;
+  double connect_timeout_s = 3.0;
+};
+
+struct TechniqueResult {
+  std::string technique;
+  double sweep_value = 0.0;
+  std::vector<std::pair<std::string, double>> parameters;
+  std::vector<double> frame_ms;
+  std::vector<double> gpu_ms;  ///< GL_TIME_ELAPSED per frame on a real GPU (empty on llvmpipe)
+  double median_ms = 0, p90_ms = 0, mean_ms = 0;
+  double speedup = 1, speedup_lo = 1, speedup_hi = 1;
+  double shaded_pixels = 0, native_pixels = 0;
+  std::vector<PixelPart> parts;  ///< mean per frame
+  /// With BenchOptions::passes: mean ms per frame of each pass, in the order
+  /// first seen, ending with "other" (the frame's time outside every pass).
+  std::vector<gpu::PassTime> passes;
+  double pixel_ratio = 1;  ///< shaded / native
+  double bound_share = 1;  ///< speedup / (native / shaded)
+  /// Quality against the reference over the measured frames; empty for
+  /// native judged against itself and without image metrics.
+  std::optional<metrics::QualitySummary> metrics;
+  Image sample;                       ///< last frame, for the report
+  std::vector<OverlayShape> overlay;  ///< its layers or regions at the last frame's gaze
+  Image heatmap;
+  Image acuity_heatmap;
+  /// Stereo: each eye's pixels and quality (left, right); the fields above
+  /// are then both eyes together (time per stereo frame, pixels summed,
+  /// quality over both eyes' frames) and the images the two eyes side by side.
+  struct Eye {
+    double shaded_pixels = 0, native_pixels = 0, pixel_ratio = 1;
+    std::optional<metrics::QualitySummary> metrics;
+  };
+  std::vector<Eye> eyes;  ///< empty unless stereo
+};
+
+struct BenchResult {
+  BenchOptions options;
+  std::vector<std::string> techniques;  ///< those measured, as listed or by default
+  RunEnvironment environment;
+  int warmup = 0;  ///< warm-up frames run: options.warmup or more (Technique::settle_frames)
+  std::string renderer;
+  std::string scene;
+  Display display;
+  std::vector<TechniqueResult> results;
+  Image native_sample;
+  Image reference_sample;  ///< the supersampled reference's last frame (empty when native is)
+  Vec2d sample_gaze_px;
+  std::string gaze_report;
+  std::string video_summary;         ///< one line about the video written (empty = none)
+  std::vector<std::string> skipped;  ///< techniques left out of the default list, with the reason
+  bool gaze_fallback = false;        ///< the live gaze source never answered (allow_fallback)
+  /// Stereo runs: both eyes' displays (display above is the left eye's).
+  std::optional<StereoDisplay> stereo;
+  std::array<Vec2d, 2> sample_eye_gaze_px{};  ///< each eye's gaze at the last frame
+};
+
+/// What a benchmark tells its front end while it runs.
+struct BenchCallbacks {
+  SessionCallbacks session;
+  /// Before the first frame: the steps the run will take, `metrics_steps`
+  /// of them judging frames (as slow as rendering them on a CPU).
+  std::function<void(int steps, int metrics_steps)> start;
+  /// One step done: what it was, and its kind ("metrics", or empty).
+  std::function<void(const std::string& detail, const std::string& kind)> step;
+  /// Every frame rendered and judged.
+  std::function<void()> finish;
+};
+
+/// Throws an OptionError naming the field of the first bad value (run_bench
+/// checks them all before it creates anything).
+void validate(const BenchOptions& options);
+
+/// Runs the benchmark. Throws an OptionError naming the field of a bad value.
+BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbacks = {});
+
+}  // namespace foveate::bench

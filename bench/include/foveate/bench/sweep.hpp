@@ -1,0 +1,29 @@
+#pragma once
+// A sweep repeats a run for every value of one key: the MAR slope (the plan
+// and the metrics' yardstick), the planning margin (the plan only), a
+// parameter of every technique that declares it, or one technique's.
+#include <string>
+#include <vector>
+
+namespace foveate::bench {
+
+/// The most values one sweep may have (each is a full run of the frames).
+inline constexpr int kMaxSweepValues = 50;
+
+struct Sweep {
+  std::string key;        ///< "slope", "margin", "KEY" or "TECHNIQUE.KEY"; empty = no sweep
+  std::string technique;  ///< empty = every technique that declares `param`
+  std::string param;      ///< empty when the slope is swept
+  std::vector<double> values;
+
+  /// The values FROM, FROM + STEP, ... up to TO (counted, not accumulated, so
+  /// that a step too small to change the value cannot loop), each checked
+  /// against every declaration it will be given to. Throws an OptionError of
+  /// "sweep" for an unknown key, a bad range or more than kMaxSweepValues values.
+  static Sweep range(const std::string& key, double from, double to, double step);
+  [[nodiscard]] bool empty() const { return key.empty(); }
+  /// Whether the run of `technique` is repeated for every value.
+  [[nodiscard]] bool applies_to(const std::string& technique) const;
+};
+
+}  // namespace foveate::bench

@@ -1,0 +1,118 @@
+#include "foveate/bench/bench.hpp"
+
+#include <algorithm>
+
+#include "bench_run.hpp"
+#include "foveate/bench/frame_order.hpp"
+#include "foveate/bench/statistics.hpp"
+#include "foveate/core/stats.hpp"
+
+namespace foveate::bench {
+
+void validate(const BenchOptions& o) {
+  validate(o.session);
+  if (o.frames < 1 || o.frames > 100000) throw OptionError("frames", "expected 1..100000");
+  if (o.warmup < 0 || o.warmup > 1000) throw OptionError("warmup", "expected 0..1000");
+  if (o.techniques) {
+    if (o.techniques->empty()) throw OptionError("techniques", "give at least one technique");
+    for (const std::string& t : *o.techniques)
+      for_field("techniques", [&] { return technique_info(t); });
+  }
+  o.params.validate(o.techniques.value_or(technique_names()));
+  if (o.reference != 1 && !(o.reference >= 2 && o.reference <= 8)) {
+    throw OptionError("reference", "expected 1 (native itself) or 2..8 samples per pixel and axis");
+  }
+  if (o.reference > 1 && o.session.stereo) {
+    throw OptionError("reference",
+                      FieldText{"{reference}: the supersampled reference is monocular; not "
+                                "available with {stereo} (each eye is judged against native for "
+                                "that eye)",
+                                {"reference", "stereo"}});
+  }
+  if (o.side_by_side && o.video.empty()) {
+    throw OptionError("side_by_side",
+                      FieldText{"{side_by_side}: only with {video}", {"side_by_side", "video"}});
+  }
+}
+
+BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbacks) {
+  validate(options);
+  return BenchRun(options, callbacks).run();
+}
+
+BenchResult BenchRun::run() {
+  out_.options = options_;
+  choose_techniques();
+  check_gaze_source();
+  out_.display = session_.display();
+  if (session_.options().stereo) out_.stereo = session_.stereo_display();
+  out_.scene = session_.scene().info().name;
+  out_.environment = capture_environment(options_.command);
+  out_.renderer = out_.environment.renderer;
+  if (options_.reference > 1) reference_ = session_.make_reference(options_.reference);
+  add_runs();
+  // Warm up until every technique is steady (its own settle_frames), at
+  // least as long as asked.
+  out_.warmup = options_.warmup;
+  for (const Run& r : runs_) out_.warmup = std::max(out_.warmup, r.impl.view->settle_frames());
+  open_video();
+  // Steps: every frame rendered, and every frame judged (the metrics take as
+  // long as the rendering on a CPU), so that the time left is honest.
+  int judged_runs = 0;
+  if (options_.image_metrics) judged_runs = static_cast<int>(runs_.size()) - (reference_ ? 0 : 1);
+  const int steps = static_cast<int>(runs_.size()) * (options_.frames + out_.warmup) +
+                    judged_runs * options_.frames;
+  if (callbacks_.start) callbacks_.start(steps, judged_runs * options_.frames);
+  if (options_.passes) profiler_.emplace();
+  warm_up();
+  orders_ = interleaved_orders(runs_.size(), options_.frames);
+  for (int k = 0; k < options_.frames; ++k) measure(k);
+  if (callbacks_.finish) callbacks_.finish();
+  for (const std::string& e : session_.take_gl_errors())
+    notice(NoticeKind::Warning, {"GL debug error: " + e, {}});
+  out_.gaze_report = session_.gaze().report();
+  finish_environment(out_.environment);
+  if (video_) {
+    video_->finish();
+    out_.video_summary = video_summary(*video_, options_.session.fps);
+  }
+  summarize();
+  return std::move(out_);
+}
+
+void BenchRun::summarize() {
+  const std::vector<double> native_ms = runs_[0].result.frame_ms;  // results are moved out below
+  // Speedups are ratios of mean frame times (throughput): a technique whose
+  // cost alternates from frame to frame (half-rate layers) is judged by its
+  // average, where a median would pick one phase.
+  const double native_mean = mean(native_ms);
+  const double frames = options_.frames;
+  for (size_t i = 0; i < runs_.size(); ++i) {
+    Run& r = runs_[i];
+    TechniqueResult& res = r.result;
+    if (i == 0 && !native_listed_) continue;
+    res.median_ms = quantile(res.frame_ms, 0.5);
+    res.p90_ms = quantile(res.frame_ms, 0.9);
+    res.mean_ms = mean(res.frame_ms);
+    res.speedup = native_mean / res.mean_ms;
+    std::tie(res.speedup_lo, res.speedup_hi) = speedup_interval(native_ms, res.frame_ms);
+    res.shaded_pixels /= frames;
+    res.native_pixels /= frames;
+    for (PixelPart& p : res.parts) p.pixels /= frames;
+    for (gpu::PassTime& p : res.passes) p.ms /= frames;
+    res.pixel_ratio = res.shaded_pixels / res.native_pixels;
+    res.bound_share = res.speedup * res.pixel_ratio;
+    if (r.series && r.series->frames() > 0) res.metrics = r.series->summary();
+    for (size_t e = 0; e < res.eyes.size(); ++e) {
+      TechniqueResult::Eye& eye = res.eyes[e];
+      eye.shaded_pixels /= frames;
+      eye.native_pixels /= frames;
+      eye.pixel_ratio = eye.shaded_pixels / eye.native_pixels;
+      if (r.eye_series[e] && r.eye_series[e]->frames() > 0)
+        eye.metrics = r.eye_series[e]->summary();
+    }
+    out_.results.push_back(std::move(res));
+  }
+}
+
+}  // namespace foveate::bench

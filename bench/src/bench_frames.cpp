@@ -1,0 +1,135 @@
+// The measured frames of a benchmark: every run renders frame k before any
+// renders k + 1, in an order shuffled anew for every frame
+// (interleaved_orders); images are read back, judged and encoded outside the
+// timed region.
+#include <cmath>
+
+#include "bench_run.hpp"
+#include "foveate/core/parse.hpp"
+
+namespace foveate::bench {
+
+namespace {
+
+// The image mirrored left to right: the right eye of a stereo display is the
+// left eye's geometry mirrored, so a mirrored right-eye frame (and gaze) can
+// be judged with the left eye's display, in one series with the left's.
+Image mirrored(const Image& in) {
+  Image out(in.width, in.height);
+  for (int y = 0; y < in.height; ++y) {
+    for (int x = 0; x < in.width; ++x) std::copy_n(in.at(x, y), 4, out.at(in.width - 1 - x, y));
+  }
+  return out;
+}
+
+}  // namespace
+
+void BenchRun::measure(int k) {
+  const std::vector<size_t>& order = orders_[static_cast<size_t>(k)];
+  const int frame = out_.warmup + k;
+  const bool last = k + 1 == options_.frames;
+  const GazeState g = session_.gaze().at(session_.renderer().frame_input(frame).time_s);
+  // The image every run is judged against: native, or the supersampled
+  // reference (untimed, rendered from a scene of its own).
+  Reference reference;
+  if (reference_) {
+    const int n = options_.reference;
+    reference.out = session_.watchdog().run(
+        "frame " + std::to_string(frame) + " of the ssaa:" + std::to_string(n) + " reference",
+        [&] { return reference_->render(session_.renderer().frame_input(frame)); }, double(n) * n);
+  }
+  std::vector<std::pair<size_t, Images>> images;
+  for (size_t i : order) {
+    Run& r = runs_[i];
+    SessionFrame stats;
+    if (profiler_) profiler_->begin_frame();
+    const double ms =
+        session_.watchdog().run("frame " + std::to_string(frame) + " (" + r.technique + ")", [&] {
+          timer_.start();
+          stats = session_.render(r.impl, frame, g);
+          return timer_.stop();
+        });
+    record(r, stats, ms);
+    if (options_.image_metrics || last || video_) {
+      Images img = read_images();
+      if (i == 0 && !reference_) reference = {img.out, img.eyes};
+      images.emplace_back(i, std::move(img));
+    }
+    step(r.technique + (options_.sweep.empty() ? "" : " @" + format_fixed(r.sweep_value, 4)));
+  }
+  if (video_) write_video_frame(images, g);
+  for (auto& [i, img] : images) judge(i, img, reference, g, last);
+  if (last) {
+    out_.native_sample = runs_[0].result.sample;
+    if (reference_) out_.reference_sample = reference.out;
+  }
+}
+
+void BenchRun::write_video_frame(const std::vector<std::pair<size_t, Images>>& images,
+                                 const GazeState& g) {
+  // Untimed: the frames were read back after the clock stopped.
+  std::vector<Image> tiles(shown_.size());
+  std::vector<const Image*> ptrs;
+  for (size_t s = 0; s < shown_.size(); ++s) {
+    for (const auto& [i, img] : images) {
+      if (i == shown_[s]) tiles[s] = img.out;
+    }
+    if (options_.side_by_side && session_.options().stereo) {
+      // Each eye's own gaze, in its half.
+      const std::array<GazeState, 2> eg = session_.eye_gazes(g);
+      mark_gaze(tiles[s], eg[0].gaze_px);
+      mark_gaze(tiles[s], {eg[1].gaze_px.x + options_.session.size.width, eg[1].gaze_px.y});
+    } else if (options_.side_by_side) {
+      mark_gaze(tiles[s], g.gaze_px);
+    }
+    ptrs.push_back(&tiles[s]);
+  }
+  video_->write(tile(ptrs));
+}
+
+void BenchRun::judge(size_t i, Images& img, const Reference& ref, const GazeState& g, bool last) {
+  Run& r = runs_[i];
+  const bool stereo = session_.options().stereo;
+  const std::array<GazeState, 2> eye_gaze =
+      stereo ? session_.eye_gazes(g) : std::array<GazeState, 2>{g, g};
+  const bool judged = options_.image_metrics && (i != 0 || reference_);
+  if (judged && stereo) {
+    for (size_t e = 0; e < 2; ++e)
+      r.eye_series[e]->add(ref.eyes[e], img.eyes[e], eye_gaze[e].gaze_px);
+    r.series->add(ref.eyes[0], img.eyes[0], eye_gaze[0].gaze_px);
+    const Vec2d mirrored_gaze{options_.session.size.width - eye_gaze[1].gaze_px.x,
+                              eye_gaze[1].gaze_px.y};
+    r.series->add(mirrored(ref.eyes[1]), mirrored(img.eyes[1]), mirrored_gaze, 1);
+    step("metrics " + r.technique, "metrics");
+  } else if (judged) {
+    r.series->add(ref.out, img.out, g.gaze_px);
+    step("metrics " + r.technique, "metrics");
+  }
+  if (!last) return;
+  if (judged) keep_heatmaps(r, img, ref, eye_gaze);
+  r.result.sample = std::move(img.out);
+  r.result.overlay = session_.overlay(r.impl, g);
+  out_.sample_gaze_px = eye_gaze[0].gaze_px;
+  out_.sample_eye_gaze_px = {eye_gaze[0].gaze_px, eye_gaze[1].gaze_px};
+}
+
+void BenchRun::keep_heatmaps(Run& r, const Images& img, const Reference& ref,
+                             const std::array<GazeState, 2>& eye_gaze) {
+  if (!session_.options().stereo) {
+    r.result.heatmap = metrics::error_heatmap(ref.out, img.out, 64.0);
+    r.result.acuity_heatmap = metrics::acuity_error_heatmap(
+        ref.out, img.out, r.series->display(), eye_gaze[0].gaze_px, r.series->options());
+    return;
+  }
+  std::array<Image, 2> heat, acuity_heat;
+  for (size_t e = 0; e < 2; ++e) {
+    heat[e] = metrics::error_heatmap(ref.eyes[e], img.eyes[e], 64.0);
+    acuity_heat[e] =
+        metrics::acuity_error_heatmap(ref.eyes[e], img.eyes[e], r.eye_series[e]->display(),
+                                      eye_gaze[e].gaze_px, r.eye_series[e]->options());
+  }
+  r.result.heatmap = tile({&heat[0], &heat[1]});
+  r.result.acuity_heatmap = tile({&acuity_heat[0], &acuity_heat[1]});
+}
+
+}  // namespace foveate::bench

@@ -1,0 +1,168 @@
+#include "bench_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "foveate/bench/frame_order.hpp"
+#include "foveate/bench/statistics.hpp"
+#include "foveate/core/parse.hpp"
+#include "foveate/core/stats.hpp"
+#include "foveate/gaze/pupil.hpp"
+
+namespace foveate::bench {
+
+BenchRun::BenchRun(const BenchOptions& o, const BenchCallbacks& callbacks)
+    : options_(o), callbacks_(callbacks), session_(o.session, callbacks.session) {}
+
+void BenchRun::step(const std::string& detail, const std::string& kind) const {
+  if (callbacks_.step) callbacks_.step(detail, kind);
+}
+
+void BenchRun::notice(NoticeKind kind, FieldText text) const {
+  if (callbacks_.session.notice) callbacks_.session.notice({kind, std::move(text)});
+}
+
+void BenchRun::choose_techniques() {
+  if (options_.techniques) {
+    out_.techniques = *options_.techniques;
+    return;
+  }
+  // The default: every registered technique; what this scene cannot run is
+  // left out, with a note.
+  for (const std::string& t : technique_names()) {
+    const std::string why = scene_mismatch(technique_info(t), session_.scene().info());
+    if (why.empty()) {
+      out_.techniques.push_back(t);
+      continue;
+    }
+    out_.skipped.push_back(t + " (" + why + ")");
+    notice(NoticeKind::Note, {"skipping " + t + ": " + why, {}});
+  }
+}
+
+void BenchRun::check_gaze_source() {
+  // A live tracker that never answers would silently bench the centre
+  // fallback: an error unless the user accepts that.
+  const auto* pupil = dynamic_cast<const gaze::PupilSource*>(&session_.gaze().source());
+  if (!pupil || pupil->wait_connected(options_.connect_timeout_s)) return;
+  const std::string& spec = options_.session.gaze;
+  if (!options_.allow_fallback) {
+    throw OptionError(
+        "gaze", FieldText{"{gaze} " + spec + ": no eye tracker answered (" +
+                              session_.gaze().source().describe() + ", waited " +
+                              format_fixed(options_.connect_timeout_s, 1) +
+                              " s); start Pupil Capture or Pupil Service, or pass {allow_fallback} "
+                              "to measure with the gaze held at the centre",
+                          {"gaze", "allow_fallback"}});
+  }
+  out_.gaze_fallback = true;
+  notice(NoticeKind::Warning, {"{gaze} " + spec +
+                                   ": no eye tracker answered; measuring with the fallback gaze "
+                                   "({allow_fallback})",
+                               {"gaze", "allow_fallback"}});
+}
+
+void BenchRun::add_run(const std::string& technique, double value, bool swept) {
+  Run r;
+  r.technique = technique;
+  r.sweep_value = value;
+  ParamOverrides params = options_.params;
+  r.acuity = options_.session.acuity;
+  if (swept && options_.sweep.key == "slope") {
+    r.acuity = for_field("sweep", [&] { return AcuityModel::with_slope(value); });
+  } else if (swept) {
+    params.per_technique[technique][options_.sweep.param] = value;
+  }
+  r.impl = session_.make(technique, params, r.acuity);
+  if (session_.stereo()) r.result.eyes.resize(2);
+  r.result.technique = technique;
+  r.result.sweep_value = value;
+  r.result.parameters = r.impl.view->parameters();
+  if (options_.image_metrics) {
+    metrics::QualityOptions qo;
+    qo.acuity = r.acuity;
+    r.series = std::make_unique<metrics::QualitySeries>(session_.display(), qo);
+    if (StereoRenderer* stereo = session_.stereo()) {
+      for (Eye e : kEyes) {
+        r.eye_series[static_cast<size_t>(e)] =
+            std::make_unique<metrics::QualitySeries>(stereo->display().eye(e), qo);
+      }
+    }
+  }
+  runs_.push_back(std::move(r));
+}
+
+void BenchRun::add_runs() {
+  // Native is the reference for speed and quality: always run, once.
+  add_run("native", 0.0, false);
+  for (const std::string& t : out_.techniques) {
+    if (t == "native") continue;
+    if (options_.sweep.applies_to(t)) {
+      for (double v : options_.sweep.values) add_run(t, v, true);
+    } else {
+      add_run(t, 0.0, false);
+    }
+  }
+  native_listed_ =
+      std::find(out_.techniques.begin(), out_.techniques.end(), "native") != out_.techniques.end();
+}
+
+void BenchRun::open_video() {
+  // Opened before any frame is rendered, so that a bad path fails at once.
+  for (size_t i = 0; i < runs_.size(); ++i) {
+    if (i > 0 || native_listed_ || options_.side_by_side) shown_.push_back(i);
+  }
+  if (options_.video.empty()) return;
+  int cols = 0, rows = 0;
+  tile_layout(static_cast<int>(shown_.size()), cols, rows);
+  const PixelSize size = options_.session.size;
+  const int frame_width = size.width * (session_.stereo() ? 2 : 1);
+  video_ = for_field("video", [&] {
+    return std::make_unique<VideoWriter>(options_.video, cols * frame_width, rows * size.height,
+                                         options_.session.fps);
+  });
+}
+
+void BenchRun::warm_up() {
+  // Compile shaders, allocate targets, start every cadence. No reset after
+  // it: the measured frames continue from the techniques' steady state, as
+  // they would in an application.
+  for (int k = 0; k < out_.warmup; ++k) {
+    const GazeState g = session_.gaze().at(session_.renderer().frame_input(k).time_s);
+    for (Run& r : runs_) {
+      session_.watchdog().run("warm-up frame " + std::to_string(k) + " (" + r.technique + ")",
+                              [&] { session_.render(r.impl, k, g); });
+      step("warm-up " + r.technique);
+    }
+  }
+}
+
+void BenchRun::record(Run& r, const SessionFrame& frame, double ms) {
+  TechniqueResult& res = r.result;
+  for (size_t e = 0; e < res.eyes.size(); ++e) {
+    res.eyes[e].shaded_pixels += frame.eyes[e].shaded_pixels;
+    res.eyes[e].native_pixels += frame.eyes[e].native_pixels;
+  }
+  res.frame_ms.push_back(ms);
+  if (profiler_) add_pass_times(res.passes, profiler_->end_frame(), ms);
+  if (std::isfinite(timer_.gpu_ms())) res.gpu_ms.push_back(timer_.gpu_ms());
+  const FrameStats& s = frame.total;
+  res.shaded_pixels += s.shaded_pixels;
+  res.native_pixels += s.native_pixels;
+  if (res.parts.empty()) {
+    res.parts = s.parts;
+    return;
+  }
+  for (size_t p = 0; p < s.parts.size() && p < res.parts.size(); ++p)
+    res.parts[p].pixels += s.parts[p].pixels;
+}
+
+BenchRun::Images BenchRun::read_images() const {
+  Images im;
+  im.out = session_.read_output();
+  if (!session_.options().stereo) return im;
+  for (Eye e : kEyes) im.eyes[static_cast<size_t>(e)] = session_.read_eye(e);
+  return im;
+}
+
+}  // namespace foveate::bench

@@ -1,0 +1,71 @@
+#pragma once
+// What the benchmark's writers share: the quality columns, the time spent
+// resolving, and the labels of the runs.
+#include <cmath>
+#include <string>
+
+#include "foveate/bench/bench.hpp"
+#include "foveate/core/parse.hpp"
+
+namespace foveate::bench {
+
+// The quality columns of the CSV, Markdown and HTML tables, read from the
+// typed summary (the JSON writes all of it through metrics::to_json).
+struct QualityColumn {
+  const char* csv;    ///< CSV header
+  const char* title;  ///< Markdown and HTML header
+  int digits;
+  double (*get)(const metrics::QualitySummary&);
+};
+inline constexpr QualityColumn kQualityColumns[] = {
+    {"psnr_db", "PSNR dB", 2, [](const metrics::QualitySummary& q) { return q.mean.psnr_db; }},
+    {"ssim", "SSIM", 4, [](const metrics::QualitySummary& q) { return q.mean.ssim; }},
+    {"acuity_rmse", "acuity RMSE", 3,
+     [](const metrics::QualitySummary& q) { return q.mean.acuity_rmse; }},
+    {"jnd_mean", "JND mean", 3, [](const metrics::QualitySummary& q) { return q.mean.jnd_mean; }},
+    {"visible_fraction", "visible (JND ≥ 1)", 4,
+     [](const metrics::QualitySummary& q) { return q.mean.visible_fraction; }},
+    {"flicker_ratio", "flicker", 2,
+     [](const metrics::QualitySummary& q) { return q.flicker.ratio; }},
+};
+
+/// A quality figure, or NaN where not measured (native itself, no metrics).
+inline double quality_value(const TechniqueResult& r,
+                            double (*get)(const metrics::QualitySummary&)) {
+  return r.metrics ? get(*r.metrics) : std::nan("");
+}
+inline double quality_value(const TechniqueResult& r, const QualityColumn& c) {
+  return quality_value(r, c.get);
+}
+inline double mean_ssim(const metrics::QualitySummary& q) { return q.mean.ssim; }
+inline double mean_acuity_rmse(const metrics::QualitySummary& q) { return q.mean.acuity_rmse; }
+
+inline std::string quality_cell(const TechniqueResult& r, const QualityColumn& c) {
+  const double v = quality_value(r, c);
+  return std::isfinite(v) ? format_fixed(v, c.digits) : "-";
+}
+
+/// Mean ms per frame in the passes the technique declares as resolving
+/// lower-resolution images into the output (TechniqueInfo::resolve_passes).
+double resolve_ms(const TechniqueResult& r);
+
+/// Each pass as "name 1.2 (30 %)": its mean ms per frame (followed by
+/// `unit`) and its share of the frame, comma-separated.
+std::string pass_list(const TechniqueResult& r, const char* unit);
+
+/// "technique", or "technique @ KEY=VALUE" for a swept run.
+inline std::string label(const BenchResult& b, const TechniqueResult& r) {
+  if (b.options.sweep.key.empty() || r.technique == "native") return r.technique;
+  return r.technique + " @ " + b.options.sweep.key + "=" + format_fixed(r.sweep_value, 4);
+}
+
+/// The HTML report's sections (report_html*.cpp).
+std::string html_speed(const BenchResult& b);
+std::string html_quality(const BenchResult& b);
+std::string html_sweep(const BenchResult& b);
+/// Colours of the charts' series, by index.
+inline constexpr const char* kSeriesColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                                                 "#ff7f0e", "#8c564b", "#e377c2", "#7f7f7f",
+                                                 "#bcbd22", "#17becf"};
+
+}  // namespace foveate::bench

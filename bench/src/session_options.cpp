@@ -1,0 +1,62 @@
+#include "foveate/bench/session_options.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "foveate/bench/field_text.hpp"
+
+namespace foveate::bench {
+
+namespace {
+
+std::string printed(double value) {
+  char got[32];
+  std::snprintf(got, sizeof got, "%g", value);
+  return got;
+}
+
+}  // namespace
+
+AcuityModel acuity_from(const std::string& quality, std::optional<double> slope) {
+  if (!quality.empty() && slope)
+    throw OptionError("slope",
+                      FieldText{"{quality} and {slope}: give one, not both", {"quality", "slope"}});
+  if (slope) return AcuityModel::with_slope(*slope);
+  if (!quality.empty()) return AcuityModel::quality(quality);
+  return AcuityModel::quality("A");
+}
+
+void check_margin(double margin) {
+  if (!(margin >= 1.0 && margin <= 4.0)) {
+    throw OptionError("margin",
+                      "expected a factor from 1 to 4 (the techniques plan for an acuity that "
+                      "many times finer than the one the metrics judge by), got " +
+                          printed(margin));
+  }
+}
+
+void validate(const SessionOptions& o) {
+  const std::string& up = o.scene_options.up;
+  if (!up.empty() && up != "y" && up != "z")
+    throw OptionError("up", "expected y or z, got '" + up + "'");
+  if (const std::string why = size_problem(o.size); !why.empty()) throw OptionError("size", why);
+  if (o.margin) check_margin(*o.margin);
+  if (!(o.fps > 0.0 && o.fps <= 10000.0)) {
+    throw OptionError("fps", "expected a rate above 0 and at most 10000 frames per second, got " +
+                                 printed(o.fps));
+  }
+  if (!std::isfinite(o.start_time_s)) throw OptionError("start_time_s", "must be finite");
+  if (o.vergence_m && !o.stereo) {
+    throw OptionError("vergence_m",
+                      FieldText{"{vergence_m}: only with {stereo} (it sets where the two eyes "
+                                "converge)",
+                                {"vergence_m", "stereo"}});
+  }
+  if (o.vergence_m && !(*o.vergence_m > 0.0)) {
+    throw OptionError("vergence_m",
+                      "expected a distance in metres > 0 (or inf), got " + printed(*o.vergence_m));
+  }
+  check_frame_timeout(o.frame_timeout_s);
+}
+
+}  // namespace foveate::bench

@@ -1,0 +1,54 @@
+#include "foveate/bench/sweep.hpp"
+
+#include <cmath>
+
+#include "foveate/bench/field_text.hpp"
+#include "foveate/core/parse.hpp"
+#include "foveate/techniques/technique.hpp"
+
+namespace foveate::bench {
+
+Sweep Sweep::range(const std::string& key, double from, double to, double step) {
+  if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step))
+    throw OptionError("sweep", "FROM, TO and STEP must be finite numbers");
+  if (!(step > 0) || to < from) throw OptionError("sweep", "need FROM <= TO and STEP > 0");
+  const double count = std::floor((to - from) / step + 1e-9) + 1;
+  if (!(count <= kMaxSweepValues)) {
+    throw OptionError(
+        "sweep",
+        FieldText{"{sweep} " + key + ": " + format_fixed(count, 0) + " values, over the limit of " +
+                      std::to_string(kMaxSweepValues) + "; use a larger STEP",
+                  {"sweep"}});
+  }
+  Sweep s;
+  s.key = key;
+  for (int i = 0; i < static_cast<int>(count); ++i) s.values.push_back(from + i * step);
+  if (s.key == "slope") return s;
+  const auto dot = s.key.find('.');
+  s.technique = dot == std::string::npos ? "" : s.key.substr(0, dot);
+  s.param = dot == std::string::npos ? s.key : s.key.substr(dot + 1);
+  bool known = false;
+  for (const TechniqueInfo& t : techniques()) known = known || s.applies_to(t.name);
+  if (!known) {
+    throw OptionError("sweep",
+                      "no technique has a parameter '" + s.key + "' (see 'foveate techniques')");
+  }
+  // Each value against each declaration it will be given to, before anything runs.
+  for (const TechniqueInfo& t : techniques()) {
+    if (!s.applies_to(t.name)) continue;
+    for (double x : s.values) for_field("sweep", [&] { check_parameter(t, s.param, x); });
+  }
+  return s;
+}
+
+bool Sweep::applies_to(const std::string& name) const {
+  if (empty()) return false;
+  if (param.empty()) return true;  // the slope changes every technique
+  if (!technique.empty() && technique != name) return false;
+  for (const ParamDecl& p : technique_info(name).params) {
+    if (p.key == param) return true;
+  }
+  return false;
+}
+
+}  // namespace foveate::bench

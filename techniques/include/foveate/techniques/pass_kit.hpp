@@ -1,0 +1,136 @@
+#pragma once
+// The pass machinery every technique renders with, the built-in ones and
+// those written outside the library: one shader compiler over every module's
+// embedded GLSL (and the technique's own), passes with explicit state into
+// explicit targets, shading passes that evaluate a scene's shading function
+// at positions given by a mapping, and fragment counting with occlusion
+// queries. Each pass is timed (gpu::ProfileScope) under its fragment file's
+// stem: the names TechniqueInfo::resolve_passes lists.
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "foveate/gpu/pass.hpp"
+#include "foveate/gpu/shader.hpp"
+#include "foveate/techniques/depth_regions.hpp"
+#include "foveate/techniques/rect_pass.hpp"
+#include "foveate/techniques/technique.hpp"
+
+namespace foveate::tech {
+
+/// Sets a pass's uniforms and binds its textures (after the scene's).
+using SetUniforms = std::function<void(const gpu::Program&, gpu::Samplers&)>;
+
+/// Compiler over gpu, scenes and techniques GLSL; a full-screen triangle VAO.
+class PassKit {
+ public:
+  /// `shaders`: GLSL files of a technique outside the library (its own
+  /// fragment shaders and includes), found by name beside the library's.
+  explicit PassKit(std::vector<std::span<const embedded::EmbeddedFile>> shaders = {});
+  [[nodiscard]] const gpu::ShaderCompiler& compiler() const { return compiler_; }
+  /// A program of fullscreen.vert + `fragment` (embedded name), cached.
+  const gpu::Program& fullscreen(const std::string& fragment);
+  /// The program shading `scene` at positions from `mapping` (an embedded
+  /// GLSL file defining vec2 foveate_map(vec2 frag_coord)), cached per scene.
+  /// With `early`, depth and stencil tests run before shading (stencil masks
+  /// really save the work) and there is no off-screen discard.
+  const gpu::Program& shading(const Scene& scene, const std::string& mapping, bool early = false,
+                              int samples = 1);
+  /// A program of the scene's shading GLSL followed by `main` (an embedded
+  /// file with main() that may call the scene's functions), cached per scene.
+  const gpu::Program& scene_program(const Scene& scene, const std::string& main, int samples = 1);
+  /// One full-screen pass of `program` into `target` with `state`; binds the
+  /// textures `set` asks for.
+  void pass(const gpu::Program& program, const gpu::RenderTarget& target,
+            const gpu::PassState& state = {}, const SetUniforms& set = {});
+  /// A program of common/rects.vert + `fragment`, cached: passes drawn over
+  /// rectangles only (rect_pass).
+  const gpu::Program& over_rects(const std::string& fragment);
+  /// A program of common/region.vert + `fragment`, cached: one region of a
+  /// pass split by DepthRegions (the fragment shader declares
+  /// layout(early_fragment_tests)).
+  const gpu::Program& over_regions(const std::string& fragment);
+  /// One full-screen pass split around a disc (GL pixels of `target`), so
+  /// that each pixel runs only the shader its region needs: `inside` over
+  /// the pixels within `inner`, `band` over the rest of the disc of `outer`,
+  /// `outside` beyond (each an over_regions fragment shader); `set` sets up
+  /// each program. Timed as `band`'s pass. Into a target without a colour
+  /// texture (a window) one full-screen pass of `band`, which must then
+  /// handle every region itself.
+  void pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner, double outer,
+                        const std::string& inside, const std::string& band,
+                        const std::string& outside, const SetUniforms& set);
+  /// A pass of an over_rects program into `target` with `state`, covering
+  /// only `rects` (GL pixels of the target).
+  void rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                 const gpu::RenderTarget& target, const gpu::PassState& state = {},
+                 const SetUniforms& set = {});
+  /// The same into whatever framebuffer is bound (of size width x height).
+  void rect_pass_in_bound(const gpu::Program& program, const std::vector<PixelRect>& rects,
+                          int width, int height, const gpu::PassState& state);
+  /// A full-screen pass into whatever framebuffer is bound: a scene's
+  /// G-buffer between prepass_begin and prepass_end (lodmask's masks).
+  void pass_in_bound(const gpu::Program& program, const gpu::PassState& state);
+  /// A full-screen pass into `target` of a program that runs the scene's
+  /// shading (binds the scene's uniforms and textures for `view` first).
+  /// With a `cover` (GL pixels of `target`) it is drawn over those
+  /// rectangles only, merged into fewer where that shades little more (an
+  /// empty cover draws nothing).
+  void scene_pass(Scene& scene, const View& view, const gpu::Program& program,
+                  const gpu::RenderTarget& target, const gpu::PassState& state = {},
+                  const SetUniforms& set = {}, const std::vector<PixelRect>* cover = nullptr);
+  /// A shading pass over `target`: the scene shaded at the mapping's
+  /// positions. Returns the fragments that reached the shader (occlusion
+  /// query; stencil-rejected and discarded fragments do not count). With a
+  /// `cover`, drawn over its rectangles only (scene_pass): what a technique
+  /// does not show is never run. The shading variants have no discard (on
+  /// llvmpipe a shader that can discard is slower everywhere, and a
+  /// discarded fragment costs as much as a shaded one).
+  double shade(Scene& scene, const View& view, const std::string& mapping,
+               const gpu::RenderTarget& target, const SetUniforms& set,
+               const gpu::PassState& state = {}, bool early = false,
+               const std::vector<PixelRect>* cover = nullptr);
+
+ private:
+  /// A program of two files from the technique shaders, cached under `key`.
+  const gpu::Program& built(const std::string& key, const std::string& vertex,
+                            const std::string& fragment);
+  const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
+                                         const std::string& main, int samples = 1);
+  void draw_triangle(const gpu::Program& program) const;
+  /// What a program's passes are timed as (gpu::ProfileScope).
+  [[nodiscard]] const char* pass_name(const gpu::Program& program) const;
+  std::vector<std::span<const embedded::EmbeddedFile>> shaders_;  ///< the technique's own
+  gpu::ShaderCompiler compiler_;
+  gpu::VertexArray vao_;
+  gpu::Query query_;
+  RectPass rect_pass_;
+  DepthRegions regions_;  ///< pass_around_disc's
+  std::map<std::string, gpu::Program> programs_;
+  std::map<GLuint, std::string> pass_names_;  ///< by program id
+};
+
+/// GL coordinates (origin bottom-left) of a top-left-origin point.
+inline Vec2d to_gl(Vec2d p, int height) { return {p.x, height - p.y}; }
+
+/// The rect mapping file and its uniforms for `view`.
+inline constexpr const char* kMapRect = "common/map_rect.glsl";
+void set_rect_mapping(const gpu::Program& p, const View& view);
+
+/// Stats of a technique whose shading is one pass (`name`: what it shaded).
+FrameStats one_pass_stats(const char* name, double shaded, int width, int height);
+
+/// Extra eccentricity (degrees) that the eye can travel during the gaze latency.
+double latency_margin_deg(const GazeState& gaze);
+
+/// The gaze marker every overlay ends with.
+OverlayShape gaze_dot(const GazeState& gaze);
+
+/// Overlay colours by ring, innermost first (layers, regions, LODs).
+inline constexpr float kRingColours[6][3] = {{1, 0.1f, 0.1f}, {0.1f, 0.9f, 0.2f},
+                                             {0.2f, 0.4f, 1}, {1, 0.8f, 0.1f},
+                                             {0.8f, 0.2f, 1}, {0.1f, 0.9f, 0.9f}};
+
+}  // namespace foveate::tech

@@ -1,0 +1,278 @@
+// The benchmark and the session with GL (each run makes its own headless
+// context): techniques registered at run time are benchmarked beside the
+// built-in ones, sweeps apply only where the key exists, every pass is timed,
+// and errors name the field of the options.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "bars_technique.hpp"
+#include "errors.hpp"
+#include "foveate/bench/bench.hpp"
+#include "foveate/bench/report.hpp"
+#include "foveate/gpu/gl.hpp"
+#include "native_copy.hpp"
+
+using namespace foveate;
+using namespace foveate::bench;
+using foveate::test::error_of;
+
+namespace {
+
+BenchOptions tiny() {
+  BenchOptions o;
+  o.session.scene = "cheap";
+  o.session.size = {64, 36};
+  o.frames = 2;
+  o.warmup = 1;
+  o.session.gl_debug = true;
+  return o;
+}
+
+// The benchmark, failing the test on every warning it gives (a GL error the
+// debug context reported among them).
+BenchResult run(const BenchOptions& o) {
+  BenchCallbacks callbacks;
+  callbacks.session.notice = [](const Notice& n) {
+    if (n.kind == NoticeKind::Warning) ADD_FAILURE() << n.text.render();
+  };
+  return run_bench(o, callbacks);
+}
+
+std::string fresh_dir(const std::string& name) {
+  const std::string dir = (std::filesystem::temp_directory_path() / name).string();
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+std::vector<std::string> measured(const BenchResult& r) {
+  std::vector<std::string> names;
+  for (const TechniqueResult& t : r.results) names.push_back(t.technique);
+  return names;
+}
+
+}  // namespace
+
+TEST(Bench, ARunTimeTechniqueIsBenchmarkedBesideNative) {
+  test::register_bars_technique();
+  const std::string out = fresh_dir("foveate-bench-bars");
+  BenchOptions o = tiny();
+  o.techniques = std::vector<std::string>{"native", test::kBarsTechnique};
+  const BenchResult r = run(o);
+  ASSERT_EQ(r.results.size(), 2u);
+  const TechniqueResult& bars = r.results[1];
+  EXPECT_EQ(bars.technique, test::kBarsTechnique);
+  EXPECT_EQ(bars.parameters, (std::vector<std::pair<std::string, double>>{{"bar_px", 1.0}}));
+  EXPECT_EQ(bars.frame_ms.size(), 2u);
+  EXPECT_EQ(bars.shaded_pixels, 64.0 * 36.0);
+  ASSERT_TRUE(bars.metrics.has_value());
+  EXPECT_EQ(bars.metrics->frames, 2);
+  // Two black rows of 64 differ from native; the rest is identical.
+  EXPECT_LT(bars.metrics->mean.psnr_db, 40.0);
+  EXPECT_FALSE(r.results[0].metrics.has_value());  // native is the reference
+  write_bench_report(r, out);
+  EXPECT_EQ(read_json(out + "/results.json")["results"][1]["technique"], test::kBarsTechnique);
+  std::filesystem::remove_all(out);
+}
+
+// A technique from outside the library (examples/bench_consumer: its own
+// shader through PassKit, its copy declared a resolve pass) needs nothing
+// but its registration to be listed, measured by default and reported.
+TEST(Bench, AnOutsideTechniqueIsListedMeasuredByDefaultAndReported) {
+  example::register_native_copy();
+  const std::vector<std::string> names = technique_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), example::kNativeCopy), names.end());
+  const std::string out = fresh_dir("foveate-bench-outside");
+  BenchOptions o = tiny();
+  o.frames = 1;
+  o.warmup = 0;
+  o.passes = true;
+  const BenchResult r = run(o);  // no technique list: every one the scene can run
+  const std::vector<std::string> runs = measured(r);
+  EXPECT_NE(std::find(runs.begin(), runs.end(), example::kNativeCopy), runs.end());
+  EXPECT_NE(std::find(runs.begin(), runs.end(), "vrs"), runs.end());
+  EXPECT_EQ(std::find(runs.begin(), runs.end(), "lodmask"), runs.end());  // needs meshes
+  ASSERT_EQ(r.skipped.size(), 1u);
+  EXPECT_EQ(r.skipped[0].rfind("lodmask (", 0), 0u);
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  bool reported = false;
+  for (const nlohmann::json& t : j["results"]) {
+    if (t["technique"] != example::kNativeCopy) continue;
+    reported = true;
+    EXPECT_GT(t["resolve_share"].get<double>(), 0.0);  // its declared copy pass
+  }
+  EXPECT_TRUE(reported);
+  std::ifstream html(out + "/report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find(example::kNativeCopy), std::string::npos);
+  std::filesystem::remove_all(out);
+}
+
+TEST(Bench, SweptRunsOnlyForTechniquesWithTheKey) {
+  test::register_bars_technique();
+  BenchOptions o = tiny();
+  o.frames = 1;
+  o.warmup = 0;
+  o.image_metrics = false;
+  o.techniques = std::vector<std::string>{"native", test::kBarsTechnique, "inset"};
+  o.sweep = Sweep::range("bar_px", 0, 2, 2);
+  EXPECT_EQ(measured(run(o)), (std::vector<std::string>{"native", test::kBarsTechnique,
+                                                        test::kBarsTechnique, "inset"}));
+}
+
+TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
+  // sweep margin: every technique but native (which plans nothing) gets each
+  // value as its planning margin, so the checkerboard's regions begin farther
+  // out; the metrics keep the session's acuity (recorded once; no margin: null).
+  const std::string out = fresh_dir("foveate-bench-margin");
+  BenchOptions o = tiny();
+  o.session.size = {640, 360};
+  o.frames = 1;
+  o.warmup = 0;
+  o.image_metrics = false;
+  o.techniques = std::vector<std::string>{"native", "checkerboard"};
+  o.sweep = Sweep::range("margin", 1, 2, 1);
+  const BenchResult r = run(o);
+  ASSERT_EQ(r.results.size(), 3u);
+  const auto r1 = [](const TechniqueResult& t) {
+    for (const auto& [key, value] : t.parameters)
+      if (key == "r1") return value;
+    return -1.0;
+  };
+  TechniqueConfig c;
+  c.display = Display::load("desktop-1080p").resized(640, 360);
+  c.acuity = AcuityModel::quality("A");
+  c.margin = 2.0;
+  const ParamValues finer = resolve_parameters(technique_info("checkerboard"), c);
+  EXPECT_EQ(r1(r.results[2]), finer.real("r1"));
+  EXPECT_GT(r1(r.results[2]), r1(r.results[1]));
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  EXPECT_EQ(j["acuity"]["slope"], kSlopeQualityA);
+  EXPECT_TRUE(j["margin"].is_null());
+  std::filesystem::remove_all(out);
+}
+
+TEST(Session, ErrorsNameTheField) {
+  SessionOptions o;
+  o.scene = "cheap";
+  o.size = {32, 32};
+  o.gaze = "fixed:";
+  EXPECT_NE(error_of([&] { Session s(o); }).find("gaze: fixed gaze point"), std::string::npos);
+  SessionOptions d = o;
+  d.gaze = "";
+  d.display = "nope";
+  EXPECT_EQ(error_of([&] { Session s(d); }).rfind("display: ", 0), 0u);
+  o.gaze = "";
+  o.gl_debug = true;
+  Session s(o);
+  ParamOverrides nine;
+  nine.set("layers", 9);
+  EXPECT_NE(error_of([&] {
+              s.make("layered", nine);
+            }).find("params: layered parameter layers=9: out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { s.make("lodmask", {}); }).find("needs a scene with"), std::string::npos);
+  // Nothing above reached the GL wrongly, and the debug context does report
+  // what does.
+  EXPECT_TRUE(s.take_gl_errors().empty());
+  glEnable(0x1234);
+  EXPECT_EQ(s.take_gl_errors().size(), 1u);
+}
+
+// A frame past the frame timeout: the front end is told at the deadline
+// (the command line ends the process there); when its callback returns, the
+// run stops with an error naming the field once the frame has finished.
+TEST(Session, AFrameOverTheTimeoutStopsTheRun) {
+  SessionOptions o;
+  o.scene = "cheap";
+  o.size = {32, 32};
+  o.frame_timeout_s = 0.05;
+  std::atomic<bool> called = false;
+  SessionCallbacks callbacks;
+  callbacks.frame_timeout = [&](const FieldText&) { called = true; };
+  Session s(o, callbacks);
+  const std::string error = error_of([&] {
+    s.watchdog().run("frame 0 (native)",
+                     [] { std::this_thread::sleep_for(std::chrono::milliseconds(400)); });
+  });
+  EXPECT_TRUE(called);
+  EXPECT_NE(error.find("frame 0 (native) did not finish within 0.05 s (frame_timeout_s)"),
+            std::string::npos)
+      << error;
+  // The next frame runs under a fresh deadline.
+  EXPECT_EQ(error_of([&] { s.watchdog().run("frame 1 (native)", [] {}); }), "no error");
+}
+
+// Every pass a technique runs is timed, the rest of the frame is "other",
+// and the parts add up to the frame; the warm-up lasts as long as the
+// slowest-settling technique needs; results.json says where it ran.
+TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
+  const std::string out = fresh_dir("foveate-bench-passes");
+  BenchOptions o = tiny();
+  o.session.scene = "guenter";  // a G-buffer prepass
+  o.techniques = std::vector<std::string>{"native", "layered", "checkerboard"};
+  o.passes = true;
+  o.image_metrics = false;
+  o.frames = 3;
+  const BenchResult r = run(o);
+  // layered settles in 6 frames with half-rate layers (asked for 1).
+  EXPECT_EQ(r.warmup, 6);
+  ASSERT_EQ(r.results.size(), 3u);
+  for (const TechniqueResult& t : r.results) {
+    SCOPED_TRACE(t.technique);
+    ASSERT_GE(t.passes.size(), 3u);
+    EXPECT_EQ(t.passes.back().name, "other");
+    double sum = 0;
+    bool gbuffer = false, shade = false;
+    for (const gpu::PassTime& p : t.passes) {
+      EXPECT_GE(p.ms, 0.0);
+      sum += p.ms;
+      gbuffer = gbuffer || p.name == "gbuffer";
+      shade = shade || p.name == "shade";
+    }
+    EXPECT_TRUE(gbuffer);
+    EXPECT_TRUE(shade);
+    // "other" is the frame's time outside every pass, so the parts add up to
+    // the frame by construction; what can fail is that the timed passes
+    // cover the frame: a pass left out of the scopes would show as "other".
+    EXPECT_NEAR(sum, t.mean_ms, 1e-6 * t.mean_ms + 1e-9);
+    EXPECT_LT(t.passes.back().ms, 0.5 * t.mean_ms) << "untimed work in " << t.technique;
+  }
+  auto has = [](const TechniqueResult& t, const std::string& name) {
+    return std::any_of(t.passes.begin(), t.passes.end(),
+                       [&](const gpu::PassTime& p) { return p.name == name; });
+  };
+  EXPECT_TRUE(has(r.results[1], "composite"));
+  EXPECT_TRUE(has(r.results[2], "reconstruct"));
+  EXPECT_FALSE(has(r.results[0], "composite"));
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  EXPECT_EQ(j["warmup"], 6);
+  const nlohmann::json& env = j["environment"];
+  EXPECT_FALSE(env["renderer"].get<std::string>().empty());
+  EXPECT_FALSE(env["foveate_version"].get<std::string>().empty());
+  EXPECT_EQ(env["date_utc"].get<std::string>().size(), 20u);  // 2026-11-22T20:30:42Z
+  EXPECT_GE(env["cpu_cores"].get<int>(), 1);
+  EXPECT_EQ(env["load_average_start"].size(), 3u);
+  const nlohmann::json& layered = j["results"][1];
+  ASSERT_TRUE(layered["passes"].is_array());
+  const double share = layered["resolve_share"].get<double>();
+  EXPECT_GT(share, 0.0);
+  EXPECT_LT(share, 1.0);
+  EXPECT_TRUE(j["results"][0]["passes"].is_array());
+  EXPECT_EQ(j["results"][0]["resolve_share"], 0.0);  // native declares no resolve pass
+  std::filesystem::remove_all(out);
+}

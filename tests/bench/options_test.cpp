@@ -1,0 +1,178 @@
+// The benchmark library without a GL context: options checked field by
+// field, messages that name fields for each front end to spell, sweeps,
+// parameter overrides, the frame orders and whether a display leaves
+// anything to save.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "errors.hpp"
+#include "foveate/bench/bench.hpp"
+#include "foveate/bench/frame_order.hpp"
+#include "foveate/bench/savings.hpp"
+#include "foveate/bench/statistics.hpp"
+
+using namespace foveate;
+using namespace foveate::bench;
+using foveate::test::error_of;
+
+namespace {
+
+// The field an OptionError names, or "no error".
+std::string field_of(const std::function<void()>& fn) {
+  try {
+    fn();
+  } catch (const OptionError& e) {
+    return e.field();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(FieldText, EachFrontEndNamesTheFieldsItsOwnWay) {
+  const FieldText t{"{gaze} x: pass {allow_fallback}; {other} stays", {"gaze", "allow_fallback"}};
+  EXPECT_EQ(t.render(), "gaze x: pass allow_fallback; {other} stays");
+  const auto flags = [](const std::string& f) {
+    return f == "allow_fallback" ? std::string("--allow-fallback") : std::string();
+  };
+  EXPECT_EQ(t.render(flags), "gaze x: pass --allow-fallback; {other} stays");
+  const OptionError e("frames", "expected 1..100000");
+  EXPECT_EQ(std::string(e.what()), "frames: expected 1..100000");
+  EXPECT_EQ(e.message([](const std::string&) { return std::string("--frames"); }),
+            "--frames: expected 1..100000");
+}
+
+TEST(Options, ErrorsNameTheField) {
+  BenchOptions o;
+  o.frames = 0;
+  EXPECT_EQ(error_of([&] { validate(o); }), "frames: expected 1..100000");
+  o = {};
+  o.techniques = std::vector<std::string>{};
+  EXPECT_EQ(error_of([&] { validate(o); }), "techniques: give at least one technique");
+  o.techniques = std::vector<std::string>{"warp"};
+  EXPECT_EQ(field_of([&] { validate(o); }), "techniques");
+  o = {};
+  o.session.size = {0, 36};
+  EXPECT_EQ(error_of([&] { validate(o); }), "size: each side must be 1..16384 pixels, got 0x36");
+  o = {};
+  o.session.margin = 0.5;
+  EXPECT_EQ(field_of([&] { validate(o); }), "margin");
+  o = {};
+  o.session.frame_timeout_s = -1;
+  EXPECT_EQ(error_of([&] { validate(o); }),
+            "frame_timeout_s: expected 0 (no limit) to 86400 seconds, got -1");
+  o = {};
+  o.session.vergence_m = 2.0;
+  EXPECT_EQ(error_of([&] { validate(o); }),
+            "vergence_m: only with stereo (it sets where the two eyes converge)");
+  o = {};
+  o.reference = 4;
+  o.session.stereo = true;
+  EXPECT_EQ(field_of([&] { validate(o); }), "reference");
+  o = {};
+  o.side_by_side = true;
+  EXPECT_EQ(error_of([&] { validate(o); }), "side_by_side: only with video");
+  o = {};
+  o.params.set("nope", 1);
+  EXPECT_EQ(field_of([&] { validate(o); }), "params");
+  EXPECT_EQ(error_of([] { acuity_from("A", 0.02); }), "quality and slope: give one, not both");
+}
+
+TEST(Options, ParameterOverridesGoWhereTheyAreDeclared) {
+  ParamOverrides p;
+  p.set("layers", 2);
+  p.set("inset.margin", 1.25);
+  EXPECT_EQ(p.for_technique("layered"), (std::map<std::string, double>{{"layers", 2}}));
+  EXPECT_EQ(p.for_technique("inset"), (std::map<std::string, double>{{"margin", 1.25}}));
+  EXPECT_TRUE(p.for_technique("native").empty());
+  EXPECT_EQ(error_of([&] {
+              p.validate({"native", "inset"});
+            }),
+            "params layers: no such parameter in native, inset (see 'foveate techniques')");
+  EXPECT_NE(
+      error_of([&] { p.set("warp.layers", 1); }).find("params warp.layers: unknown technique"),
+      std::string::npos);
+}
+
+TEST(Sweep, AppliesOnlyWhereTheKeyIsDeclared) {
+  const Sweep slope = Sweep::range("slope", 0.02, 0.03, 0.005);
+  EXPECT_EQ(slope.values.size(), 3u);
+  EXPECT_TRUE(slope.applies_to("layered"));
+  const Sweep one = Sweep::range("layered.layers", 2, 4, 1);
+  EXPECT_TRUE(one.applies_to("layered"));
+  EXPECT_FALSE(one.applies_to("inset"));
+  const Sweep margin = Sweep::range("margin", 1, 2, 1);
+  EXPECT_TRUE(margin.applies_to("checkerboard"));
+  EXPECT_FALSE(margin.applies_to("native"));
+  // A step too small to change the value gives one value, not an endless list.
+  EXPECT_EQ(Sweep::range("slope", 1e16, 1e16, 1).values.size(), 1u);
+  EXPECT_EQ(error_of([] { Sweep::range("slope", 0, 1, 1e-9); }),
+            "sweep slope: 1000000000 values, over the limit of 50; use a larger STEP");
+  EXPECT_EQ(error_of([] { Sweep::range("slope", 1, 0, 1); }),
+            "sweep: need FROM <= TO and STEP > 0");
+  EXPECT_NE(error_of([] { Sweep::range("nope", 1, 2, 1); }).find("no technique has"),
+            std::string::npos);
+  // Every value is checked against each declaration before anything runs.
+  EXPECT_EQ(error_of([] { Sweep::range("margin", 0.5, 1, 0.5); }),
+            "sweep: layered parameter margin=0.5: out of range [1, 4]");
+  EXPECT_EQ(error_of([] { Sweep::range("layered.layers", 2, 3, 0.5); }),
+            "sweep: layered parameter layers=2.5: must be a whole number");
+}
+
+TEST(FrameOrder, VariesWhatEachTechniqueFollows) {
+  // Seven techniques over sixteen frames, as the README's tables: every
+  // frame renders each technique once, and each technique follows several
+  // others over the run (a fixed rotation gave each one predecessor only).
+  const auto orders = interleaved_orders(7, 16);
+  ASSERT_EQ(orders.size(), 16u);
+  std::vector<std::set<size_t>> before(7);
+  std::set<size_t> first;
+  for (const auto& order : orders) {
+    ASSERT_EQ(order.size(), 7u);
+    EXPECT_EQ(std::set<size_t>(order.begin(), order.end()).size(), 7u);
+    first.insert(order[0]);
+    for (size_t i = 1; i < order.size(); ++i) before[order[i]].insert(order[i - 1]);
+  }
+  for (size_t t = 0; t < 7; ++t) EXPECT_GE(before[t].size(), 3u) << "technique " << t;
+  EXPECT_GE(first.size(), 4u);
+  EXPECT_EQ(interleaved_orders(7, 16), orders);  // the same sequence every run
+  EXPECT_EQ(interleaved_orders(1, 3), (std::vector<std::vector<size_t>>(3, {0})));
+  EXPECT_TRUE(interleaved_orders(4, 0).empty());
+}
+
+TEST(Statistics, PassTimesAddUpToTheFrame) {
+  std::vector<gpu::PassTime> sums;
+  add_pass_times(sums, {{"shade", 5.0}, {"composite", 2.0}}, 10.0);
+  add_pass_times(sums, {{"composite", 1.0}, {"warp", 1.0}}, 4.0);
+  ASSERT_EQ(sums.size(), 4u);
+  EXPECT_EQ(sums[0].name, "shade");
+  EXPECT_EQ(sums[1].ms, 3.0);
+  EXPECT_EQ(sums[2].name, "warp");
+  EXPECT_EQ(sums[3].name, "other");
+  EXPECT_EQ(sums[3].ms, 5.0);
+  const auto [lo, hi] = speedup_interval({10, 10, 10}, {5, 5, 5});
+  EXPECT_DOUBLE_EQ(lo, 2.0);
+  EXPECT_DOUBLE_EQ(hi, 2.0);
+}
+
+TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
+  const Display d = Display::load("desktop-1080p");
+  const AcuityModel a = AcuityModel::quality("A");
+  const SavingsCheck small = check_savings(d.resized(320, 180), a);
+  EXPECT_TRUE(small.nothing_to_save);
+  EXPECT_LT(small.pixel_bound, 1.2);
+  EXPECT_NEAR(small.centre_ppd, 6.5, 0.1);  // a sixth of the paper's ~39 px/deg
+  const std::string note = small.note.render();
+  EXPECT_NE(note.find("320x180"), std::string::npos);
+  EXPECT_NE(note.find("try size 1280x720"), std::string::npos) << note;
+  const SavingsCheck full = check_savings(d.resized(1920, 1080), a);
+  EXPECT_FALSE(full.nothing_to_save);
+  EXPECT_NEAR(full.pixel_bound, 8.49, 0.1);  // plan's 3 layers at full rate
+  EXPECT_TRUE(full.note.text.empty());
+}
+
+TEST(Savings, AWideFieldSavesEvenAtModestSizes) {
+  const Display quest = Display::load("hmd-quest3").resized(640, 684);
+  EXPECT_FALSE(check_savings(quest, AcuityModel::quality("A")).nothing_to_save);
+}
