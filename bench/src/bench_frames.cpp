@@ -93,6 +93,13 @@ void BenchRun::judge(size_t i, Images& img, const Reference& ref, const GazeStat
   const std::array<GazeState, 2> eye_gaze =
       stereo ? session_.eye_gazes(g) : std::array<GazeState, 2>{g, g};
   const bool judged = options_.image_metrics && (i != 0 || reference_);
+  // FovVideoVDP's distortion map of the last frame, for the report.
+  if (judged) {
+    r.series->set_fvvdp_heatmap(last);
+    for (auto& es : r.eye_series) {
+      if (es) es->set_fvvdp_heatmap(last);
+    }
+  }
   if (judged && stereo) {
     for (size_t e = 0; e < 2; ++e)
       r.eye_series[e]->add(ref.eyes[e], img.eyes[e], eye_gaze[e].gaze_px);
@@ -115,7 +122,15 @@ void BenchRun::judge(size_t i, Images& img, const Reference& ref, const GazeStat
 
 void BenchRun::keep_heatmaps(Run& r, const Images& img, const Reference& ref,
                              const std::array<GazeState, 2>& eye_gaze) {
+  const auto fvvdp_picture = [](const metrics::QualitySeries& series, const Image& reference,
+                                metrics::Map* distortion) {
+    const metrics::QualitySummary q = series.summary();
+    if (!q.fvvdp || q.fvvdp->worst_heatmap.values.empty()) return Image{};
+    if (distortion) *distortion = q.fvvdp->worst_heatmap;
+    return metrics::fvvdp_heatmap_image(q.fvvdp->worst_heatmap, reference, 1.0);
+  };
   if (!session_.options().stereo) {
+    r.result.fvvdp_heatmap = fvvdp_picture(*r.series, ref.out, &r.result.fvvdp_distortion);
     r.result.heatmap = metrics::error_heatmap(ref.out, img.out, 64.0);
     r.result.acuity_heatmap = metrics::acuity_error_heatmap(
         ref.out, img.out, r.series->display(), eye_gaze[0].gaze_px, r.series->options());
@@ -127,6 +142,13 @@ void BenchRun::keep_heatmaps(Run& r, const Images& img, const Reference& ref,
     acuity_heat[e] =
         metrics::acuity_error_heatmap(ref.eyes[e], img.eyes[e], r.eye_series[e]->display(),
                                       eye_gaze[e].gaze_px, r.eye_series[e]->options());
+  }
+  std::array<Image, 2> fvvdp_heat;
+  for (size_t e = 0; e < 2; ++e) {
+    fvvdp_heat[e] = fvvdp_picture(*r.eye_series[e], ref.eyes[e], nullptr);
+  }
+  if (!fvvdp_heat[0].empty() && !fvvdp_heat[1].empty()) {
+    r.result.fvvdp_heatmap = tile({&fvvdp_heat[0], &fvvdp_heat[1]});
   }
   r.result.heatmap = tile({&heat[0], &heat[1]});
   r.result.acuity_heatmap = tile({&acuity_heat[0], &acuity_heat[1]});

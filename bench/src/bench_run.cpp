@@ -81,6 +81,12 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept) {
   if (options_.image_metrics) {
     metrics::QualityOptions qo;
     qo.acuity = r.acuity;
+    // One display for every measure: FovVideoVDP's photometry, and the JND
+    // diagnostic's light from the same.
+    const Photometry& light = session_.display().photometry;
+    qo.contrast.peak_cd_m2 = light.peak_cd_m2;
+    qo.contrast.black_cd_m2 = light.black_cd_m2();
+    qo.fvvdp_options.fps = options_.session.fps;
     r.series = std::make_unique<metrics::QualitySeries>(session_.display(), qo);
     if (StereoRenderer* stereo = session_.stereo()) {
       for (Eye e : kEyes) {

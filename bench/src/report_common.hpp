@@ -29,6 +29,22 @@ inline constexpr QualityColumn kQualityColumns[] = {
      [](const metrics::QualitySummary& q) { return q.flicker.ratio; }},
 };
 
+/// FovVideoVDP's JOD of a run, NaN where not measured.
+inline double jod_of(const TechniqueResult& r) {
+  return r.metrics && r.metrics->fvvdp ? r.metrics->fvvdp->jod : std::nan("");
+}
+/// Native's JOD against the reference: 10 when native is the reference itself.
+inline double native_jod(const BenchResult& b) {
+  for (const TechniqueResult& r : b.results) {
+    if (r.technique == "native" && std::isfinite(jod_of(r))) return jod_of(r);
+  }
+  return b.options.reference > 1 ? std::nan("") : 10.0;
+}
+/// How far a run's JOD is below native's (0 for native; NaN when unknown).
+inline double jod_below_native(const BenchResult& b, const TechniqueResult& r) {
+  return r.technique == "native" ? 0.0 : native_jod(b) - jod_of(r);
+}
+
 /// A quality figure, or NaN where not measured (native itself, no metrics).
 inline double quality_value(const TechniqueResult& r,
                             double (*get)(const metrics::QualitySummary&)) {

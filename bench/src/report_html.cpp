@@ -66,16 +66,24 @@ std::string html_head(const BenchResult& b) {
 
 std::string html_results_table(const BenchResult& b) {
   std::ostringstream h;
-  h << "<table id=\"results\"><tr><th>technique</th><th>mean ms</th><th>median ms</th><th>p90 "
-       "ms</th><th>speedup</th><th>95 % CI</th>"
+  // FovVideoVDP first: a speedup counts at the quality it keeps.
+  h << "<p class=note>JOD: FovVideoVDP (Mantiuk et al. 2021), foveated at each frame's gaze, "
+       "against the "
+    << (b.options.reference > 1 ? "supersampled reference" : "native frames")
+    << "; 10 = no visible difference, one JOD apart = 75 % of observers prefer the higher. "
+       "'Below native' is native's JOD minus the technique's.</p>\n";
+  h << "<table id=\"results\"><tr><th>technique</th><th>JOD</th><th>below native</th>"
+       "<th>speedup</th><th>95 % CI</th><th>mean ms</th><th>median ms</th><th>p90 ms</th>"
        "<th>shaded px</th><th>pixel ratio</th><th>share of bound</th>";
   for (const QualityColumn& c : kQualityColumns) h << "<th>" << c.title << "</th>";
   h << "</tr>\n";
   for (const TechniqueResult& r : b.results) {
-    h << "<tr><td>" << label(b, r) << "</td><td>" << format_fixed(r.mean_ms, 2) << "</td><td>"
-      << format_fixed(r.median_ms, 2) << "</td><td>" << format_fixed(r.p90_ms, 2) << "</td><td>"
-      << format_fixed(r.speedup, 2) << "x</td><td>" << format_fixed(r.speedup_lo, 2) << "-"
-      << format_fixed(r.speedup_hi, 2) << "</td><td>" << format_fixed(r.shaded_pixels, 0)
+    const auto jod_cell = [](double v) { return std::isfinite(v) ? format_fixed(v, 3) : "-"; };
+    h << "<tr><td>" << label(b, r) << "</td><td>" << jod_cell(jod_of(r)) << "</td><td>"
+      << jod_cell(jod_below_native(b, r)) << "</td><td>" << format_fixed(r.speedup, 2)
+      << "x</td><td>" << format_fixed(r.speedup_lo, 2) << "-" << format_fixed(r.speedup_hi, 2)
+      << "</td><td>" << format_fixed(r.mean_ms, 2) << "</td><td>" << format_fixed(r.median_ms, 2)
+      << "</td><td>" << format_fixed(r.p90_ms, 2) << "</td><td>" << format_fixed(r.shaded_pixels, 0)
       << "</td><td>" << format_fixed(r.pixel_ratio, 3) << "</td><td>"
       << format_fixed(100 * r.bound_share, 0) << " %</td>";
     for (const QualityColumn& c : kQualityColumns) h << "<td>" << quality_cell(r, c) << "</td>";
@@ -194,10 +202,44 @@ std::string html_crops(const BenchResult& b) {
   return h.str();
 }
 
+// FovVideoVDP's distortion map of each technique's last frame, and a crop at
+// 2x where it is worst (the largest mean distortion in a window).
+std::string fvvdp_heatmaps(const BenchResult& b) {
+  const int W = b.options.session.size.width, H = b.options.session.size.height;
+  const int cs = std::clamp(std::min(W, H) / 4, 16, 160);
+  std::ostringstream h;
+  h << "<h2>Where the difference is visible</h2>\n<p class=note>FovVideoVDP's distortion "
+       "map of the last measured frame over the reference: green where the difference is "
+       "invisible, yellow half a JOD, red one JOD or more; beside it, "
+    << cs << "&times;" << cs << " pixels at 2&times; where it is worst.</p>\n<div class=crops>";
+  for (const TechniqueResult& r : b.results) {
+    if (r.fvvdp_heatmap.empty()) continue;
+    h << "<figure>"
+      << img_tag(r.fvvdp_heatmap, label(b, r) + " FovVideoVDP", std::min(W, 480), false, 480);
+    if (r.fvvdp_distortion.width == W && r.fvvdp_distortion.height == H) {
+      const Worst worst = worst_window(r.fvvdp_distortion, b.display, b.sample_gaze_px, cs, 0.0);
+      h << " "
+        << img_tag(crop(r.fvvdp_heatmap, worst.x, worst.y, cs), label(b, r) + " worst", 2 * cs,
+                   true)
+        << " "
+        << img_tag(crop(r.sample, worst.x, worst.y, cs), label(b, r) + " there", 2 * cs, true)
+        << "<figcaption>" << label(b, r) << ": worst at (" << worst.x << ", " << worst.y << "), "
+        << format_fixed(worst.ecc_deg, 1) << "&deg; from the gaze, mean "
+        << format_fixed(worst.mean_error, 3) << " JOD there</figcaption>";
+    } else {
+      h << "<figcaption>" << label(b, r) << "</figcaption>";
+    }
+    h << "</figure>\n";
+  }
+  h << "</div>\n";
+  return h.str();
+}
+
 std::string html_heatmaps_and_frames(const BenchResult& b) {
   const ImageReference ref = image_reference(b);
   const int W = b.options.session.size.width;
   std::ostringstream h;
+  h << fvvdp_heatmaps(b);
   h << "<h2>Error heat maps</h2>\n<p class=note>Left: absolute difference to the " << ref.name
     << " (largest over R, G, B). Right: the difference after both images are low-pass filtered "
        "to what the eye resolves at each eccentricity.</p>\n"

@@ -27,6 +27,43 @@ Judged judged_runs(const BenchResult& b) {
   return j;
 }
 
+// FovVideoVDP: the JOD of every run, and per eccentricity band.
+std::string jod_charts(const BenchResult& b, const Judged& judged) {
+  BarSeries jod{"FovVideoVDP JOD", "#1f77b4", {}, {}, {}};
+  std::vector<Series> bands;
+  for (size_t i = 0; i < judged.results.size(); ++i) {
+    const TechniqueResult& r = *judged.results[i];
+    jod.values.push_back(jod_of(r));
+    Series s{judged.names[i], kSeriesColours[i % 10], {}, {}, i >= 10};
+    if (r.metrics && r.metrics->fvvdp) {
+      for (const metrics::FvvdpBand& band : r.metrics->fvvdp->bands) {
+        if (!std::isfinite(band.jod)) continue;
+        s.x.push_back(std::isinf(band.to_deg) ? band.from_deg + 5
+                                              : 0.5 * (band.from_deg + band.to_deg));
+        s.y.push_back(band.jod);
+      }
+    }
+    bands.push_back(std::move(s));
+  }
+  bool any = false;
+  for (double v : jod.values) any = any || std::isfinite(v);
+  if (!any) return {};
+  std::ostringstream h;
+  h << "<div class=chart id=\"chart-jod\">"
+    << svg_bar_chart(judged.names, {jod},
+                     {"Visible difference from the " + std::string(b.reference_sample.empty()
+                                                                       ? "native frames"
+                                                                       : "supersampled reference"),
+                      "FovVideoVDP JOD (10 = none; the axis spans the data)", false, 760, 3})
+    << "</div>\n<p class=note>Per eccentricity band: the JOD the sequence would get were the "
+       "whole image like the band, drawn at the band's centre (the last band 5 degrees past its "
+       "start).</p>\n<div class=chart id=\"chart-jod-bands\">"
+    << svg_line_chart(bands, {"JOD per eccentricity band", "eccentricity (degrees)",
+                              "FovVideoVDP JOD", false, 720, 440, false})
+    << "</div>\n";
+  return h.str();
+}
+
 std::string quality_bars(const BenchResult& b, const Judged& judged, bool& have_flip) {
   auto series_of = [&](double (*get)(const metrics::QualitySummary&), const char* name,
                        const char* colour) {
@@ -183,16 +220,22 @@ std::string html_speed(const BenchResult& b) {
     // Speed against quality: one marker per technique (or swept value).
     std::vector<ScatterPoint> pts;
     for (size_t i = 0; i < judged.results.size(); ++i) {
-      pts.push_back({judged.names[i], kSeriesColours[i % 10], judged.results[i]->speedup,
-                     quality_value(*judged.results[i], mean_acuity_rmse)});
+      const double jod = jod_of(*judged.results[i]);
+      if (std::isfinite(jod)) {
+        pts.push_back({judged.names[i], kSeriesColours[i % 10], judged.results[i]->speedup, jod});
+      }
     }
-    h << "<h2>Speed against quality</h2>\n<div class=chart id=\"chart-pareto\">"
-      << svg_scatter(
-             pts,
-             {"Speed against the error the eye can resolve (lower right is better)",
-              "speedup over native (x)", "acuity RMSE (8-bit codes)", false, 760, 440, true},
-             false)
-      << "</div>\n";
+    if (!pts.empty()) {
+      h << "<h2>Speed against quality</h2>\n<p class=note>The Pareto front: no other run is both "
+           "faster and closer to the reference (FovVideoVDP, JOD; native's "
+        << format_fixed(native_jod(b), 3) << ").</p>\n<div class=chart id=\"chart-pareto\">"
+        << svg_scatter(
+               pts,
+               {"Speed against visible quality (upper right is better)", "speedup over native (x)",
+                "FovVideoVDP JOD (10 = no visible difference)", false, 760, 440, false},
+               true)
+        << "</div>\n";
+    }
   }
   return h.str();
 }
@@ -203,7 +246,10 @@ std::string html_quality(const BenchResult& b) {
     return "<h2>Quality</h2>\n<p class=note>Not measured (image metrics off).</p>\n";
   bool have_flip = false;
   const std::string bars = quality_bars(b, judged, have_flip);
-  return "<h2>Quality</h2>\n" + bars + eccentricity_charts(judged, have_flip) + flicker_table(b);
+  return "<h2>Quality</h2>\n" + jod_charts(b, judged) +
+         "<h3>Diagnostics</h3>\n<p class=note>foveate's own measures, not calibrated against "
+         "observers: where a technique loses detail, not whether a viewer sees it.</p>\n" +
+         bars + eccentricity_charts(judged, have_flip) + flicker_table(b);
 }
 
 std::string html_sweep(const BenchResult& b) {
@@ -221,9 +267,8 @@ std::string html_sweep(const BenchResult& b) {
     }
     it->second.x.push_back(r.sweep_value);
     it->second.y.push_back(r.speedup);
-    if (r.metrics)
-      sweep_points.push_back(
-          {label(b, r), it->second.color, r.speedup, quality_value(r, mean_acuity_rmse)});
+    if (r.metrics && std::isfinite(jod_of(r)))
+      sweep_points.push_back({label(b, r), it->second.color, r.speedup, jod_of(r)});
   }
   std::vector<Series> lines;
   for (auto& [k, v] : speed_series) lines.push_back(v);
@@ -234,9 +279,9 @@ std::string html_sweep(const BenchResult& b) {
   if (!sweep_points.empty()) {
     h << "<div class=chart id=\"chart-sweep-quality\">"
       << svg_scatter(sweep_points,
-                     {"Quality against speed (sweep of " + key + ")", "speedup over native (x)",
-                      "acuity RMSE (8-bit codes)", false, 760, 440, true},
-                     false)
+                     {"Visible quality against speed (sweep of " + key + ")",
+                      "speedup over native (x)", "FovVideoVDP JOD", false, 760, 440, false},
+                     true)
       << "</div>\n";
   }
   return h.str();

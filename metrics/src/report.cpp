@@ -238,6 +238,13 @@ nlohmann::json to_json(const QualitySummary& s) {
                      {"ratio", number(b.ratio)}});
   }
   j["flicker_bands"] = bands;
+  j["jod"] = s.fvvdp ? number(s.fvvdp->jod) : nlohmann::json(nullptr);
+  if (s.fvvdp) j["fvvdp"] = to_json(*s.fvvdp);
+  if (!s.fvvdp_streams.empty()) {
+    nlohmann::json streams = nlohmann::json::array();
+    for (const FvvdpResult& r : s.fvvdp_streams) streams.push_back(to_json(r));
+    j["fvvdp_streams"] = streams;
+  }
   return j;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "foveate/core/error.hpp"
 #include "internal.hpp"
 
 namespace foveate::metrics {
@@ -126,7 +127,20 @@ void QualitySeries::add(const Image& reference, const Image& test, Vec2d gaze_px
   QualityReport r = compare(reference, test, display_, gaze_px, options_);
   flicker_.add(reference, test, gaze_px, stream);
   reports_.push_back(std::move(r));
+  if (!options_.fvvdp || !Fvvdp::fits(display_.width_px, display_.height_px)) return;
+  if (stream < 0) throw Error("QualitySeries: stream must be >= 0, got " + std::to_string(stream));
+  const auto s = static_cast<size_t>(stream);
+  if (fvvdp_.size() <= s) fvvdp_.resize(s + 1);
+  if (!fvvdp_[s]) {
+    FvvdpOptions o = options_.fvvdp_options;
+    o.band_edges_deg = options_.band_edges_deg;
+    fvvdp_[s] = std::make_shared<Fvvdp>(display_, o);
+  }
+  fvvdp_[s]->set_heatmap(fvvdp_heatmap_);
+  fvvdp_[s]->add(test, reference, gaze_px);
 }
+
+void QualitySeries::set_fvvdp_heatmap(bool on) { fvvdp_heatmap_ = on; }
 
 QualitySummary QualitySeries::summary() const {
   QualitySummary s;
@@ -138,6 +152,12 @@ QualitySummary QualitySeries::summary() const {
   s.flicker.test_change = flicker_.test_change();
   s.flicker.frame_pairs = flicker_.frame_pairs();
   s.flicker.bands = flicker_.bands();
+  for (const auto& f : fvvdp_) {
+    if (!f || f->frames() == 0) continue;
+    s.fvvdp_streams.push_back(f->result());
+    if (!s.fvvdp || s.fvvdp_streams.back().jod < s.fvvdp->jod) s.fvvdp = s.fvvdp_streams.back();
+  }
+  if (s.fvvdp_streams.size() < 2) s.fvvdp_streams.clear();
   return s;
 }
 

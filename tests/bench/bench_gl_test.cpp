@@ -276,3 +276,45 @@ TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
   EXPECT_EQ(j["results"][0]["resolve_share"], 0.0);  // native declares no resolve pass
   std::filesystem::remove_all(out);
 }
+
+// FovVideoVDP judges every run over the measured frames: against the
+// supersampled reference native gets a JOD of its own, each run's JOD equals
+// the metric fed the same frames, and the reports lead with it.
+TEST(Bench, FovVideoVdpJudgesEveryRunAgainstTheReference) {
+  test::register_bars_technique();
+  const std::string out = fresh_dir("foveate-bench-jod");
+  BenchOptions o = tiny();
+  o.session.size = {96, 54};
+  o.frames = 3;
+  o.reference = 2;
+  o.techniques = std::vector<std::string>{"native", test::kBarsTechnique};
+  const BenchResult r = run(o);
+  ASSERT_EQ(r.results.size(), 2u);
+  for (const TechniqueResult& t : r.results) {
+    ASSERT_TRUE(t.metrics && t.metrics->fvvdp) << t.technique;
+    EXPECT_EQ(t.metrics->fvvdp->frames, 3);
+    EXPECT_FALSE(t.metrics->fvvdp->image);
+    EXPECT_EQ(t.metrics->fvvdp->fps, o.session.fps);
+    EXPECT_LT(t.metrics->fvvdp->jod, 10.0);
+    EXPECT_FALSE(t.fvvdp_heatmap.empty());
+  }
+  // Black bars on top of native: further from the reference than native.
+  EXPECT_LT(r.results[1].metrics->fvvdp->jod, r.results[0].metrics->fvvdp->jod);
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  for (size_t i = 0; i < 2; ++i) {
+    const nlohmann::json& q = j["results"][i]["quality"];
+    EXPECT_EQ(q["jod"].get<double>(), r.results[i].metrics->fvvdp->jod);
+    EXPECT_EQ(q["fvvdp"]["bands"].size(), 4u);
+    EXPECT_EQ(q["fvvdp"]["frame_jod"].size(), 3u);
+  }
+  std::ifstream md(out + "/results.md");
+  std::string line;
+  std::getline(md, line);
+  EXPECT_EQ(line.rfind("| technique | JOD | below native |", 0), 0u) << line;
+  std::ifstream html(out + "/report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("id=\"chart-jod\""), std::string::npos);
+  EXPECT_NE(page.find("Where the difference is visible"), std::string::npos);
+  std::filesystem::remove_all(out);
+}

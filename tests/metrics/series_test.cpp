@@ -251,8 +251,18 @@ TEST(Series, JsonKeysAndNulls) {
                                           "flicker_reference_change",
                                           "flicker_test_change",
                                           "flicker_bands",
-                                          "bands"};
+                                          "bands",
+                                          "jod",
+                                          "fvvdp"};
   EXPECT_EQ(keys, expect_keys);
+  // FovVideoVDP over the sequence: the same JOD as feeding it the frames directly.
+  ASSERT_TRUE(s.fvvdp.has_value());
+  EXPECT_EQ(j["jod"].get<double>(), s.fvvdp->jod);
+  EXPECT_EQ(j["fvvdp"]["frames"].get<int>(), 3);
+  Fvvdp direct(d);
+  for (size_t k = 0; k < f.test.size(); ++k) direct.add(f.test[k], f.reference[k], f.gaze[k]);
+  EXPECT_DOUBLE_EQ(s.fvvdp->jod, direct.result().jod);
+  EXPECT_LT(s.fvvdp->jod, 10.0);
   ASSERT_EQ(j["bands"].size(), 4u);
   const std::set<std::string> expect_band_keys{
       "from_deg",    "to_deg",   "pixels_fraction",  "identical", "psnr_db",        "ssim",

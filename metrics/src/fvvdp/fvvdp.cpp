@@ -143,6 +143,7 @@ struct Fvvdp::State {
   std::vector<std::vector<double>> ecc_q;      // [ecc band][frame]
   std::vector<std::vector<double>> ecc_share;  // [ecc band][frame]
   Map heat_sum, worst_heat;
+  int heat_frames = 0;
   FrameChannels channels;  // the filtered frame, reused
   double worst_q = -1.0;
   int worst_frame = -1;
@@ -157,7 +158,8 @@ struct Fvvdp::State {
   // Pools one judged frame into the running results.
   void record(const FrameDifference& d, bool video, Vec2d gaze, std::vector<double>& q,
               std::vector<std::vector<double>>& eq, std::vector<std::vector<double>>& share,
-              Map& heat, Map& worst, double& worst_value, int& worst_index, int index) const {
+              Map& heat, int& heat_count, Map& worst, double& worst_value, int& worst_index,
+              int index) const {
     const double fq = pool_frame(d.mean, video, parameters);
     q.push_back(fq);
     const std::vector<double> shares = judge.ecc_band_fractions(gaze);
@@ -166,9 +168,10 @@ struct Fvvdp::State {
       eq[e].push_back(empty ? std::nan("") : pool_frame(d.by_ecc[e], video, parameters));
       share[e].push_back(shares[e]);
     }
-    if (options.heatmap) {
+    if (!d.distortion.values.empty()) {
       if (heat.values.empty()) heat = Map(d.distortion.width, d.distortion.height, 0.0f);
       for (size_t i = 0; i < heat.values.size(); ++i) heat.values[i] += d.distortion.values[i];
+      ++heat_count;
       if (fq > worst_value) {
         worst_value = fq;
         worst_index = index;
@@ -193,7 +196,8 @@ struct Fvvdp::State {
     fvvdp::temporal_filter(reference.data(), n, filters[0].data(), filters[1].data(), pixels,
                            ch.planes[1].values.data(), ch.planes[3].values.data());
     const FrameDifference d = judge.judge(ch, gaze, options.heatmap);
-    record(d, true, gaze, frame_q, ecc_q, ecc_share, heat_sum, worst_heat, worst_q, worst_frame,
+    record(d, true, gaze, frame_q, ecc_q, ecc_share, heat_sum, heat_frames, worst_heat, worst_q,
+           worst_frame,
            frames - 1);
   }
 
@@ -231,6 +235,7 @@ Fvvdp::Fvvdp(Fvvdp&&) noexcept = default;
 Fvvdp& Fvvdp::operator=(Fvvdp&&) noexcept = default;
 
 int Fvvdp::frames() const { return state_->frames; }
+void Fvvdp::set_heatmap(bool on) { state_->options.heatmap = on; }
 double Fvvdp::pixels_per_degree() const { return state_->judge.pixels_per_degree(); }
 
 void Fvvdp::add(const Image& test, const Image& reference, Vec2d gaze_px) {
@@ -299,13 +304,15 @@ FvvdpResult Fvvdp::result() const {
   std::vector<double> q = s.frame_q;
   std::vector<std::vector<double>> eq = s.ecc_q, share = s.ecc_share;
   Map heat = s.heat_sum, worst = s.worst_heat;
+  int heat_frames = s.heat_frames;
   double worst_q = s.worst_q;
   int worst_frame = s.worst_frame;
   if (out.image) {
     FrameChannels ch;
     ch.planes = {*s.first_test, *s.first_reference};
     const FrameDifference d = s.judge.judge(ch, s.first_gaze, s.options.heatmap);
-    s.record(d, false, s.first_gaze, q, eq, share, heat, worst, worst_q, worst_frame, 0);
+    s.record(d, false, s.first_gaze, q, eq, share, heat, heat_frames, worst, worst_q, worst_frame,
+             0);
   }
   out.jod = fvvdp_jod_from_difference(pool_frames(q, s.parameters), s.parameters);
   for (double v : q) out.frame_jod.push_back(fvvdp_jod_from_difference(v, s.parameters));
@@ -321,8 +328,8 @@ FvvdpResult Fvvdp::result() const {
     b.pixels_fraction = share[e].empty() ? 0.0 : sum / static_cast<double>(share[e].size());
     out.bands.push_back(b);
   }
-  if (s.options.heatmap) {
-    for (float& v : heat.values) v /= static_cast<float>(q.size());
+  if (heat_frames > 0) {
+    for (float& v : heat.values) v /= static_cast<float>(heat_frames);
     out.heatmap = std::move(heat);
     out.worst_heatmap = std::move(worst);
     out.worst_frame = worst_frame;

@@ -69,6 +69,10 @@ struct TechniqueResult {
   std::optional<metrics::QualitySummary> metrics;
   Image sample;                       ///< last frame, for the report
   std::vector<OverlayShape> overlay;  ///< its layers or regions at the last frame's gaze
+  /// FovVideoVDP's distortion map of the last frame over the reference
+  /// (green invisible, red 1 JOD); empty without image metrics.
+  Image fvvdp_heatmap;
+  metrics::Map fvvdp_distortion;  ///< the map itself (JOD), mono runs
   Image heatmap;
   Image acuity_heatmap;
   /// Stereo: each eye's pixels and quality (left, right); the fields above

@@ -19,7 +19,7 @@
 
 #include "foveate/core/display.hpp"
 #include "foveate/core/image.hpp"
-#include "foveate/metrics/metrics.hpp"
+#include "foveate/metrics/map.hpp"
 
 namespace foveate::metrics {
 
@@ -32,7 +32,8 @@ struct FvvdpOptions {
   /// Lower edges of the eccentricity bands (degrees from the gaze, ascending)
   /// of FvvdpResult::bands; the last band extends to infinity.
   std::vector<double> band_edges_deg{0, 5, 10, 20};
-  /// Keep the distortion maps (FvvdpResult::heatmap and worst_heatmap).
+  /// Keep the distortion maps (FvvdpResult::heatmap and worst_heatmap);
+  /// Fvvdp::set_heatmap changes it between frames.
   bool heatmap = false;
 };
 
@@ -59,8 +60,9 @@ struct FvvdpResult {
   /// the same mapping); the sequence's JOD comes from their mean difference.
   std::vector<double> frame_jod;
   /// With FvvdpOptions::heatmap: the distortion at every pixel in JOD below
-  /// 10 (0 = invisible, 1 = one JOD), averaged over the frames, and the map of
-  /// the frame with the largest difference (worst_frame).
+  /// 10 (0 = invisible, 1 = one JOD), averaged over the frames judged with
+  /// it, and the map of the one of them with the largest difference
+  /// (worst_frame); empty when no frame was.
   Map heatmap;
   Map worst_heatmap;
   int worst_frame = -1;
@@ -114,6 +116,10 @@ class Fvvdp {
   /// foveate::Error before the first frame.
   [[nodiscard]] FvvdpResult result() const;
   [[nodiscard]] int frames() const;
+  /// Whether the coming frames keep their distortion maps (e.g. the last only).
+  void set_heatmap(bool on);
+  /// Whether frames of this size can be judged (at least 4 pixels on each side).
+  static bool fits(int width, int height) { return width >= 4 && height >= 4; }
   /// Pixels per degree at the display's centre (the metric's band frequencies).
   [[nodiscard]] double pixels_per_degree() const;
 

@@ -19,31 +19,19 @@
 //    (x + 0.5, y + 0.5) and the gaze point in pixels.
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "foveate/core/acuity.hpp"
 #include "foveate/core/display.hpp"
 #include "foveate/core/image.hpp"
+#include "foveate/metrics/fvvdp.hpp"
+#include "foveate/metrics/map.hpp"
 
 namespace foveate::metrics {
-
-inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-inline constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// A single-channel float image, row-major.
-struct Map {
-  int width = 0;
-  int height = 0;
-  std::vector<float> values;
-
-  Map() = default;
-  Map(int w, int h, float fill = 0.0f)
-      : width(w), height(h), values(static_cast<size_t>(w) * h, fill) {}
-  [[nodiscard]] float& at(int x, int y) { return values[static_cast<size_t>(y) * width + x]; }
-  [[nodiscard]] float at(int x, int y) const { return values[static_cast<size_t>(y) * width + x]; }
-};
 
 struct BandStats {
   double from_deg = 0;         ///< inclusive
@@ -114,6 +102,10 @@ struct QualityOptions {
   double profile_bin_deg = 1.0;
   /// A pixel whose pooled JND reaches this counts as visibly different.
   double jnd_threshold = 1.0;
+  /// QualitySeries also judges the sequence with FovVideoVDP (compare() does
+  /// not: it judges one frame). Its eccentricity bands are band_edges_deg.
+  bool fvvdp = true;
+  FvvdpOptions fvvdp_options;
 };
 
 // ---- Whole-frame comparison -------------------------------------------------
@@ -283,6 +275,11 @@ struct QualitySummary {
   /// edges are the frames' own (the same in every frame).
   QualityReport mean;
   FlickerSummary flicker;
+  /// FovVideoVDP over the sequence (QualityOptions::fvvdp); with several
+  /// streams (a stereo pair's eyes), the stream with the lowest JOD, and each
+  /// stream's in `fvvdp_streams`.
+  std::optional<FvvdpResult> fvvdp;
+  std::vector<FvvdpResult> fvvdp_streams;
 };
 
 /// The quality of a sequence: every frame is compared with compare() and fed
@@ -301,6 +298,8 @@ class QualitySeries {
   /// left's geometry) are pooled in one series with a `stream` each: the
   /// temporal figures compare each frame with the last of its own stream.
   void add(const Image& reference, const Image& test, Vec2d gaze_px, int stream = 0);
+  /// Whether FovVideoVDP keeps the distortion maps of the coming frames.
+  void set_fvvdp_heatmap(bool on);
   [[nodiscard]] QualitySummary summary() const;
   /// The per-frame reports, in the order added.
   [[nodiscard]] const std::vector<QualityReport>& reports() const { return reports_; }
@@ -313,6 +312,8 @@ class QualitySeries {
   QualityOptions options_;
   std::vector<QualityReport> reports_;
   FlickerTracker flicker_;
+  std::vector<std::shared_ptr<Fvvdp>> fvvdp_;  ///< per stream
+  bool fvvdp_heatmap_ = false;
 };
 
 /// The summary as JSON: to_json(summary.mean) (same keys and conventions as a
@@ -321,6 +322,8 @@ class QualitySeries {
 /// "flicker_test_change" and "flicker_bands" (one object per band:
 /// "from_deg", "to_deg", "reference_change", "test_change",
 /// "test_change_last", "excess_change", "ratio"). Non-finite numbers are null.
+/// With FovVideoVDP: "jod" (the sequence's JOD) and "fvvdp" (to_json of its
+/// result; stereo: "fvvdp_streams" too); "jod" is null without it.
 nlohmann::json to_json(const QualitySummary& summary);
 
 // ---- Pictures for reports ----------------------------------------------------
