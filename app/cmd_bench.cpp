@@ -37,6 +37,7 @@ struct BenchArgs {
   bool side_by_side = false;
   bool json = false;
   bool allow_fallback = false;
+  std::string shard;
 };
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -74,7 +75,7 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   bench::BenchOptions o;
   o.session = to_session_options(a.session);
   if (a.techniques_given) o.techniques = split(a.techniques, ',');
-  o.params = parse_params(a.session.params);
+  o.params = session_params(a.session);
   o.frames = a.frames;
   o.warmup = a.warmup;
   o.image_metrics = !a.no_metrics;
@@ -85,6 +86,7 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   o.video = a.video;
   o.side_by_side = a.side_by_side;
   if (!a.sweep.empty()) o.sweep = parse_sweep(a.sweep);
+  if (!a.shard.empty()) o.shard = parse_shard(a.shard, "--shard");
   bench::validate(o);
   return o;
 }
@@ -181,6 +183,10 @@ void register_bench(CLI::App& app) {
   sub->add_option("--sweep", a->sweep,
                   "Sweep KEY=FROM:TO:STEP: slope (the techniques' plan and the metrics' "
                   "yardstick), margin (the plan only: see --margin), or a technique parameter");
+  sub->add_option("--shard", a->shard,
+                  "Run job K of N (K/N): every N-th technique or swept run, native in every job "
+                  "as its baseline; 'foveate merge' joins the jobs' --out folders (README: "
+                  "Slurm job arrays, GNU parallel)");
   sub->callback([a] {
     const bench::BenchOptions o = to_options(*a, "foveate bench");
     print_summary(run_and_write(*a, o, "bench"), *a);

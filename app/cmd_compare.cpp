@@ -38,7 +38,7 @@ struct CompareArgs {
   std::string gaze;
   double fps = 60.0;
   bool no_foveation = false;
-  PhotometryFlags photometry;
+  PhotometryOverrides photometry;
   std::string quality;
   std::optional<double> slope;
   bool json = false;

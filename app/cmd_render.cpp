@@ -70,7 +70,7 @@ RenderSetup check(const RenderArgs& a) {
   }
   with_flag("--technique", [&] { return technique_info(a.technique); });
   s.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
-  s.params = parse_params(a.session.params);
+  s.params = session_params(a.session);
   s.params.validate({a.technique});
   if (a.out.empty() && a.video.empty() && !a.no_write)
     throw CLI::RequiredError("--out, --video or --no-write");

@@ -60,7 +60,7 @@ void run_view(const ViewArgs& a) {
   o.window = true;
   o.window_size = {o.size.width * (o.stereo ? 2 : 1) + kPanelWidth, std::max(o.size.height, 560)};
   with_flag("--technique", [&] { return technique_info(a.technique); });
-  const bench::ParamOverrides params = parse_params(a.session.params);
+  const bench::ParamOverrides params = session_params(a.session);
   // Any technique can be switched to: a KEY=VALUE must belong to one of them.
   params.validate(technique_names());
   // The mouse is the gaze unless --gaze says otherwise (normalized, top-left),

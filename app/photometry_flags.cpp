@@ -7,7 +7,7 @@
 
 namespace foveate::app {
 
-void add_photometry_flags(CLI::App& command, PhotometryFlags& flags) {
+void add_photometry_flags(CLI::App& command, PhotometryOverrides& flags) {
   const Photometry d;
   command.add_option("--peak-luminance", flags.peak_cd_m2,
                      "Luminance of the display's white in cd/m^2 (default: the display's; " +
@@ -24,20 +24,17 @@ void add_photometry_flags(CLI::App& command, PhotometryFlags& flags) {
                          format_number(d.reflectivity) + ")");
 }
 
-Display with_photometry(Display display, const PhotometryFlags& flags) {
-  Photometry& p = display.photometry;
-  if (flags.peak_cd_m2) p.peak_cd_m2 = *flags.peak_cd_m2;
-  if (flags.contrast_ratio) p.contrast_ratio = *flags.contrast_ratio;
-  if (flags.ambient_lux) p.ambient_lux = *flags.ambient_lux;
-  if (flags.reflectivity) p.reflectivity = *flags.reflectivity;
-  p.validate([](const char* key) -> std::string {
-    const std::string k = key;
-    if (k == "peak_cd_m2") return "--peak-luminance";
-    if (k == "contrast_ratio") return "--contrast-ratio";
-    if (k == "ambient_lux") return "--ambient-lux";
-    if (k == "reflectivity") return "--reflectivity";
-    return k;
-  });
+std::string photometry_flag(const std::string& key) {
+  if (key == "peak_cd_m2") return "--peak-luminance";
+  if (key == "contrast_ratio") return "--contrast-ratio";
+  if (key == "ambient_lux") return "--ambient-lux";
+  if (key == "reflectivity") return "--reflectivity";
+  return key;
+}
+
+Display with_photometry(Display display, const PhotometryOverrides& flags) {
+  flags.apply_to(display.photometry);
+  display.photometry.validate([](const char* key) { return photometry_flag(key); });
   return display;
 }
 

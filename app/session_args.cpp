@@ -4,9 +4,11 @@
 #include <cstdlib>
 #include <limits>
 
+#include "foveate/bench/params_file.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/gaze/gaze.hpp"
 #include "foveate/scenes/scene.hpp"
+#include "photometry_flags.hpp"
 
 namespace foveate::app {
 
@@ -24,6 +26,28 @@ bench::ParamOverrides parse_params(const std::vector<std::string>& items) {
       throw Error("--param " + key + ": '" + value + "' is not a number");
     }
     out.set(key, v);
+  }
+  return out;
+}
+
+bench::Shard parse_shard(const std::string& text, const std::string& flag) {
+  const auto slash = text.find('/');
+  double k = 0, n = 0;
+  const bool numbers = slash != std::string::npos && parse_number(text.substr(0, slash), k) &&
+                       parse_number(text.substr(slash + 1), n);
+  if (!numbers || k != std::floor(k) || n != std::floor(n) || n < 1 || k < 1 || k > n || n > 1000) {
+    throw Error(flag + ": expected K/N, job K of N (1 <= K <= N <= 1000), got '" + text + "'");
+  }
+  return {static_cast<int>(k) - 1, static_cast<int>(n)};
+}
+
+bench::ParamOverrides session_params(const SessionArgs& a) {
+  bench::ParamOverrides out;
+  if (!a.params_file.empty()) {
+    out = with_flag("--params-file", [&] { return bench::read_params_file(a.params_file); });
+  }
+  for (const auto& [technique, values] : parse_params(a.params).per_technique) {
+    for (const auto& [key, v] : values) out.per_technique[technique][key] = v;
   }
   return out;
 }
@@ -59,6 +83,7 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
                   "Display preset (" + Display::preset_names() +
                       ") or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
+  add_photometry_flags(*sub, a.photometry);
   add_acuity_options(sub, a.quality, a.slope);
   sub->add_option("--margin", a.margin,
                   "Plan every technique for an acuity this many times finer (slope and foveal "
@@ -69,6 +94,9 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
   sub->add_option("--param", a.params,
                   "Technique parameter KEY=VALUE or TECHNIQUE.KEY=VALUE (repeatable; see "
                   "'foveate techniques')");
+  sub->add_option("--params-file", a.params_file,
+                  "Technique parameters from a JSON file (what 'foveate tune' writes: "
+                  "params.json); --param values override it");
   sub->add_option("--gaze", a.gaze,
                   std::string("Gaze source; default the screen centre. ") + gaze::gaze_spec_help());
 }
@@ -139,6 +167,7 @@ bench::SessionOptions to_session_options(const SessionArgs& a, const char* defau
   }
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
+  o.photometry = a.photometry;
   o.acuity = bench::acuity_from(a.quality, a.slope);
   o.margin = a.margin;
   o.gaze = a.gaze;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_util.hpp"
+#include "foveate/bench/bench.hpp"
 #include "foveate/bench/params.hpp"
 #include "foveate/bench/session_options.hpp"
 
@@ -21,10 +22,12 @@ struct SessionArgs {
   std::string scene = bench::SessionOptions{}.scene;
   std::string size = kDefaultSize;
   std::string display = bench::SessionOptions{}.display;
+  PhotometryOverrides photometry;
   std::string quality;
   std::optional<double> slope;
   std::optional<double> margin;
   std::vector<std::string> params;
+  std::string params_file;
   std::string gaze;
   std::string camera_path;
   std::vector<std::string> channels;
@@ -58,5 +61,9 @@ bench::SessionOptions to_session_options(const SessionArgs& args,
 /// --param values: "KEY=VALUE" applies to every technique that has KEY;
 /// "TECHNIQUE.KEY=VALUE" to that technique only.
 bench::ParamOverrides parse_params(const std::vector<std::string>& items);
+/// "K/N" (1-based job K of N) for --shard; errors name `flag`.
+bench::Shard parse_shard(const std::string& text, const std::string& flag);
+/// --params-file's values, then --param's over them.
+bench::ParamOverrides session_params(const SessionArgs& args);
 
 }  // namespace foveate::app

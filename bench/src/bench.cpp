@@ -1,6 +1,7 @@
 #include "foveate/bench/bench.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "bench_run.hpp"
 #include "foveate/bench/frame_order.hpp"
@@ -19,6 +20,32 @@ void validate(const BenchOptions& o) {
       for_field("techniques", [&] { return technique_info(t); });
   }
   o.params.validate(o.techniques.value_or(technique_names()));
+  for (size_t i = 0; i < o.runs.size(); ++i) {
+    const RunSpec& r = o.runs[i];
+    const std::string where = "runs[" + std::to_string(i) + "]";
+    const TechniqueInfo info = for_field("runs", [&] { return technique_info(r.technique); });
+    for (const auto& [key, value] : r.params) {
+      const bool known = std::any_of(info.params.begin(), info.params.end(),
+                                     [&](const ParamDecl& d) { return d.key == key; });
+      if (!known) {
+        throw OptionError("runs", where + ": " + r.technique + " has no parameter '" + key + "'");
+      }
+      if (!std::isfinite(value)) {
+        throw OptionError("runs", where + ": " + r.technique + "." + key + " is not finite");
+      }
+    }
+  }
+  if (!o.runs.empty() && (o.techniques || !o.sweep.empty())) {
+    throw OptionError("runs", FieldText{"{runs}: give explicit runs or {techniques} and "
+                                        "{sweep}, not both",
+                                        {"runs", "techniques", "sweep"}});
+  }
+  if (o.shard.count < 1 || o.shard.count > 1000 || o.shard.index < 0 ||
+      o.shard.index >= o.shard.count) {
+    throw OptionError("shard", "expected K/N with 1 <= K <= N <= 1000 (job K of N), got " +
+                                   std::to_string(o.shard.index + 1) + "/" +
+                                   std::to_string(o.shard.count));
+  }
   if (o.reference != 1 && !(o.reference >= 2 && o.reference <= 8)) {
     throw OptionError("reference", "expected 1 (native itself) or 2..8 samples per pixel and axis");
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "foveate/bench/frame_order.hpp"
 #include "foveate/bench/statistics.hpp"
@@ -23,6 +24,16 @@ void BenchRun::notice(NoticeKind kind, FieldText text) const {
 }
 
 void BenchRun::choose_techniques() {
+  if (!options_.runs.empty()) {
+    // Explicit runs name their techniques (add_runs leaves out what the
+    // scene cannot run).
+    for (const RunSpec& r : options_.runs) {
+      if (std::find(out_.techniques.begin(), out_.techniques.end(), r.technique) ==
+          out_.techniques.end())
+        out_.techniques.push_back(r.technique);
+    }
+    return;
+  }
   if (options_.techniques) {
     out_.techniques = *options_.techniques;
     return;
@@ -62,11 +73,17 @@ void BenchRun::check_gaze_source() {
                                {"gaze", "allow_fallback"}});
 }
 
-void BenchRun::add_run(const std::string& technique, double value, bool swept) {
+void BenchRun::add_run(const std::string& technique, double value, bool swept, int run_index,
+                       const RunSpec* spec) {
   Run r;
   r.technique = technique;
   r.sweep_value = value;
+  r.result.run_index = run_index;
   ParamOverrides params = options_.params;
+  if (spec) {
+    for (const auto& [key, v] : spec->params) params.per_technique[technique][key] = v;
+    r.result.label = spec->label.empty() ? run_spec_label(*spec) : spec->label;
+  }
   r.acuity = options_.session.acuity;
   if (swept && options_.sweep.key == "slope") {
     r.acuity = for_field("sweep", [&] { return AcuityModel::with_slope(value); });
@@ -80,6 +97,7 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept) {
   r.result.parameters = r.impl.view->parameters();
   if (options_.image_metrics) {
     metrics::QualityOptions qo;
+    qo.diagnostics = options_.diagnostics;
     qo.acuity = r.acuity;
     // One display for every measure: FovVideoVDP's photometry, and the JND
     // diagnostic's light from the same.
@@ -99,18 +117,56 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept) {
 }
 
 void BenchRun::add_runs() {
-  // Native is the reference for speed and quality: always run, once.
-  add_run("native", 0.0, false);
+  // Native is the reference for speed and quality: always run, once, in
+  // every shard. The other runs are numbered in one order for every shard
+  // and dealt out in turn.
+  add_run("native", 0.0, false, 0, nullptr);
+  int index = 0;
+  const Shard& shard = options_.shard;
+  const auto mine = [&] { return (index - 1) % shard.count == shard.index; };
+  if (!options_.runs.empty()) {
+    std::set<std::string> skipped;
+    for (const RunSpec& spec : options_.runs) {
+      ++index;
+      if (!mine()) continue;
+      const std::string why =
+          scene_mismatch(technique_info(spec.technique), session_.scene().info());
+      if (!why.empty() && options_.skip_unrunnable) {
+        if (skipped.insert(spec.technique).second) {
+          out_.skipped.push_back(spec.technique + " (" + why + ")");
+          notice(NoticeKind::Note, {"skipping " + spec.technique + ": " + why, {}});
+        }
+        continue;
+      }
+      add_run(spec.technique, 0.0, false, index, &spec);
+    }
+    native_listed_ = true;  // explicit runs are judged against native's figures
+    return;
+  }
   for (const std::string& t : out_.techniques) {
     if (t == "native") continue;
     if (options_.sweep.applies_to(t)) {
-      for (double v : options_.sweep.values) add_run(t, v, true);
+      for (double v : options_.sweep.values) {
+        ++index;
+        if (mine()) add_run(t, v, true, index, nullptr);
+      }
     } else {
-      add_run(t, 0.0, false);
+      ++index;
+      if (mine()) add_run(t, 0.0, false, index, nullptr);
     }
   }
-  native_listed_ =
-      std::find(out_.techniques.begin(), out_.techniques.end(), "native") != out_.techniques.end();
+  native_listed_ = shard.count > 1 || std::find(out_.techniques.begin(), out_.techniques.end(),
+                                                "native") != out_.techniques.end();
+}
+
+std::string run_spec_label(const RunSpec& spec) {
+  std::string s = spec.technique + " {";
+  bool first = true;
+  for (const auto& [key, value] : spec.params) {
+    s += (first ? "" : ", ") + key + "=" + format_number(value, 4);
+    first = false;
+  }
+  return s + "}";
 }
 
 void BenchRun::open_video() {

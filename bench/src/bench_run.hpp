@@ -48,7 +48,8 @@ class BenchRun {
 
   void choose_techniques();
   void check_gaze_source();
-  void add_run(const std::string& technique, double value, bool swept);
+  void add_run(const std::string& technique, double value, bool swept, int run_index,
+               const RunSpec* spec);
   void add_runs();
   void open_video();
   void warm_up();

@@ -71,6 +71,7 @@ std::string pass_list(const TechniqueResult& r, const char* unit);
 
 /// "technique", or "technique @ KEY=VALUE" for a swept run.
 inline std::string label(const BenchResult& b, const TechniqueResult& r) {
+  if (!r.label.empty()) return r.label;
   if (b.options.sweep.key.empty() || r.technique == "native") return r.technique;
   return r.technique + " @ " + b.options.sweep.key + "=" + format_fixed(r.sweep_value, 4);
 }

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "foveate/bench/merge.hpp"
 #include "foveate/bench/report.hpp"
 #include "foveate/core/stats.hpp"
 #include "report_common.hpp"
@@ -22,6 +23,7 @@ nlohmann::json result_json(const BenchResult& b, const TechniqueResult& r) {
   for (const PixelPart& p : r.parts) parts.push_back({{"name", p.name}, {"pixels", p.pixels}});
   nlohmann::json j = {{"technique", r.technique},
                       {"label", label(b, r)},
+                      {"run_index", r.run_index},
                       {"parameters", params},
                       {"median_ms", r.median_ms},
                       {"p90_ms", r.p90_ms},
@@ -91,6 +93,38 @@ nlohmann::json environment_json(const RunEnvironment& e) {
 
 }  // namespace
 
+// What must be equal for shards of one benchmark to be merged (bench_json's
+// "settings"): everything that decides the frames and how they are judged.
+nlohmann::json bench_settings_json(const BenchResult& b) {
+  const BenchOptions& o = b.options;
+  const SessionOptions& s = o.session;
+  nlohmann::json runs = nlohmann::json::array();
+  for (const RunSpec& r : o.runs)
+    runs.push_back({{"technique", r.technique}, {"params", r.params}});
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [t, kv] : o.params.per_technique) params[t] = kv;
+  return {{"scene", s.scene},
+          {"size", {s.size.width, s.size.height}},
+          {"display", b.display},
+          {"acuity", {{"slope", s.acuity.slope}, {"w0_deg", s.acuity.w0_deg}}},
+          {"margin", s.margin ? nlohmann::json(*s.margin) : nlohmann::json()},
+          {"gaze", s.gaze},
+          {"fps", s.fps},
+          {"start_time_s", s.start_time_s},
+          {"stereo", s.stereo},
+          {"techniques", o.techniques ? nlohmann::json(*o.techniques) : nlohmann::json()},
+          {"params", params},
+          {"runs", runs},
+          {"sweep", {{"key", o.sweep.key}, {"values", o.sweep.values}}},
+          {"frames", o.frames},
+          {"warmup", o.warmup},
+          {"reference", o.reference},
+          {"image_metrics", o.image_metrics},
+          {"diagnostics", o.diagnostics},
+          {"passes", o.passes},
+          {"shards", o.shard.count}};
+}
+
 nlohmann::json bench_json(const BenchResult& b) {
   nlohmann::json results = nlohmann::json::array();
   for (const TechniqueResult& r : b.results) results.push_back(result_json(b, r));
@@ -117,6 +151,10 @@ nlohmann::json bench_json(const BenchResult& b) {
           {"fps_clock", s.fps},
           {"sweep", sweep},
           {"stereo", stereo_json(b)},
+          {"shard", b.merged_shards > 0 ? nlohmann::json{{"merged", b.merged_shards}}
+                                        : nlohmann::json{{"index", b.options.shard.index},
+                                                         {"count", b.options.shard.count}}},
+          {"settings", bench_settings_json(b)},
           {"results", results}};
 }
 

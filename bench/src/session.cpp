@@ -15,6 +15,7 @@ Session::Session(const SessionOptions& o, SessionCallbacks callbacks)
   display_ = for_field("display", [&] {
                return Display::load(o.display);
              }).resized(o.size.width, o.size.height);
+  apply_photometry(display_);
   if (o.stereo) {
     stereo_display_ = for_field("stereo", [&] { return StereoDisplay::from(display_); });
   }
@@ -29,6 +30,22 @@ Session::Session(const SessionOptions& o, SessionCallbacks callbacks)
 }
 
 Session::~Session() = default;
+
+void Session::apply_photometry(Display& display) const {
+  if (!options_.photometry.any()) return;
+  options_.photometry.apply_to(display.photometry);
+  std::string field;
+  try {
+    display.photometry.validate([&](const char* key) {
+      field = std::string("photometry.") + key;
+      return "{" + field + "}";
+    });
+  } catch (const OptionError&) {
+    throw;
+  } catch (const Error& e) {
+    throw OptionError(field, FieldText{e.what(), {field}});
+  }
+}
 
 void Session::make_context() {
   if (!options_.window) {
@@ -112,6 +129,7 @@ void Session::set_display(const std::string& display) {
   display_ = for_field("display", [&] {
                return Display::load(display);
              }).resized(options_.size.width, options_.size.height);
+  apply_photometry(display_);
   options_.display = display;
   make_tracker();
 }

@@ -124,20 +124,27 @@ QualitySeries::QualitySeries(Display display, QualityOptions options, double fli
 }
 
 void QualitySeries::add(const Image& reference, const Image& test, Vec2d gaze_px, int stream) {
-  QualityReport r = compare(reference, test, display_, gaze_px, options_);
-  flicker_.add(reference, test, gaze_px, stream);
-  reports_.push_back(std::move(r));
-  if (!options_.fvvdp || !Fvvdp::fits(display_.width_px, display_.height_px)) return;
   if (stream < 0) throw Error("QualitySeries: stream must be >= 0, got " + std::to_string(stream));
-  const auto s = static_cast<size_t>(stream);
-  if (fvvdp_.size() <= s) fvvdp_.resize(s + 1);
-  if (!fvvdp_[s]) {
-    FvvdpOptions o = options_.fvvdp_options;
-    o.band_edges_deg = options_.band_edges_deg;
-    fvvdp_[s] = std::make_shared<Fvvdp>(display_, o);
+  // Everything that can refuse the frame first, so that a refused frame
+  // leaves the series as it was.
+  std::optional<QualityReport> report;
+  if (options_.diagnostics) report = compare(reference, test, display_, gaze_px, options_);
+  if (options_.fvvdp && Fvvdp::fits(display_.width_px, display_.height_px)) {
+    const auto s = static_cast<size_t>(stream);
+    if (fvvdp_.size() <= s) fvvdp_.resize(s + 1);
+    if (!fvvdp_[s]) {
+      FvvdpOptions o = options_.fvvdp_options;
+      o.band_edges_deg = options_.band_edges_deg;
+      fvvdp_[s] = std::make_shared<Fvvdp>(display_, o);
+    }
+    fvvdp_[s]->set_heatmap(fvvdp_heatmap_);
+    fvvdp_[s]->add(test, reference, gaze_px);
   }
-  fvvdp_[s]->set_heatmap(fvvdp_heatmap_);
-  fvvdp_[s]->add(test, reference, gaze_px);
+  if (report) {
+    flicker_.add(reference, test, gaze_px, stream);
+    reports_.push_back(std::move(*report));
+  }
+  ++frames_;
 }
 
 void QualitySeries::set_fvvdp_heatmap(bool on) { fvvdp_heatmap_ = on; }

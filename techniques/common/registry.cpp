@@ -159,12 +159,14 @@ void check_parameter(const TechniqueInfo& info, const std::string& key, double v
 }
 
 ParamDecl plan_margin_param(double fidelity_default) {
-  return param(kPlanMarginKey,
-               "plan for an acuity this many times finer than the model the metrics judge by "
-               "(slope and foveal MAR divided by it): 1 = the paper's plan; the default is the "
-               "least at which this technique's error stays within native's own + 1 code against "
-               "a 4x4 supersampled reference (docs/fidelity.md)",
-               "", ParamType::Real, 1.0, 4.0, fidelity_default);
+  return tuned(
+      param(kPlanMarginKey,
+            "plan for an acuity this many times finer than the model the metrics judge by "
+            "(slope and foveal MAR divided by it): 1 = the paper's plan; the default is the "
+            "least at which this technique's error stays within native's own + 1 code against "
+            "a 4x4 supersampled reference (docs/fidelity.md)",
+            "", ParamType::Real, 1.0, 4.0, fidelity_default),
+      {1.0, 1.25, 1.5, 2.0, 2.5, 3.0});
 }
 
 TechniqueConfig planning_config(const TechniqueConfig& config, const ParamValues& values) {

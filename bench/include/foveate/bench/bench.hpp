@@ -5,6 +5,8 @@
 // glFinish, and judged against a reference for quality.
 #include <array>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +21,29 @@
 
 namespace foveate::bench {
 
+/// A run of one technique with parameters of its own (foveate tune's
+/// candidates): its own keys only, over its declared defaults.
+struct RunSpec {
+  std::string technique;
+  std::map<std::string, double> params;
+  /// How tables name the run; empty: "technique {key=value, ...}".
+  std::string label;
+};
+
+/// One of several independent jobs a benchmark is split into: job `index`
+/// (0-based) of `count` measures every count-th run (native in every job,
+/// as each job's baseline); `foveate merge` joins the jobs' results.
+struct Shard {
+  int index = 0;
+  int count = 1;
+};
+
+/// Supersampled reference frames kept between benchmarks of the same frames
+/// (tune's stages): frame k's image, rendered once.
+struct ReferenceFrames {
+  std::map<int, Image> frames;
+};
+
 struct BenchOptions {
   SessionOptions session;
   /// The techniques to measure; unset, every registered technique the scene
@@ -26,6 +51,16 @@ struct BenchOptions {
   /// Native always runs, as the reference for speed.
   std::optional<std::vector<std::string>> techniques;
   ParamOverrides params;
+  /// Explicit runs instead of `techniques` x `sweep` (native is added).
+  std::vector<RunSpec> runs;
+  /// Explicit runs of a technique the scene cannot run (lodmask without
+  /// meshes) are left out with a note instead of failing the benchmark.
+  bool skip_unrunnable = false;
+  Shard shard;
+  /// With reference > 1: frames of the reference already rendered by a
+  /// benchmark with the same session options are taken from here, and new
+  /// ones added (null: rendered every time).
+  std::shared_ptr<ReferenceFrames> reference_frames;
   int frames = 12;  ///< measured frames per technique
   int warmup = 2;   ///< at least; each technique warms up as long as it needs
   /// What the image metrics judge against: 1 = native itself, N > 1 = native
@@ -33,6 +68,9 @@ struct BenchOptions {
   /// judged against too.
   int reference = 1;
   bool image_metrics = true;  ///< compare every frame with the reference (PSNR, SSIM, ...)
+  /// With image metrics: the diagnostics (PSNR, SSIM, acuity error, JND,
+  /// FLIP, flicker) besides FovVideoVDP; off, FovVideoVDP alone (tune).
+  bool diagnostics = true;
   /// Time every pass: bracketed with glFinish on software renderers,
   /// timestamp queries on a GPU. Adds a little to frame times.
   bool passes = false;
@@ -51,6 +89,10 @@ struct BenchOptions {
 
 struct TechniqueResult {
   std::string technique;
+  std::string label;  ///< an explicit run's label (RunSpec); empty otherwise
+  /// The run's place among all runs of the benchmark (native 0), the same in
+  /// every shard, so that merged shards keep the order of one run.
+  int run_index = 0;
   double sweep_value = 0.0;
   std::vector<std::pair<std::string, double>> parameters;
   std::vector<double> frame_ms;
@@ -104,6 +146,8 @@ struct BenchResult {
   /// Stereo runs: both eyes' displays (display above is the left eye's).
   std::optional<StereoDisplay> stereo;
   std::array<Vec2d, 2> sample_eye_gaze_px{};  ///< each eye's gaze at the last frame
+  /// A result merged from this many shards (merge_shards); 0 for one run.
+  int merged_shards = 0;
 };
 
 /// What a benchmark tells its front end while it runs.
@@ -121,6 +165,9 @@ struct BenchCallbacks {
 /// Throws an OptionError naming the field of the first bad value (run_bench
 /// checks them all before it creates anything).
 void validate(const BenchOptions& options);
+
+/// "technique {key=value, ...}": an explicit run's label when it has none.
+std::string run_spec_label(const RunSpec& spec);
 
 /// Runs the benchmark. Throws an OptionError naming the field of a bad value.
 BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbacks = {});

@@ -115,6 +115,9 @@ class Session {
   void set_display(const std::string& display);
 
  private:
+  /// The options' photometry over the display's own; an OptionError of
+  /// "photometry.KEY" for a bad value.
+  void apply_photometry(Display& display) const;
   void make_context();
   void make_renderers();
   void make_tracker();

@@ -19,7 +19,10 @@ struct SessionOptions {
   SceneOptions scene_options;             ///< channels, camera path, up axis, model memory, iDate
   PixelSize size{1920, 1080};             ///< the output (one eye's in stereo)
   std::string display = "desktop-1080p";  ///< a preset or a JSON file, resized to `size`
-  AcuityModel acuity;                     ///< what the metrics judge by
+  /// The display's photometry (what FovVideoVDP judges with), field by field
+  /// over the display's own.
+  PhotometryOverrides photometry;
+  AcuityModel acuity;  ///< what the metrics judge by
   /// Every technique plans for `acuity.finer(margin)` (1 = the model
   /// itself); unset, each technique's own planning margin (kPlanMarginKey).
   std::optional<double> margin;

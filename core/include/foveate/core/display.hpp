@@ -59,6 +59,24 @@ struct Photometry {
   void validate(const std::function<std::string(const char* key)>& name) const;
 };
 
+/// Photometry given field by field over a display's own (a command line's
+/// flags, a library's options): each value set replaces the display's.
+struct PhotometryOverrides {
+  std::optional<double> peak_cd_m2;
+  std::optional<double> contrast_ratio;
+  std::optional<double> ambient_lux;
+  std::optional<double> reflectivity;
+  [[nodiscard]] bool any() const {
+    return peak_cd_m2 || contrast_ratio || ambient_lux || reflectivity;
+  }
+  void apply_to(Photometry& p) const {
+    if (peak_cd_m2) p.peak_cd_m2 = *peak_cd_m2;
+    if (contrast_ratio) p.contrast_ratio = *contrast_ratio;
+    if (ambient_lux) p.ambient_lux = *ambient_lux;
+    if (reflectivity) p.reflectivity = *reflectivity;
+  }
+};
+
 struct Display {
   std::string name = "desktop-1080p";
   int width_px = 1920;

@@ -106,6 +106,9 @@ struct QualityOptions {
   /// not: it judges one frame). Its eccentricity bands are band_edges_deg.
   bool fvvdp = true;
   FvvdpOptions fvvdp_options;
+  /// QualitySeries: the per-frame measures (compare()) and flicker besides
+  /// FovVideoVDP; off, FovVideoVDP alone (the summary's other figures stay NaN).
+  bool diagnostics = true;
 };
 
 // ---- Whole-frame comparison -------------------------------------------------
@@ -303,7 +306,7 @@ class QualitySeries {
   [[nodiscard]] QualitySummary summary() const;
   /// The per-frame reports, in the order added.
   [[nodiscard]] const std::vector<QualityReport>& reports() const { return reports_; }
-  [[nodiscard]] int frames() const { return static_cast<int>(reports_.size()); }
+  [[nodiscard]] int frames() const { return frames_; }
   [[nodiscard]] const Display& display() const { return display_; }
   [[nodiscard]] const QualityOptions& options() const { return options_; }
 
@@ -311,6 +314,7 @@ class QualitySeries {
   Display display_;
   QualityOptions options_;
   std::vector<QualityReport> reports_;
+  int frames_ = 0;
   FlickerTracker flicker_;
   std::vector<std::shared_ptr<Fvvdp>> fvvdp_;  ///< per stream
   bool fvvdp_heatmap_ = false;
@@ -325,6 +329,10 @@ class QualitySeries {
 /// With FovVideoVDP: "jod" (the sequence's JOD) and "fvvdp" (to_json of its
 /// result; stereo: "fvvdp_streams" too); "jod" is null without it.
 nlohmann::json to_json(const QualitySummary& summary);
+/// What to_json wrote, read back (nulls become NaN, or +inf where to_json
+/// writes infinity as null); images and heat maps are not in the JSON.
+QualitySummary quality_summary_from_json(const nlohmann::json& j);
+FvvdpResult fvvdp_result_from_json(const nlohmann::json& j);
 
 // ---- Pictures for reports ----------------------------------------------------
 

@@ -69,12 +69,21 @@ struct ParamDecl {
   /// A default derived from the configuration (acuity model, display) and the
   /// parameters declared before this one; clamped into [min, max].
   std::function<double(const TechniqueConfig&, const ParamValues& earlier)> derive;
+  /// The values `foveate tune` tries for a parameter that trades quality for
+  /// time (within [min, max]); empty: tune leaves it at its default.
+  std::vector<double> tune = {};
 };
+
+/// `decl` with the values tune tries.
+inline ParamDecl tuned(ParamDecl decl, std::vector<double> values) {
+  decl.tune = std::move(values);
+  return decl;
+}
 
 /// A parameter whose default is the constant `value`.
 inline ParamDecl param(std::string key, std::string help, std::string unit, ParamType type,
                        double min, double max, double value) {
-  return {std::move(key), std::move(help), std::move(unit), type, min, max, value, {}};
+  return {std::move(key), std::move(help), std::move(unit), type, min, max, value, {}, {}};
 }
 
 /// The key of the planning margin: a technique that declares it (every

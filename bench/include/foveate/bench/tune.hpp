@@ -1,0 +1,103 @@
+#pragma once
+// foveate tune: for every technique, the fastest parameters whose
+// FovVideoVDP JOD stays within a bound of native's (both judged against the
+// supersampled reference) on every scene given, searched over the parameters
+// the techniques declare as trading quality for time (ParamDecl::tune).
+//
+// The search, per scene, in benchmarks that render every candidate beside
+// native (timed in the same run, interleaved) and share the reference frames:
+//  1. every tuned value of the planning margin, the other parameters at their
+//     defaults;
+//  2. from each technique's best point (the fastest within the bound, else the
+//     closest to it), every other tuned parameter's values one at a time, and
+//     the margin one step either side;
+//  3. the changes of stage 2 that kept the bound and gained speed, combined.
+// A shard (TuneOptions::shard) runs a fixed grid instead (stage 1 crossed with
+// stage 2's one-at-a-time changes at every margin), its slice of it, so that
+// shards need nothing from each other; merge_tune_shards joins them.
+#include <functional>
+#include <map>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "foveate/bench/bench.hpp"
+#include "foveate/bench/params_file.hpp"
+
+namespace foveate::bench {
+
+inline constexpr const char* kTuneSchema = "foveate-tune/1";
+
+struct TuneOptions {
+  /// The frames and how they are judged: size, display, gaze, clock, frames,
+  /// warm-up, reference (ssaa:4 by default here), planning margin left unset.
+  BenchOptions bench = default_bench();
+  std::vector<std::string> scenes{"guenter", "raymarch"};
+  /// Unset: every registered technique but native that a scene can run.
+  std::optional<std::vector<std::string>> techniques;
+  double bound_jod = 0.25;  ///< allowed distance below native's JOD
+  Shard shard;
+
+  static BenchOptions default_bench();
+};
+
+/// One evaluated candidate on one scene.
+struct TunePoint {
+  std::string scene;
+  std::string technique;
+  std::map<std::string, double> params;  ///< the tuned keys' values (others at defaults)
+  int stage = 1;
+  double speedup = 0;
+  double jod = 0;
+  double below_native = 0;  ///< native's JOD minus this one's
+  double pixel_ratio = 1;
+  bool within_bound = false;
+};
+
+struct TuneResult {
+  TuneOptions options;
+  RunEnvironment environment;
+  std::string renderer;
+  std::map<std::string, double> native_jod;  ///< per scene
+  std::vector<TunePoint> points;
+  /// Per technique: the fastest setting within the bound on every scene (by
+  /// the geometric mean of its speedups); a technique with none keeps its
+  /// closest setting and says so in `verdict`.
+  TechniqueParams chosen;
+  std::map<std::string, std::string> verdict;
+  int merged_shards = 0;
+  /// The settings shards of one run must share (tune.json's "settings", as text).
+  std::string settings_key;
+};
+
+struct TuneCallbacks {
+  BenchCallbacks bench;
+  /// Before each benchmark: the scene, the stage and how many candidates.
+  std::function<void(const std::string& scene, int stage, int candidates)> stage;
+};
+
+/// Throws an OptionError naming the field of a bad value.
+void validate(const TuneOptions& options);
+TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks = {});
+
+/// The front of one technique on one scene: its points no other point of it
+/// beats in both speed and JOD, by speedup.
+std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
+                                  const std::string& technique);
+/// Chooses `chosen` and `verdict` from the points (run_tune and merging do).
+void choose_parameters(TuneResult& r);
+
+nlohmann::json tune_json(const TuneResult& r);
+/// TuneResult::settings_key of a run with these options.
+std::string tune_settings_key(const TuneOptions& options);
+TuneResult read_tune_results(const nlohmann::json& j, const std::string& where);
+/// Joins a tune run's shards (same version and settings, each once).
+TuneResult merge_tune_shards(const std::vector<TuneResult>& shards,
+                             const std::vector<std::string>& names);
+std::string tune_markdown(const TuneResult& r);
+/// tune.json, tune.md, params.json (the chosen parameters, for
+/// --params-file) and report.html (every technique's front per scene) in `dir`.
+void write_tune_report(const TuneResult& r, const std::string& dir);
+
+}  // namespace foveate::bench

@@ -1,0 +1,394 @@
+// The search of foveate tune (tune.hpp): candidates as explicit benchmark
+// runs, stage by stage, per scene; then the choice over every scene.
+#include "foveate/bench/tune.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "foveate/core/stats.hpp"
+
+namespace foveate::bench {
+
+namespace {
+
+using Params = std::map<std::string, double>;
+
+// A tuned parameter of a technique and the values tune tries.
+struct Axis {
+  std::string key;
+  std::vector<double> values;
+};
+
+std::vector<Axis> axes_of(const std::string& technique) {
+  std::vector<Axis> axes;
+  for (const ParamDecl& d : technique_info(technique).params) {
+    if (!d.tune.empty()) axes.push_back({d.key, d.tune});
+  }
+  return axes;
+}
+
+struct Candidate {
+  std::string technique;
+  Params params;
+  bool operator<(const Candidate& o) const {
+    return std::tie(technique, params) < std::tie(o.technique, o.params);
+  }
+};
+
+// The techniques tuned: those asked for, or every registered one but native
+// (a scene's benchmark leaves out those it cannot run).
+std::vector<std::string> tuned_techniques(const TuneOptions& o) {
+  std::vector<std::string> out;
+  for (const std::string& t : o.techniques.value_or(technique_names())) {
+    if (t != "native") out.push_back(t);
+  }
+  return out;
+}
+
+class Search {
+ public:
+  Search(const TuneOptions& o, const TuneCallbacks& c, TuneResult& r)
+      : options_(o), callbacks_(c), out_(r) {}
+
+  void scene(const std::string& name) {
+    scene_ = name;
+    cache_ = std::make_shared<ReferenceFrames>();
+    techniques_ = tuned_techniques(options_);
+    if (options_.shard.count > 1) {
+      evaluate(grid(), 1, true);
+      return;
+    }
+    evaluate(stage1(), 1, false);
+    evaluate(stage2(), 2, false);
+    evaluate(stage3(), 3, false);
+  }
+
+  // Settings chosen on one scene, tried on the scenes that have not seen them.
+  void cross_check(const std::vector<std::string>& scenes) {
+    for (const std::string& s : scenes) {
+      scene_ = s;
+      cache_ = std::make_shared<ReferenceFrames>();
+      techniques_ = tuned_techniques(options_);
+      std::vector<Candidate> todo;
+      for (const std::string& t : techniques_) {
+        for (const std::string& other : scenes) {
+          if (other == s) continue;
+          const TunePoint* best = best_point(other, t);
+          if (best && !seen(s, {t, best->params})) todo.push_back({t, best->params});
+        }
+      }
+      evaluate(todo, 4, false);
+    }
+  }
+
+ private:
+  std::vector<Candidate> stage1() const {
+    std::vector<Candidate> c;
+    for (const std::string& t : techniques_) {
+      const std::vector<Axis> axes = axes_of(t);
+      const auto margin = std::find_if(axes.begin(), axes.end(),
+                                       [](const Axis& a) { return a.key == kPlanMarginKey; });
+      if (margin == axes.end()) {
+        c.push_back({t, {}});
+        continue;
+      }
+      for (double v : margin->values) c.push_back({t, {{kPlanMarginKey, v}}});
+    }
+    return c;
+  }
+
+  // One other parameter changed at a time from the best point, and the
+  // margin one step either side.
+  std::vector<Candidate> stage2() const {
+    std::vector<Candidate> c;
+    for (const std::string& t : techniques_) {
+      const TunePoint* best = best_point(scene_, t);
+      if (!best) continue;
+      for (const Axis& a : axes_of(t)) {
+        if (a.key == kPlanMarginKey) {
+          const auto it = best->params.find(a.key);
+          if (it == best->params.end()) continue;
+          const auto pos = std::find(a.values.begin(), a.values.end(), it->second);
+          const auto idx = pos - a.values.begin();
+          for (auto j : {idx - 1, idx + 1}) {
+            if (j < 0 || j >= static_cast<decltype(j)>(a.values.size())) continue;
+            Params p = best->params;
+            p[a.key] = a.values[static_cast<size_t>(j)];
+            c.push_back({t, p});
+          }
+          continue;
+        }
+        for (double v : a.values) {
+          Params p = best->params;
+          p[a.key] = v;
+          c.push_back({t, p});
+        }
+      }
+    }
+    return c;
+  }
+
+  // The single changes that kept the bound and gained speed, together.
+  std::vector<Candidate> stage3() const {
+    std::vector<Candidate> c;
+    for (const std::string& t : techniques_) {
+      const TunePoint* best = best_point(scene_, t);
+      if (!best) continue;
+      Params combined = best->params;
+      int changes = 0;
+      for (const Axis& a : axes_of(t)) {
+        if (a.key == kPlanMarginKey) continue;
+        const TunePoint* gain = nullptr;
+        for (const TunePoint& p : out_.points) {
+          if (p.scene != scene_ || p.technique != t || p.stage != 2 || !p.within_bound) continue;
+          if (p.speedup <= best->speedup || !differs_only_in(p.params, best->params, a.key))
+            continue;
+          if (!gain || p.speedup > gain->speedup) gain = &p;
+        }
+        if (gain) {
+          combined[a.key] = gain->params.at(a.key);
+          ++changes;
+        }
+      }
+      if (changes >= 2) c.push_back({t, combined});
+    }
+    return c;
+  }
+
+  // Shards: every margin crossed with one other parameter changed at a time.
+  std::vector<Candidate> grid() const {
+    std::vector<Candidate> all;
+    for (const std::string& t : techniques_) {
+      const std::vector<Axis> axes = axes_of(t);
+      std::vector<double> margins{std::nan("")};
+      for (const Axis& a : axes) {
+        if (a.key == kPlanMarginKey) margins = a.values;
+      }
+      for (double m : margins) {
+        Params base;
+        if (!std::isnan(m)) base[kPlanMarginKey] = m;
+        all.push_back({t, base});
+        for (const Axis& a : axes) {
+          if (a.key == kPlanMarginKey) continue;
+          for (double v : a.values) {
+            Params p = base;
+            p[a.key] = v;
+            all.push_back({t, p});
+          }
+        }
+      }
+    }
+    std::vector<Candidate> mine;
+    for (size_t i = 0; i < all.size(); ++i) {
+      if (static_cast<int>(i % static_cast<size_t>(options_.shard.count)) == options_.shard.index)
+        mine.push_back(all[i]);
+    }
+    return mine;
+  }
+
+  static bool differs_only_in(const Params& a, const Params& b, const std::string& key) {
+    std::set<std::string> keys;
+    for (const auto& [k, v] : a) keys.insert(k);
+    for (const auto& [k, v] : b) keys.insert(k);
+    for (const std::string& k : keys) {
+      const auto ia = a.find(k), ib = b.find(k);
+      const bool same = ia != a.end() && ib != b.end() && ia->second == ib->second;
+      if (!same && k != key) return false;
+    }
+    return a.count(key) && (!b.count(key) || a.at(key) != b.at(key));
+  }
+
+  bool seen(const std::string& scene, const Candidate& c) const {
+    return std::any_of(out_.points.begin(), out_.points.end(), [&](const TunePoint& p) {
+      return p.scene == scene && p.technique == c.technique && p.params == c.params;
+    });
+  }
+
+  // The fastest point within the bound, else the one closest to it.
+  const TunePoint* best_point(const std::string& scene, const std::string& technique) const {
+    const TunePoint* best = nullptr;
+    for (const TunePoint& p : out_.points) {
+      if (p.scene != scene || p.technique != technique) continue;
+      if (!best) {
+        best = &p;
+      } else if (p.within_bound != best->within_bound) {
+        if (p.within_bound) best = &p;
+      } else if (p.within_bound ? p.speedup > best->speedup : p.below_native < best->below_native) {
+        best = &p;
+      }
+    }
+    return best;
+  }
+
+  void evaluate(std::vector<Candidate> candidates, int stage, bool shard_slice) {
+    std::set<Candidate> unique;
+    std::vector<RunSpec> runs;
+    for (const Candidate& c : candidates) {
+      if (seen(scene_, c) || !unique.insert(c).second) continue;
+      runs.push_back({c.technique, c.params, ""});
+    }
+    if (runs.empty()) return;
+    if (callbacks_.stage) callbacks_.stage(scene_, stage, static_cast<int>(runs.size()));
+    BenchOptions b = options_.bench;
+    b.session.scene = scene_;
+    b.techniques.reset();
+    b.sweep = {};
+    b.runs = runs;
+    b.image_metrics = true;
+    b.diagnostics = false;
+    b.reference_frames = cache_;
+    b.skip_unrunnable = true;
+    b.shard = {};
+    (void)shard_slice;
+    const BenchResult r = run_bench(b, callbacks_.bench);
+    if (out_.renderer.empty()) {
+      out_.renderer = r.renderer;
+      out_.environment = r.environment;
+    }
+    double native = b.reference > 1 ? std::nan("") : 10.0;
+    for (const TechniqueResult& t : r.results) {
+      if (t.run_index == 0 && t.metrics && t.metrics->fvvdp) native = t.metrics->fvvdp->jod;
+    }
+    // Native's JOD is the same in every benchmark of a scene (same frames,
+    // same reference): the first one's is kept.
+    out_.native_jod.emplace(scene_, native);
+    native = out_.native_jod.at(scene_);
+    for (const TechniqueResult& t : r.results) {
+      if (t.run_index == 0) continue;
+      TunePoint p;
+      p.scene = scene_;
+      p.technique = t.technique;
+      p.params = runs[static_cast<size_t>(t.run_index - 1)].params;
+      p.stage = stage;
+      p.speedup = t.speedup;
+      p.jod = t.metrics && t.metrics->fvvdp ? t.metrics->fvvdp->jod : std::nan("");
+      p.below_native = native - p.jod;
+      p.pixel_ratio = t.pixel_ratio;
+      p.within_bound = p.below_native <= options_.bound_jod;
+      out_.points.push_back(p);
+    }
+  }
+
+  const TuneOptions& options_;
+  const TuneCallbacks& callbacks_;
+  TuneResult& out_;
+  std::string scene_;
+  std::shared_ptr<ReferenceFrames> cache_;
+  std::vector<std::string> techniques_;
+};
+
+}  // namespace
+
+BenchOptions TuneOptions::default_bench() {
+  BenchOptions b;
+  b.reference = 4;
+  b.frames = 8;
+  b.warmup = 2;
+  b.diagnostics = false;
+  return b;
+}
+
+void validate(const TuneOptions& o) {
+  BenchOptions b = o.bench;
+  b.runs.clear();
+  b.techniques.reset();
+  validate(b);
+  if (!(o.bound_jod > 0.0 && o.bound_jod <= 10.0)) {
+    throw OptionError("bound_jod", "expected a JOD distance in (0, 10]");
+  }
+  if (o.scenes.empty()) throw OptionError("scenes", "give at least one scene");
+  if (o.techniques) {
+    if (o.techniques->empty()) throw OptionError("techniques", "give at least one technique");
+    for (const std::string& t : *o.techniques) {
+      for_field("techniques", [&] { return technique_info(t); });
+      if (t == "native") throw OptionError("techniques", "native is the baseline, not tuned");
+    }
+  }
+  if (o.shard.count < 1 || o.shard.index < 0 || o.shard.index >= o.shard.count) {
+    throw OptionError("shard", "expected job K of N with 1 <= K <= N");
+  }
+}
+
+TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks) {
+  validate(options);
+  TuneResult out;
+  out.options = options;
+  out.settings_key = tune_settings_key(options);
+  Search search(options, callbacks, out);
+  for (const std::string& scene : options.scenes) search.scene(scene);
+  if (options.scenes.size() > 1 && options.shard.count == 1) search.cross_check(options.scenes);
+  choose_parameters(out);
+  return out;
+}
+
+std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
+                                  const std::string& technique) {
+  std::vector<TunePoint> pts;
+  for (const TunePoint& p : r.points) {
+    if (p.scene == scene && p.technique == technique && std::isfinite(p.jod)) pts.push_back(p);
+  }
+  std::vector<TunePoint> front;
+  for (const TunePoint& p : pts) {
+    const bool dominated = std::any_of(pts.begin(), pts.end(), [&](const TunePoint& q) {
+      return q.speedup >= p.speedup && q.jod >= p.jod && (q.speedup > p.speedup || q.jod > p.jod);
+    });
+    if (!dominated) front.push_back(p);
+  }
+  std::sort(front.begin(), front.end(),
+            [](const TunePoint& a, const TunePoint& b) { return a.speedup < b.speedup; });
+  return front;
+}
+
+void choose_parameters(TuneResult& r) {
+  r.chosen.clear();
+  r.verdict.clear();
+  std::set<std::string> techniques;
+  for (const TunePoint& p : r.points) techniques.insert(p.technique);
+  for (const std::string& t : techniques) {
+    // Every setting of t, with its points on each scene.
+    std::map<Params, std::map<std::string, const TunePoint*>> settings;
+    std::set<std::string> scenes;
+    for (const TunePoint& p : r.points) {
+      if (p.technique != t) continue;
+      settings[p.params][p.scene] = &p;
+      scenes.insert(p.scene);
+    }
+    const Params* best = nullptr;
+    double best_speed = 0.0, best_margin = std::numeric_limits<double>::infinity();
+    bool best_within = false;
+    for (const auto& [params, by_scene] : settings) {
+      if (by_scene.size() != scenes.size()) continue;  // not judged on every scene
+      bool within = true;
+      double log_speed = 0.0, worst = -std::numeric_limits<double>::infinity();
+      for (const auto& [scene, p] : by_scene) {
+        within = within && p->within_bound;
+        log_speed += std::log(p->speedup);
+        worst = std::max(worst, p->below_native);
+      }
+      const double speed = std::exp(log_speed / static_cast<double>(by_scene.size()));
+      const bool better =
+          !best || (within && !best_within) ||
+          (within == best_within && (within ? speed > best_speed : worst < best_margin));
+      if (better) {
+        best = &params;
+        best_speed = speed;
+        best_margin = worst;
+        best_within = within;
+      }
+    }
+    if (!best) {
+      r.verdict[t] = "no setting was judged on every scene";
+      continue;
+    }
+    r.chosen[t] = *best;
+    r.verdict[t] =
+        best_within
+            ? "within " + format_fixed(r.options.bound_jod, 2) + " JOD of native on every scene, " +
+                  format_fixed(best_speed, 2) + "x (geometric mean)"
+            : "no setting within the bound; the closest: " + format_fixed(best_margin, 3) +
+                  " JOD below native at worst";
+  }
+}
+
+}  // namespace foveate::bench
