@@ -6,6 +6,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
+#include "foveate/gaze/nearest_object.hpp"
 #include "foveate/gaze/pupil.hpp"
 #include "foveate/gaze/synthetic.hpp"
 #include "foveate/gaze/trace.hpp"

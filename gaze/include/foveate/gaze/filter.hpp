@@ -9,7 +9,7 @@
 #include <string>
 
 #include "foveate/gaze/gaze.hpp"
-#include "foveate/gaze/synthetic.hpp"
+#include "foveate/gaze/main_sequence.hpp"
 
 namespace foveate::gaze {
 
