@@ -1,58 +1,21 @@
 #pragma once
-// What the mesh scenes share: meshes with three discrete LODs on the GPU, the
-// G-buffer, per-view culling, and the deferred prepass. A MeshSceneBase
-// subclass supplies its draw items each frame and its shading function.
+// What the mesh scenes share: per-view culling and LOD choice, and the
+// deferred prepass into the G-buffer (gbuffer.hpp) of the meshes a subclass
+// uploaded (gpu_mesh.hpp). A MeshSceneBase subclass supplies its draw items
+// each frame and its shading function.
 #include <array>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "foveate/core/image.hpp"
-#include "foveate/gpu/gl.hpp"
 #include "foveate/gpu/shader.hpp"
 #include "foveate/scenes/camera_path.hpp"
 #include "foveate/scenes/scene.hpp"
+#include "gbuffer.hpp"
+#include "gpu_mesh.hpp"
 
 namespace foveate::detail {
-
-struct Vertex {
-  float px, py, pz;
-  float nx, ny, nz;
-  float u, v;
-};
-
-/// CPU geometry of one mesh.
-struct MeshData {
-  std::vector<Vertex> vertices;
-  std::vector<unsigned> indices;
-};
-
-/// One mesh on the GPU: a vertex buffer and the index ranges of its LODs
-/// (0 = full detail; 1 and 2 about 10 % and 1 % of the triangles).
-struct GpuMesh {
-  gpu::VertexArray vao;
-  gpu::Buffer vertices;
-  gpu::Buffer indices;
-  struct Lod {
-    GLsizei first = 0;   ///< first index
-    GLsizei count = 0;   ///< index count
-    float error = 0.0f;  ///< geometric error in the mesh's units
-  };
-  std::vector<Lod> lods;
-  glm::vec3 centre{0.0f};
-  float radius = 0.0f;
-  [[nodiscard]] size_t triangles(size_t lod = 0) const {
-    return lods.empty() ? 0 : static_cast<size_t>(lods[std::min(lod, lods.size() - 1)].count) / 3;
-  }
-};
-
-/// Uploads `data` with `lod_count` LODs made by meshoptimizer's simplifier,
-/// each about a tenth of the previous (Knapik and McGowen).
-GpuMesh upload_mesh(const MeshData& data, int lod_count = 3);
-/// Uploads several already-made LOD levels of one mesh (e.g. tessellations),
-/// finest first.
-GpuMesh upload_levels(const std::vector<MeshData>& levels);
 
 struct Material {
   glm::vec3 base_color{0.8f};
@@ -69,17 +32,6 @@ struct DrawItem {
   /// When set, the LOD is chosen by projected geometric error and `lod` is
   /// only a floor (the result is never finer than `lod`).
   bool automatic = true;
-};
-
-/// The scene's G-buffer: albedo + material, normal + gloss, world position,
-/// and a depth-stencil attachment the technique may write its masks into.
-struct GBuffer {
-  gpu::Texture albedo, normal, position;
-  gpu::Renderbuffer depth_stencil;
-  gpu::Framebuffer fbo;
-  int width = 0, height = 0;
-  int samples = 1;
-  void ensure(int w, int h, int samples);
 };
 
 class MeshSceneBase : public Scene {
@@ -135,8 +87,5 @@ class MeshSceneBase : public Scene {
   View last_view_;
   gpu::FramebufferBinding outer_;  ///< what prepass_begin found
 };
-
-/// Linear-ish colour of an image texture upload (mipmapped, repeat).
-gpu::Texture texture_from_image(const Image& image);
 
 }  // namespace foveate::detail
