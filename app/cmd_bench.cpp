@@ -11,7 +11,7 @@
 #include "commands.hpp"
 #include "foveate/bench/report.hpp"
 #include "foveate/core/error.hpp"
-#include "foveate/techniques/reference.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 #include "invocation.hpp"
 #include "messages.hpp"
 #include "output_dir.hpp"

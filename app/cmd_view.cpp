@@ -125,7 +125,7 @@ void run_view(const ViewArgs& a) {
       mouse.reset();
     }
     const GazeState gaze = session.gaze().at(wall);
-    FrameInput input = session.renderer().frame_input(frame);
+    FrameInput input = session.frame_runner().frame_input(frame);
     input.time_s = o.start_time_s + wall;  // the viewer runs on the wall clock
     session.watchdog().run("frame " + std::to_string(frame) + " (" + view.technique().name() + ")",
                            [&] { view.render_frame(input, gaze, wall); });

@@ -187,7 +187,7 @@ void Viewer::blit_columns(int x0, int x1) {
   // The output holds sRGB-encoded bytes: copied as they are.
   glDisable(GL_FRAMEBUFFER_SRGB);
   const gpu::RenderTarget& out =
-      session_.stereo() ? session_.stereo()->output() : session_.renderer().output();
+      session_.stereo() ? session_.stereo()->output() : session_.frame_runner().output();
   glBlitNamedFramebuffer(out.framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H, x1, fb_h,
                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }

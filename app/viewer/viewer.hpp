@@ -68,7 +68,7 @@ class Viewer {
   [[nodiscard]] bool show_native() const { return show_native_; }
   [[nodiscard]] bool split() const { return split_; }
   [[nodiscard]] double divider() const { return divider_; }
-  [[nodiscard]] bool overlay() const { return session_.renderer().options().overlay; }
+  [[nodiscard]] bool overlay() const { return session_.frame_runner().options().overlay; }
   [[nodiscard]] const ViewerStats& stats() const { return stats_; }
   [[nodiscard]] std::optional<double> speedup() const;
   [[nodiscard]] const GazeState& gaze() const { return gaze_; }

@@ -82,7 +82,7 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept) {
     metrics::QualityOptions qo;
     qo.acuity = r.acuity;
     r.series = std::make_unique<metrics::QualitySeries>(session_.display(), qo);
-    if (StereoRenderer* stereo = session_.stereo()) {
+    if (StereoFrameRunner* stereo = session_.stereo()) {
       for (Eye e : kEyes) {
         r.eye_series[static_cast<size_t>(e)] =
             std::make_unique<metrics::QualitySeries>(stereo->display().eye(e), qo);
@@ -128,7 +128,7 @@ void BenchRun::warm_up() {
   // it: the measured frames continue from the techniques' steady state, as
   // they would in an application.
   for (int k = 0; k < out_.warmup; ++k) {
-    const GazeState g = session_.gaze().at(session_.renderer().frame_input(k).time_s);
+    const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(k).time_s);
     for (Run& r : runs_) {
       session_.watchdog().run("warm-up frame " + std::to_string(k) + " (" + r.technique + ")",
                               [&] { session_.render(r.impl, k, g); });

@@ -69,7 +69,7 @@ class BenchRun {
   const BenchCallbacks& callbacks_;
   BenchResult out_;
   Session session_;
-  std::unique_ptr<ReferenceScene> reference_;
+  std::unique_ptr<SupersampledScene> reference_;
   std::vector<Run> runs_;
   bool native_listed_ = false;
   std::vector<std::vector<size_t>> orders_;  ///< each measured frame's order of the runs

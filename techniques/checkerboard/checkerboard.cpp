@@ -34,7 +34,7 @@
 #include <string>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {

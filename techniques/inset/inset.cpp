@@ -6,7 +6,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {

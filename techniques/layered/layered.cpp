@@ -29,7 +29,7 @@
 #include <limits>
 #include <string>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/core/error.hpp"
 
 namespace foveate::tech {

@@ -21,7 +21,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 

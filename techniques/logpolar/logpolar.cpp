@@ -43,7 +43,7 @@
 #include <optional>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 #include "kernel_plan.hpp"
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "emulated_path.hpp"
 #include "hardware_path.hpp"
 

@@ -10,7 +10,7 @@
 #include "bars_technique.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 
@@ -45,13 +45,13 @@ class Golden : public test::GlTest {
   Image render(Scene& scene, const std::string& technique, int w, int h, Vec2d gaze,
                Vec2d mouse_px = {}, bool mouse_down = false,
                std::map<std::string, double> params = {}) {
-    RendererOptions o;
+    FrameRunnerOptions o;
     o.width = w;
     o.height = h;
     o.start_time_s = 2.0;
     o.mouse_px = mouse_px;
     o.mouse_down = mouse_down;
-    Renderer r(scene, o);
+    FrameRunner r(scene, o);
     TechniqueConfig c;
     c.display = Display::load("desktop-1080p").resized(w, h);
     // The papers' plans: at these sizes the fidelity margins plan layers,

@@ -14,7 +14,7 @@
 
 #include "foveate/core/models.hpp"
 #include "foveate/core/shading_rate.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
@@ -68,11 +68,11 @@ class Fidelity : public test::GlTest {
   }
   // Frame k (at 1 s + k / 60) of `scene` with `technique` for `gaze`.
   static Image run(Technique& t, Scene& s, Vec2d gaze, int k = 0, FrameStats* stats = nullptr) {
-    RendererOptions o;
+    FrameRunnerOptions o;
     o.width = t.display().width_px;
     o.height = t.display().height_px;
     o.start_time_s = 1.0;
-    Renderer r(s, o);
+    FrameRunner r(s, o);
     const FrameStats st = r.render(t, k, GazeState{gaze});
     if (stats) *stats = st;
     return r.read_output();
@@ -327,11 +327,11 @@ TEST_F(Fidelity, LogpolarTemporalLevelConvergesTowardsTheFilteredScene) {
   const Vec2d gaze{W / 2.0, H / 2.0};
   const auto periphery_deviation = [&](double temporal) {
     auto t = make_technique("logpolar", config(W, H, {{"temporal", temporal}}));
-    RendererOptions o;
+    FrameRunnerOptions o;
     o.width = W;
     o.height = H;
     o.start_time_s = 1.0;
-    Renderer r(*scene, o);
+    FrameRunner r(*scene, o);
     FrameInput in = r.frame_input(0);
     for (int k = 0; k < 12; ++k) {  // successive frames of the same instant
       in.frame = k;

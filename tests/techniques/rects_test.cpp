@@ -1,4 +1,4 @@
-// Passes drawn over rectangles (techniques/common/rects.hpp): the covers they
+// Passes drawn over rectangles (foveate/techniques/rect_pass.hpp): the covers they
 // compute and the pixels they reach.
 #include <gtest/gtest.h>
 

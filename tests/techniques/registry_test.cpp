@@ -6,8 +6,8 @@
 
 #include "bars_technique.hpp"
 #include "errors.hpp"
-#include "foveate/techniques/reference.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 #include "gl_fixture.hpp"
 
 using namespace foveate;
@@ -175,19 +175,19 @@ TEST_F(RegisteredAtRunTime, RendersThroughTheFrameRunner) {
   EXPECT_EQ(resolve_parameters(info, config(7680, 4320)).integer("bar_px"), 64);
 
   auto scene = load_scene("detail");
-  RendererOptions o;
+  FrameRunnerOptions o;
   o.width = 320;
   o.height = 180;
-  Renderer renderer(*scene, o);
+  FrameRunner runner(*scene, o);
   auto bars = make_technique(test::kBarsTechnique, config(320, 180));
   EXPECT_EQ(bars->name(), test::kBarsTechnique);
   EXPECT_EQ(bars->parameters(), (std::vector<std::pair<std::string, double>>{{"bar_px", 5.0}}));
-  const FrameStats s = renderer.render(*bars, 0, GazeState{{160, 90}});
+  const FrameStats s = runner.render(*bars, 0, GazeState{{160, 90}});
   EXPECT_EQ(s.shaded_pixels, 320.0 * 180.0);
-  const Image img = renderer.read_output();
+  const Image img = runner.read_output();
   auto native = make_technique("native", config(320, 180));
-  renderer.render(*native, 0, GazeState{{160, 90}});
-  const Image ref = renderer.read_output();
+  runner.render(*native, 0, GazeState{{160, 90}});
+  const Image ref = runner.read_output();
   int bar = 0, same = 0;
   for (int y = 0; y < 180; ++y) {
     for (int x = 0; x < 320; ++x) {
@@ -202,22 +202,22 @@ TEST_F(RegisteredAtRunTime, RendersThroughTheFrameRunner) {
 
 TEST_F(RegisteredAtRunTime, TheRendererRefusesAMismatchedScene) {
   auto scene = load_scene("cheap");
-  RendererOptions o;
+  FrameRunnerOptions o;
   o.width = 64;
   o.height = 36;
-  Renderer renderer(*scene, o);
+  FrameRunner runner(*scene, o);
   auto lodmask = make_technique("lodmask", config(64, 36));
-  const std::string e = error_of([&] { renderer.render(*lodmask, 0, GazeState{{32, 18}}); });
+  const std::string e = error_of([&] { runner.render(*lodmask, 0, GazeState{{32, 18}}); });
   EXPECT_NE(e.find("needs a scene with mesh levels of detail"), std::string::npos) << e;
   // A target and a frame of different sizes are refused, not half-drawn.
-  FrameInput f = renderer.frame_input(0);
+  FrameInput f = runner.frame_input(0);
   f.width = 65;
   auto native = make_technique("native", config(64, 36));
-  EXPECT_NE(error_of([&] { renderer.render(*native, f, GazeState{}); }).find("65x36"),
+  EXPECT_NE(error_of([&] { runner.render(*native, f, GazeState{}); }).find("65x36"),
             std::string::npos);
   // So is a technique planned for another display size.
   auto big = make_technique("native", config(128, 72));
-  EXPECT_NE(error_of([&] { renderer.render(*big, 0, GazeState{}); }).find("128x72 display"),
+  EXPECT_NE(error_of([&] { runner.render(*big, 0, GazeState{}); }).find("128x72 display"),
             std::string::npos);
 }
 
@@ -226,12 +226,12 @@ TEST_F(RegisteredAtRunTime, SupersampledReferenceIsTheBoxFilteredBigFrame) {
   // at one sample per pixel aliases.
   auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/shadertoy/grating.glsl");
   const Display d = Display::load("desktop-1080p").resized(64, 36);
-  SupersampledReference ref(d, 4);
-  RendererOptions o;
+  SupersampledNative ref(d, 4);
+  FrameRunnerOptions o;
   o.width = 64;
   o.height = 36;
-  Renderer renderer(*scene, o);
-  ref.render(*scene, renderer.frame_input(0));
+  FrameRunner runner(*scene, o);
+  ref.render(*scene, runner.frame_input(0));
   const Image img = ref.read();
   double sum = 0;
   for (int y = 0; y < 36; ++y) {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "foveate/core/error.hpp"
-#include "foveate/techniques/stereo_renderer.hpp"
+#include "foveate/techniques/stereo_frame_runner.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
@@ -86,8 +86,8 @@ class Stereo : public test::GlTest {
  protected:
   const StereoDisplay display =
       StereoDisplay::from(Display::load("hmd-quest2").resized(kEye, kEye));
-  RendererOptions options() const {
-    RendererOptions o;
+  FrameRunnerOptions options() const {
+    FrameRunnerOptions o;
     o.width = kEye;
     o.height = kEye;
     o.start_time_s = 1.0;
@@ -111,7 +111,7 @@ class Stereo : public test::GlTest {
 TEST_F(Stereo, NearObjectShiftsRightInTheLeftEyeAndLeftInTheRight) {
   const NearObject files;
   auto left = files.load(), right = files.load();
-  StereoRenderer r(*left, *right, display, options());
+  StereoFrameRunner r(*left, *right, display, options());
   auto tl = make("native", Eye::Left), tr = make("native", Eye::Right);
   r.render(*tl, *tr, 0, gaze_on_cube());
   const Image li = r.read_eye(Eye::Left), ri = r.read_eye(Eye::Right);
@@ -150,7 +150,7 @@ TEST_F(Stereo, EveryTechniqueMatchesNativePerEyeInTheFovea) {
   // Guenter et al.'s scene (textured terrain, objects at many distances),
   // gaze off the axis to the upper left, converging at 2 m.
   auto left = load_scene("guenter"), right = load_scene("guenter");
-  StereoRenderer r(*left, *right, display, options());
+  StereoFrameRunner r(*left, *right, display, options());
   GazeState cyclopean;
   cyclopean.gaze_px = {0.4 * kEye, 0.45 * kEye};
   const auto gaze = eye_gaze_states(display, cyclopean, 2.0);
@@ -183,7 +183,7 @@ TEST_F(Stereo, PerEyeHistoryNeverMixes) {
   const auto gaze = gaze_on_cube();
   auto right_frames = [&](std::unique_ptr<Scene> left_scene, Vec2d left_gaze) {
     auto right = files.load();
-    StereoRenderer r(*left_scene, *right, display, options());
+    StereoFrameRunner r(*left_scene, *right, display, options());
     auto tl = make("layered", Eye::Left), tr = make("layered", Eye::Right);
     std::vector<Image> out;
     for (int k = 0; k < 4; ++k) {
@@ -196,11 +196,11 @@ TEST_F(Stereo, PerEyeHistoryNeverMixes) {
   };
   const std::vector<Image> a = right_frames(files.load(), gaze[0].gaze_px);
   const std::vector<Image> b = right_frames(load_scene("detail"), {20.0, 30.0});
-  // Alone: one Renderer for the right eye.
+  // Alone: one FrameRunner for the right eye.
   auto right = files.load();
-  RendererOptions o = options();
+  FrameRunnerOptions o = options();
   o.eye = eye_view(display, Eye::Right);
-  Renderer alone(*right, o);
+  FrameRunner alone(*right, o);
   auto t = make("layered", Eye::Right);
   for (int k = 0; k < 4; ++k) {
     alone.render(*t, k, gaze[1]);
@@ -231,7 +231,7 @@ TEST_F(Stereo, FixedFoveationCentresOnEachEyesLens) {
 
 TEST_F(Stereo, ShadertoyScenesRenderTheSameImagePerEye) {
   auto left = load_scene("detail"), right = load_scene("detail");
-  StereoRenderer r(*left, *right, display, options());
+  StereoFrameRunner r(*left, *right, display, options());
   auto tl = make("native", Eye::Left), tr = make("native", Eye::Right);
   GazeState g;
   g.gaze_px = {kEye / 2.0, kEye / 2.0};
@@ -241,7 +241,7 @@ TEST_F(Stereo, ShadertoyScenesRenderTheSameImagePerEye) {
 
 TEST_F(Stereo, SharedOrWrongEyeTechniquesAreRefused) {
   auto left = load_scene("cheap"), right = load_scene("cheap");
-  StereoRenderer r(*left, *right, display, options());
+  StereoFrameRunner r(*left, *right, display, options());
   auto tl = make("layered", Eye::Left), tr = make("layered", Eye::Right);
   const auto gaze = gaze_on_cube();
   try {
@@ -259,7 +259,7 @@ TEST_F(Stereo, SharedOrWrongEyeTechniquesAreRefused) {
         << e.what();
   }
   try {
-    StereoRenderer shared(*left, *left, display, options());
+    StereoFrameRunner shared(*left, *left, display, options());
     FAIL() << "one scene for both eyes was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("scene instance of its own"), std::string::npos);

@@ -15,8 +15,8 @@
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/metrics/metrics.hpp"
-#include "foveate/techniques/reference.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 #include "srgb.hpp"
@@ -90,17 +90,17 @@ class Techniques : public test::GlTest {
     return c;
   }
   // The frame runner over the fixture's target: frame k is at 1 s + k / 60.
-  Renderer renderer(Scene& s, int w = kW, int h = kH) const {
-    RendererOptions o;
+  FrameRunner runner(Scene& s, int w = kW, int h = kH) const {
+    FrameRunnerOptions o;
     o.width = w;
     o.height = h;
     o.start_time_s = 1.0;
     if (w == kW && h == kH)
-      return Renderer(s, o, gpu::RenderTarget::wrap(target_.framebuffer(), w, h));
-    return Renderer(s, o);
+      return FrameRunner(s, o, gpu::RenderTarget::wrap(target_.framebuffer(), w, h));
+    return FrameRunner(s, o);
   }
   Image run(Technique& t, Scene& s, Vec2d gaze, FrameStats* stats = nullptr, int k = 0) {
-    Renderer r = renderer(s);
+    FrameRunner r = runner(s);
     const FrameStats st = r.render(t, k, GazeState{gaze});
     if (stats) *stats = st;
     return r.read_output();
@@ -209,7 +209,7 @@ TEST_F(Techniques, LayeredNeverShowsAnUnshadedHoleWhenTheGazeMoves) {
   ASSERT_GT(r0, 40.0);
   ASSERT_GT(std::hypot(b.x - a.x, b.y - a.y), 2.0 * r0);
   auto n = make_technique("native", config());
-  Renderer r = renderer(*scene);
+  FrameRunner r = runner(*scene);
   r.render(*t, 0, GazeState{a});
   for (int k = 1; k < 3; ++k) {
     r.render(*t, k, GazeState{b});
@@ -275,8 +275,8 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
   EXPECT_LT(change(17), 0.5);
   EXPECT_EQ(change(32), 0.0);
   auto reference_scene = still_scene("detail");
-  SupersampledReference ref(config().display, 4);
-  ref.render(*reference_scene, renderer(*scene).frame_input(32));
+  SupersampledNative ref(config().display, 4);
+  ref.render(*reference_scene, runner(*scene).frame_input(32));
   const Image truth = ref.read();
   auto acuity_rmse = [&](const Image& img) {
     const metrics::Map m =
@@ -338,7 +338,7 @@ TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
   const auto parts = [&](Scene& scene, bool still) {
     auto t = make_technique("layered", config());
     std::vector<FrameStats> s(3);
-    Renderer r = renderer(scene);
+    FrameRunner r = runner(scene);
     FrameInput in = r.frame_input(0);
     for (int k = 0; k < 3; ++k) {
       if (!still) in = r.frame_input(k);
@@ -714,7 +714,7 @@ TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
     TechniqueConfig c = config();
     c.display = Display::load("desktop-1080p").resized(2 * kW, 2 * kH);
     auto n = make_technique("native", c);
-    Renderer big = renderer(*scene, 2 * kW, 2 * kH);
+    FrameRunner big = runner(*scene, 2 * kW, 2 * kH);
     big.render(*n, 0, GazeState{{kW, kH}});
     const Image hi = big.read_output();
     for (int y = 0; y < kH; ++y) {

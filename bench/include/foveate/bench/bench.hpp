@@ -29,7 +29,7 @@ struct BenchOptions {
   int frames = 12;  ///< measured frames per technique
   int warmup = 2;   ///< at least; each technique warms up as long as it needs
   /// What the image metrics judge against: 1 = native itself, N > 1 = native
-  /// with N x N supersampling (SupersampledReference), which native is then
+  /// with N x N supersampling (SupersampledNative), which native is then
   /// judged against too.
   int reference = 1;
   bool image_metrics = true;  ///< compare every frame with the reference (PSNR, SSIM, ...)

@@ -4,7 +4,7 @@
 // and both sides of every branch, on every pixel it runs; drawing a disc's
 // polygon first and the rest of the screen after, with an early depth test,
 // makes each pixel run one region's shader, and whole 4x4 blocks already
-// written are skipped. The programs are built from common/region.vert and a
+// written are skipped. The programs are built from pass_kit/region.vert and a
 // fragment shader that declares layout(early_fragment_tests).
 #include "foveate/core/display.hpp"
 #include "foveate/gpu/gl.hpp"

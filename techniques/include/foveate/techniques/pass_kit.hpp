@@ -45,10 +45,10 @@ class PassKit {
   /// textures `set` asks for.
   void pass(const gpu::Program& program, const gpu::RenderTarget& target,
             const gpu::PassState& state = {}, const SetUniforms& set = {});
-  /// A program of common/rects.vert + `fragment`, cached: passes drawn over
+  /// A program of pass_kit/rects.vert + `fragment`, cached: passes drawn over
   /// rectangles only (rect_pass).
   const gpu::Program& over_rects(const std::string& fragment);
-  /// A program of common/region.vert + `fragment`, cached: one region of a
+  /// A program of pass_kit/region.vert + `fragment`, cached: one region of a
   /// pass split by DepthRegions (the fragment shader declares
   /// layout(early_fragment_tests)).
   const gpu::Program& over_regions(const std::string& fragment);
@@ -116,7 +116,7 @@ class PassKit {
 inline Vec2d to_gl(Vec2d p, int height) { return {p.x, height - p.y}; }
 
 /// The rect mapping file and its uniforms for `view`.
-inline constexpr const char* kMapRect = "common/map_rect.glsl";
+inline constexpr const char* kMapRect = "pass_kit/map_rect.glsl";
 void set_rect_mapping(const gpu::Program& p, const View& view);
 
 /// Stats of a technique whose shading is one pass (`name`: what it shaded).

@@ -3,7 +3,7 @@
 // llvmpipe a pass costs in proportion to the pixels it covers, so a pass that
 // only some tiles need (a stencil mask, a reconstruction that differs per
 // tile) is drawn over those tiles alone. The programs are built from
-// common/rects.vert and any fragment shader; the rectangles are one instanced
+// pass_kit/rects.vert and any fragment shader; the rectangles are one instanced
 // quad each, read from a storage buffer.
 #include <algorithm>
 #include <array>

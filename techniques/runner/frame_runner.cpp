@@ -1,4 +1,4 @@
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 
 #include <string>
 
@@ -9,9 +9,9 @@ namespace foveate {
 
 namespace {
 
-gpu::RenderTarget make_output(const RendererOptions& o) {
+gpu::RenderTarget make_output(const FrameRunnerOptions& o) {
   if (o.width < 1 || o.height < 1) {
-    throw Error("renderer: output size " + std::to_string(o.width) + "x" +
+    throw Error("frame runner: output size " + std::to_string(o.width) + "x" +
                 std::to_string(o.height) + " is empty");
   }
   GLint max = 0;
@@ -25,27 +25,27 @@ gpu::RenderTarget make_output(const RendererOptions& o) {
 
 }  // namespace
 
-Renderer::Renderer(Scene& scene, const RendererOptions& options)
-    : Renderer(scene, options, make_output(options)) {}
+FrameRunner::FrameRunner(Scene& scene, const FrameRunnerOptions& options)
+    : FrameRunner(scene, options, make_output(options)) {}
 
-Renderer::Renderer(Scene& scene, const RendererOptions& options, gpu::RenderTarget target)
+FrameRunner::FrameRunner(Scene& scene, const FrameRunnerOptions& options, gpu::RenderTarget target)
     : scene_(scene), options_(options), target_(std::move(target)) {
   if (target_.width() != options_.width || target_.height() != options_.height) {
-    throw Error("renderer: the target is " + std::to_string(target_.width()) + "x" +
+    throw Error("frame runner: the target is " + std::to_string(target_.width()) + "x" +
                 std::to_string(target_.height()) + " but the output size is " +
                 std::to_string(options_.width) + "x" + std::to_string(options_.height));
   }
-  if (!(options_.fps > 0.0)) throw Error("renderer: the frame rate must be positive");
+  if (!(options_.fps > 0.0)) throw Error("frame runner: the frame rate must be positive");
   if (!target_.srgb()) {
     throw Error(
-        "renderer: the target must be sRGB-encoded (GL_SRGB8_ALPHA8, or an sRGB-capable window "
+        "frame runner: the target must be sRGB-encoded (GL_SRGB8_ALPHA8, or an sRGB-capable window "
         "framebuffer): techniques filter and blend in linear light and write linear values");
   }
 }
 
-Renderer::~Renderer() = default;
+FrameRunner::~FrameRunner() = default;
 
-FrameInput Renderer::frame_input(int frame) const {
+FrameInput FrameRunner::frame_input(int frame) const {
   FrameInput f;
   f.frame = frame;
   f.delta_s = 1.0 / options_.fps;
@@ -58,13 +58,14 @@ FrameInput Renderer::frame_input(int frame) const {
   return f;
 }
 
-FrameStats Renderer::render(Technique& technique, int frame, const GazeState& gaze) {
+FrameStats FrameRunner::render(Technique& technique, int frame, const GazeState& gaze) {
   return render(technique, frame_input(frame), gaze);
 }
 
-FrameStats Renderer::render(Technique& technique, const FrameInput& input, const GazeState& gaze) {
+FrameStats FrameRunner::render(Technique& technique, const FrameInput& input,
+                               const GazeState& gaze) {
   if (input.width != target_.width() || input.height != target_.height()) {
-    throw Error("renderer: frame input is " + std::to_string(input.width) + "x" +
+    throw Error("frame runner: frame input is " + std::to_string(input.width) + "x" +
                 std::to_string(input.height) + " but the target is " +
                 std::to_string(target_.width()) + "x" + std::to_string(target_.height()));
   }
@@ -79,13 +80,13 @@ FrameStats Renderer::render(Technique& technique, const FrameInput& input, const
   scene_.update(input);
   FrameStats s = technique.render(scene_, input, gaze, target_);
   if (options_.overlay) {
-    if (!overlay_) overlay_ = std::make_unique<OverlayRenderer>();
+    if (!overlay_) overlay_ = std::make_unique<OverlayPass>();
     overlay_->draw(technique.overlay(gaze), target_);
   }
   return s;
 }
 
-Image Renderer::read_output() const {
+Image FrameRunner::read_output() const {
   if (target_.color()) return gpu::read_texture(target_.color());
   return gpu::read_framebuffer(target_.framebuffer(), target_.width(), target_.height());
 }

@@ -1,4 +1,4 @@
-#include "foveate/techniques/stereo_renderer.hpp"
+#include "foveate/techniques/stereo_frame_runner.hpp"
 
 #include <string>
 
@@ -19,25 +19,25 @@ EyeView eye_view(const StereoDisplay& display, Eye eye) {
   return EyeView{display.eye_offset_m(eye), frustum_tangents(display.eye(eye))};
 }
 
-StereoRenderer::StereoRenderer(Scene& left, Scene& right, const StereoDisplay& display,
-                               const RendererOptions& options)
+StereoFrameRunner::StereoFrameRunner(Scene& left, Scene& right, const StereoDisplay& display,
+                                     const FrameRunnerOptions& options)
     : display_(display) {
   if (&left == &right) {
     throw Error(
-        "stereo renderer: each eye needs a scene instance of its own (a scene keeps one "
+        "stereo frame runner: each eye needs a scene instance of its own (a scene keeps one "
         "frame's camera and buffers)");
   }
   for (Eye e : kEyes) {
     const Display& d = display.eye(e);
     if (d.width_px != options.width || d.height_px != options.height) {
-      throw Error("stereo renderer: the " + std::string(eye_name(e)) + " eye's display is " +
+      throw Error("stereo frame runner: the " + std::string(eye_name(e)) + " eye's display is " +
                   std::to_string(d.width_px) + "x" + std::to_string(d.height_px) +
                   " but the eye's output size is " + std::to_string(options.width) + "x" +
                   std::to_string(options.height) + " (use Display::resized)");
     }
-    RendererOptions o = options;
+    FrameRunnerOptions o = options;
     o.eye = eye_view(display, e);
-    eyes_[static_cast<size_t>(e)] = std::make_unique<Renderer>(e == Eye::Left ? left : right, o);
+    eyes_[static_cast<size_t>(e)] = std::make_unique<FrameRunner>(e == Eye::Left ? left : right, o);
   }
   GLint max = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
@@ -49,19 +49,19 @@ StereoRenderer::StereoRenderer(Scene& left, Scene& right, const StereoDisplay& d
   output_ = gpu::RenderTarget::create(2 * options.width, options.height);
 }
 
-StereoRenderer::~StereoRenderer() = default;
+StereoFrameRunner::~StereoFrameRunner() = default;
 
-std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& right, int frame,
-                                                 const std::array<GazeState, 2>& gaze) {
+std::array<FrameStats, 2> StereoFrameRunner::render(Technique& left, Technique& right, int frame,
+                                                    const std::array<GazeState, 2>& gaze) {
   return render(left, right, eyes_[0]->frame_input(frame), gaze);
 }
 
-std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& right,
-                                                 const FrameInput& input,
-                                                 const std::array<GazeState, 2>& gaze) {
+std::array<FrameStats, 2> StereoFrameRunner::render(Technique& left, Technique& right,
+                                                    const FrameInput& input,
+                                                    const std::array<GazeState, 2>& gaze) {
   if (&left == &right) {
     throw Error(
-        "stereo renderer: each eye needs a technique instance of its own (history, "
+        "stereo frame runner: each eye needs a technique instance of its own (history, "
         "jitter and masks are per eye)");
   }
   std::array<FrameStats, 2> stats;
@@ -70,7 +70,7 @@ std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& rig
     Technique& t = e == Eye::Left ? left : right;
     const Vec2d want = display_.eye(e).principal_point(), have = t.display().principal_point();
     if (want.x != have.x || want.y != have.y) {
-      throw Error("stereo renderer: technique " + t.name() + " given for the " + eye_name(e) +
+      throw Error("stereo frame runner: technique " + t.name() + " given for the " + eye_name(e) +
                   " eye is configured for another view (principal point " + std::to_string(have.x) +
                   ", " + std::to_string(have.y) + " instead of " + std::to_string(want.x) + ", " +
                   std::to_string(want.y) + ")");
@@ -86,11 +86,13 @@ std::array<FrameStats, 2> StereoRenderer::render(Technique& left, Technique& rig
   return stats;
 }
 
-Image StereoRenderer::read_output() const { return gpu::read_texture(output_.color()); }
+Image StereoFrameRunner::read_output() const { return gpu::read_texture(output_.color()); }
 
-Image StereoRenderer::read_eye(Eye e) const { return eyes_[static_cast<size_t>(e)]->read_output(); }
+Image StereoFrameRunner::read_eye(Eye e) const {
+  return eyes_[static_cast<size_t>(e)]->read_output();
+}
 
-void StereoRenderer::set_overlay(bool on) {
+void StereoFrameRunner::set_overlay(bool on) {
   for (auto& r : eyes_) r->set_overlay(on);
 }
 

@@ -1,4 +1,4 @@
-#include "foveate/techniques/reference.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 
 #include <cmath>
 
@@ -10,14 +10,14 @@
 
 namespace foveate {
 
-struct SupersampledReference::Impl {
+struct SupersampledNative::Impl {
   Display display;
   std::unique_ptr<Technique> native;
   gpu::RenderTarget big, out;
   tech::PassKit kit;
 };
 
-SupersampledReference::SupersampledReference(const Display& display, int factor)
+SupersampledNative::SupersampledNative(const Display& display, int factor)
     : impl_(std::make_unique<Impl>()), factor_(factor) {
   if (factor < 2 || factor > 8)
     throw Error("supersampling factor " + std::to_string(factor) + ": expected 2..8");
@@ -38,9 +38,9 @@ SupersampledReference::SupersampledReference(const Display& display, int factor)
   impl_->out.ensure(display.width_px, display.height_px);
 }
 
-SupersampledReference::~SupersampledReference() = default;
+SupersampledNative::~SupersampledNative() = default;
 
-const gpu::RenderTarget& SupersampledReference::render(Scene& scene, const FrameInput& input) {
+const gpu::RenderTarget& SupersampledNative::render(Scene& scene, const FrameInput& input) {
   Impl& m = *impl_;
   FrameInput big = input;
   big.width = input.width * factor_;
@@ -48,7 +48,7 @@ const gpu::RenderTarget& SupersampledReference::render(Scene& scene, const Frame
   big.mouse_px = {input.mouse_px.x * factor_, input.mouse_px.y * factor_};
   scene.update(big);
   m.native->render(scene, big, GazeState{}, m.big);
-  m.kit.pass(m.kit.fullscreen("common/resolve_box.frag"), m.out, {},
+  m.kit.pass(m.kit.fullscreen("runner/resolve_box.frag"), m.out, {},
              [&](const gpu::Program& p, gpu::Samplers& samplers) {
                samplers.bind(p, "u_source", m.big.color());
                p.set("u_factor", factor_);
@@ -56,7 +56,7 @@ const gpu::RenderTarget& SupersampledReference::render(Scene& scene, const Frame
   return m.out;
 }
 
-Image SupersampledReference::read() const { return gpu::read_texture(impl_->out.color()); }
+Image SupersampledNative::read() const { return gpu::read_texture(impl_->out.color()); }
 
 int parse_reference(const std::string& text) {
   if (text == "native") return 1;

@@ -2,7 +2,7 @@
 // around the disc of radius u_radius (pixels) at u_centre, circumscribing it
 // (u_inscribed = 0: covers every pixel of the disc) or inscribed in it
 // (u_inscribed = 1: covers only pixels of the disc), or the whole viewport
-// when u_radius <= 0. See common/regions.hpp.
+// when u_radius <= 0. See foveate/techniques/depth_regions.hpp.
 uniform vec2 u_centre;
 uniform float u_radius;
 uniform int u_inscribed;

@@ -3,13 +3,13 @@
 // output image (the left eye in the left half). Nothing is shared between the
 // eyes: each eye has its own scene instance (camera moved to the eye, its
 // off-axis frustum; multipass buffers and G-buffers of its own), its own
-// Renderer and target, and its own technique instance (history, jitter,
+// FrameRunner and target, and its own technique instance (history, jitter,
 // masks), configured for the eye's display and following the eye's gaze.
 #include <array>
 #include <memory>
 
 #include "foveate/core/stereo.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 
 namespace foveate {
 
@@ -22,17 +22,17 @@ std::array<GazeState, 2> eye_gaze_states(const StereoDisplay& display, const Gaz
 /// The per-eye frame inputs for an eye of `display` (its offset and frustum).
 EyeView eye_view(const StereoDisplay& display, Eye eye);
 
-class StereoRenderer {
+class StereoFrameRunner {
  public:
   /// `display` at the per-eye render size (Display::resized of the left eye,
   /// then StereoDisplay::from); `options` holds the per-eye size. The scenes
-  /// (one per eye, distinct instances) must outlive the renderer. Needs a
+  /// (one per eye, distinct instances) must outlive the frame runner. Needs a
   /// current GL context.
-  StereoRenderer(Scene& left, Scene& right, const StereoDisplay& display,
-                 const RendererOptions& options);
-  ~StereoRenderer();
-  StereoRenderer(const StereoRenderer&) = delete;
-  StereoRenderer& operator=(const StereoRenderer&) = delete;
+  StereoFrameRunner(Scene& left, Scene& right, const StereoDisplay& display,
+                    const FrameRunnerOptions& options);
+  ~StereoFrameRunner();
+  StereoFrameRunner(const StereoFrameRunner&) = delete;
+  StereoFrameRunner& operator=(const StereoFrameRunner&) = delete;
 
   /// Renders frame `frame` of both eyes, each with its own technique (made
   /// for that eye's display: refused otherwise) for its own gaze, then
@@ -43,7 +43,7 @@ class StereoRenderer {
   /// its own EyeView.
   std::array<FrameStats, 2> render(Technique& left, Technique& right, const FrameInput& input,
                                    const std::array<GazeState, 2>& gaze);
-  [[nodiscard]] Renderer& eye(Eye e) { return *eyes_[static_cast<size_t>(e)]; }
+  [[nodiscard]] FrameRunner& eye(Eye e) { return *eyes_[static_cast<size_t>(e)]; }
   [[nodiscard]] const StereoDisplay& display() const { return display_; }
   /// The side-by-side output, twice the eye's width.
   [[nodiscard]] const gpu::RenderTarget& output() const { return output_; }
@@ -54,7 +54,7 @@ class StereoRenderer {
 
  private:
   StereoDisplay display_;
-  std::array<std::unique_ptr<Renderer>, 2> eyes_;
+  std::array<std::unique_ptr<FrameRunner>, 2> eyes_;
   gpu::RenderTarget output_;
 };
 

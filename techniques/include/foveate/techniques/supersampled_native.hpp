@@ -12,15 +12,15 @@
 
 namespace foveate {
 
-class SupersampledReference {
+class SupersampledNative {
  public:
   /// `display` at the output size; `factor` samples per pixel per axis (2..8).
   /// Throws foveate::Error when the supersampled size exceeds the GL's limits.
   /// Needs a current GL context.
-  SupersampledReference(const Display& display, int factor = 4);
-  ~SupersampledReference();
-  SupersampledReference(const SupersampledReference&) = delete;
-  SupersampledReference& operator=(const SupersampledReference&) = delete;
+  SupersampledNative(const Display& display, int factor = 4);
+  ~SupersampledNative();
+  SupersampledNative(const SupersampledNative&) = delete;
+  SupersampledNative& operator=(const SupersampledNative&) = delete;
 
   /// Renders `input` (output-sized) of `scene` at factor x the resolution and
   /// resolves it. Give it a scene of its own (load the scene twice): a scene

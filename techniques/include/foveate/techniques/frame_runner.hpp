@@ -10,11 +10,12 @@
 
 #include "foveate/core/image.hpp"
 #include "foveate/gpu/pass.hpp"
+#include "foveate/techniques/overlay_pass.hpp"
 #include "foveate/techniques/technique.hpp"
 
 namespace foveate {
 
-struct RendererOptions {
+struct FrameRunnerOptions {
   int width = 0;  ///< output size in pixels (the display's, after Display::resized)
   int height = 0;
   double fps = 60.0;  ///< the fixed clock: frame k is at start_time_s + k / fps
@@ -22,21 +23,21 @@ struct RendererOptions {
   Vec2d mouse_px{0.0, 0.0};  ///< Shadertoy's mouse, pixels, origin top-left
   bool mouse_down = false;
   bool overlay = false;  ///< draw the technique's layer or region borders
-  /// One eye of a stereo pair (StereoRenderer sets it): every FrameInput carries it.
+  /// One eye of a stereo pair (StereoFrameRunner sets it): every FrameInput carries it.
   std::optional<EyeView> eye;
 };
 
-class Renderer {
+class FrameRunner {
  public:
-  /// Renders `scene` (which must outlive the renderer) into an RGBA8 output
+  /// Renders `scene` (which must outlive the frame runner) into an RGBA8 output
   /// target of its own. Needs a current GL context; throws foveate::Error for
   /// a size the GL cannot allocate.
-  Renderer(Scene& scene, const RendererOptions& options);
+  FrameRunner(Scene& scene, const FrameRunnerOptions& options);
   /// Renders into `target` instead (e.g. a user's framebuffer or a window's).
-  Renderer(Scene& scene, const RendererOptions& options, gpu::RenderTarget target);
-  ~Renderer();
-  Renderer(const Renderer&) = delete;
-  Renderer& operator=(const Renderer&) = delete;
+  FrameRunner(Scene& scene, const FrameRunnerOptions& options, gpu::RenderTarget target);
+  ~FrameRunner();
+  FrameRunner(const FrameRunner&) = delete;
+  FrameRunner& operator=(const FrameRunner&) = delete;
 
   /// The inputs of frame `frame` on the fixed clock.
   [[nodiscard]] FrameInput frame_input(int frame) const;
@@ -49,7 +50,7 @@ class Renderer {
   [[nodiscard]] const gpu::RenderTarget& output() const { return target_; }
   /// The output as an image (owned targets, or any target by framebuffer read).
   [[nodiscard]] Image read_output() const;
-  [[nodiscard]] const RendererOptions& options() const { return options_; }
+  [[nodiscard]] const FrameRunnerOptions& options() const { return options_; }
   void set_overlay(bool on) { options_.overlay = on; }
   void set_mouse(Vec2d px, bool down) {
     options_.mouse_px = px;
@@ -58,9 +59,9 @@ class Renderer {
 
  private:
   Scene& scene_;
-  RendererOptions options_;
+  FrameRunnerOptions options_;
   gpu::RenderTarget target_;
-  std::unique_ptr<OverlayRenderer> overlay_;
+  std::unique_ptr<OverlayPass> overlay_;
 };
 
 }  // namespace foveate

@@ -11,7 +11,7 @@ namespace {
 // The name a pass is timed under: its fragment file's stem
 // ("layered/temporal.frag" -> "temporal"); every shading main is "shade".
 std::string pass_name_of(const std::string& file) {
-  if (file.starts_with("common/shade_main")) return "shade";
+  if (file.starts_with("pass_kit/shade_main")) return "shade";
   const size_t slash = file.rfind('/');
   std::string stem = slash == std::string::npos ? file : file.substr(slash + 1);
   const size_t dot = stem.find('.');
@@ -50,9 +50,9 @@ const gpu::Program& PassKit::built(const std::string& key, const std::string& ve
 const gpu::Program& PassKit::shading(const Scene& scene, const std::string& mapping, bool early,
                                      int samples) {
   if (samples > 1)
-    return scene_program_with(scene, mapping, "common/shade_main_msaa.frag", samples);
+    return scene_program_with(scene, mapping, "pass_kit/shade_main_msaa.frag", samples);
   return scene_program_with(scene, mapping,
-                            early ? "common/shade_main_early.frag" : "common/shade_main.frag");
+                            early ? "pass_kit/shade_main_early.frag" : "pass_kit/shade_main.frag");
 }
 
 const gpu::Program& PassKit::scene_program(const Scene& scene, const std::string& main,
@@ -127,11 +127,11 @@ void PassKit::pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, do
 }
 
 const gpu::Program& PassKit::over_rects(const std::string& fragment) {
-  return built("rects|" + fragment, "common/rects.vert", fragment);
+  return built("rects|" + fragment, "pass_kit/rects.vert", fragment);
 }
 
 const gpu::Program& PassKit::over_regions(const std::string& fragment) {
-  return built("regions|" + fragment, "common/region.vert", fragment);
+  return built("regions|" + fragment, "pass_kit/region.vert", fragment);
 }
 
 void PassKit::rect_pass(const gpu::Program& program, const std::vector<PixelRect>& rects,

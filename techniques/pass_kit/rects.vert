@@ -1,4 +1,4 @@
-// One quad per rectangle (see common/rects.hpp): instance i covers
+// One quad per rectangle (see foveate/techniques/rect_pass.hpp): instance i covers
 // u_rects[i] = (x0, y0, x1, y1), GL pixels of a u_viewport-sized target.
 layout(std430, binding = 0) readonly buffer Rects { ivec4 u_rects[]; };
 uniform vec2 u_viewport;
