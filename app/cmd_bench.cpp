@@ -196,12 +196,13 @@ void register_demo(CLI::App& app) {
   a->out = "foveate-demo";
   CLI::App* sub = app.add_subcommand("demo",
                                      "A short benchmark of a built-in scene with every technique "
-                                     "at quality A; prints the table and the report's path");
+                                     "at acuity preset A; prints the table and the report's path");
   add_common(sub, *a);
   sub->callback([a] {
     if (!quiet() && !a->json)
       std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
-                << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
+                << ", acuity preset "
+                << (a->session.acuity_preset.empty() ? "A" : a->session.acuity_preset)
                 << ", display " << a->session.display << " at " << a->session.size << std::endl;
     const bench::BenchOptions o = to_options(*a, "foveate demo");
     print_summary(run_and_write(*a, o, "demo"), *a);

@@ -29,7 +29,7 @@ namespace {
 
 struct PlanArgs {
   std::string display = "desktop-1080p";
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   int layers = 3;
   std::string gaze;
@@ -102,7 +102,7 @@ std::string sweep_svg(const std::vector<SweepRow>& rows) {
     cost.push_back(a);
   }
   ChartOptions c;
-  c.title = "Figure 13: pixels to render, native against foveated (quality A)";
+  c.title = "Figure 13: pixels to render, native against foveated (acuity preset A)";
   c.x_label = "field of view (degrees)";
   c.y_label = "pixels per frame, log scale";
   c.log_y = true;
@@ -175,7 +175,7 @@ GazePlan make_gaze_plan(const PlanArgs& a) {
     const PixelSize sz = parse_size(a.size, "--size");
     display = display.resized(sz.width, sz.height);
   }
-  const AcuityModel acuity = bench::acuity_from(a.quality, a.slope);
+  const AcuityModel acuity = bench::acuity_from(a.acuity_preset, a.slope);
   note_savings(display, acuity);
   PlannerOptions opt;
   opt.layers = a.layers;
@@ -239,8 +239,8 @@ void print_plan(const PlanArgs& a, const GazePlan& g) {
             << " %\n";
   std::cout << "acuity: w(e) = " << format_fixed(acuity.slope, 4) << " e + "
             << format_fixed(acuity.w0_deg, 4) << " deg";
-  if (acuity.slope == kSlopeQualityA) std::cout << " (quality A)";
-  if (acuity.slope == kSlopeQualityB) std::cout << " (quality B)";
+  if (acuity.slope == kSlopePresetA) std::cout << " (acuity preset A)";
+  if (acuity.slope == kSlopePresetB) std::cout << " (acuity preset B)";
   std::cout << "\ngaze at (" << format_fixed(g.gaze.x, 1) << ", " << format_fixed(g.gaze.y, 1)
             << ") px\n\n";
   std::printf("%-6s %11s %11s %9s %13s %11s  %s\n", "layer", "radius deg", "radius px", "s_i",
@@ -302,7 +302,7 @@ void register_plan(CLI::App& app) {
                       ") or JSON file; through a lens (hmd-rift-dk1, hmd-quest2-lens) no layer "
                       "samples finer than the panel shows")
       ->capture_default_str();
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre (with a "

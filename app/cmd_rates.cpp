@@ -31,7 +31,7 @@ struct RatesArgs {
   std::string out;
   std::string preview;
   std::string size;
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   std::optional<double> margin;
   double latency_ms = 0.0;
@@ -171,7 +171,7 @@ RatesPlan make_rates_plan(const RatesArgs& a) {
     const PixelSize sz = parse_size(a.size, "--size");
     p.display = p.display.resized(sz.width, sz.height);
   }
-  p.judged = bench::acuity_from(a.quality, a.slope);
+  p.judged = bench::acuity_from(a.acuity_preset, a.slope);
   // The vrs technique's plan: --margin, else its own planning margin.
   TechniqueConfig vrs;
   vrs.display = p.display;
@@ -302,7 +302,7 @@ void register_rates(CLI::App& app) {
   sub->add_option("--out", a->out, "Output: FILE.bin (one byte per tile) or FILE.json")->required();
   sub->add_option("--preview", a->preview, "Also write a PNG: a colour per rate and a legend");
   sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--margin", a->margin,
                   "Plan for an acuity this many times finer (1 to 4; 1 = two samples per MAR "
                   "cycle of the model itself); default: the vrs technique's own planning margin, "

@@ -11,6 +11,7 @@ namespace foveate::app {
 
 std::string flag_for(const std::string& field) {
   static const std::map<std::string, std::string> flags = {
+      {"acuity_preset", "--acuity"},
       {"allow_fallback", "--allow-fallback"},
       {"camera_path", "--camera-path"},
       {"channels", "--channel"},
@@ -23,7 +24,6 @@ std::string flag_for(const std::string& field) {
       {"margin", "--margin"},
       {"out", "--out"},
       {"params", "--param"},
-      {"quality", "--quality"},
       {"reference", "--reference"},
       {"scene", "--scene"},
       {"side_by_side", "--side-by-side"},

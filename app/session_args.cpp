@@ -28,12 +28,12 @@ bench::ParamOverrides parse_params(const std::vector<std::string>& items) {
   return out;
 }
 
-void add_acuity_options(CLI::App* sub, std::string& quality, std::optional<double>& slope) {
-  sub->add_option("--quality", quality,
-                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
-  sub->add_option(
-      "--slope", slope,
-      "Custom MAR slope m in degrees per degree of eccentricity (instead of --quality)");
+void add_acuity_options(CLI::App* sub, std::string& preset, std::optional<double>& slope) {
+  sub->add_option("--acuity,--quality", preset,
+                  "Acuity preset of Guenter et al.'s user study: A (m = 0.0275) or B (m = "
+                  "0.0220); default A (--quality is the same option)");
+  sub->add_option("--slope", slope,
+                  "Custom MAR slope m in degrees per degree of eccentricity (instead of --acuity)");
 }
 
 namespace {
@@ -59,7 +59,7 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
                   "Display preset (" + Display::preset_names() +
                       ") or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
-  add_acuity_options(sub, a.quality, a.slope);
+  add_acuity_options(sub, a.acuity_preset, a.slope);
   sub->add_option("--margin", a.margin,
                   "Plan every technique for an acuity this many times finer (slope and foveal "
                   "MAR divided by it, 1 to 4) than the one the metrics judge by: 1 = each "
@@ -139,7 +139,7 @@ bench::SessionOptions to_session_options(const SessionArgs& a, const char* defau
   }
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
-  o.acuity = bench::acuity_from(a.quality, a.slope);
+  o.acuity = bench::acuity_from(a.acuity_preset, a.slope);
   o.margin = a.margin;
   o.gaze = a.gaze;
   o.fps = a.fps;

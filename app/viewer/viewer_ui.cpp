@@ -218,9 +218,11 @@ void Ui::draw(Viewer& v) {
   }
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameters(v);
   if (ImGui::CollapsingHeader("Acuity and display", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (ImGui::RadioButton("quality A", v.quality() == "A")) act([&] { v.set_quality("A"); });
+    if (ImGui::RadioButton("acuity A", v.acuity_preset() == "A"))
+      act([&] { v.set_acuity_preset("A"); });
     ImGui::SameLine();
-    if (ImGui::RadioButton("quality B", v.quality() == "B")) act([&] { v.set_quality("B"); });
+    if (ImGui::RadioButton("acuity B", v.acuity_preset() == "B"))
+      act([&] { v.set_acuity_preset("B"); });
     auto it = pending_.find("slope");
     double m = it != pending_.end() ? it->second : v.slope();
     const double lo = 0.005, hi = 0.08;

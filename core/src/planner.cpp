@@ -293,7 +293,7 @@ std::vector<SweepRow> fov_sweep(double from, double to, double step, double grid
     throw Error("sweep: need 0 < from <= to < 179 and step > 0");
   }
   std::vector<SweepRow> rows;
-  const AcuityModel qa = AcuityModel::quality("A"), qb = AcuityModel::quality("B");
+  const AcuityModel qa = AcuityModel::preset("A"), qb = AcuityModel::preset("B");
   for (double fov = from; fov <= to + 1e-9; fov += step) {
     SweepRow row;
     row.fov_deg = fov;

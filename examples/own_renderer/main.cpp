@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
     const int w = 640, h = 360;
     foveate::TechniqueConfig config;
     config.display = foveate::Display::load("desktop-1080p").resized(w, h);
-    config.acuity = foveate::AcuityModel::quality("A");
+    config.acuity = foveate::AcuityModel::preset("A");
     auto t = foveate::make_technique(technique, config);
 
     RingsScene scene;

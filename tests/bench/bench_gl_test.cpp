@@ -153,14 +153,14 @@ TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
   };
   TechniqueConfig c;
   c.display = Display::load("desktop-1080p").resized(640, 360);
-  c.acuity = AcuityModel::quality("A");
+  c.acuity = AcuityModel::preset("A");
   c.margin = 2.0;
   const ParamValues finer = resolve_parameters(technique_info("checkerboard"), c);
   EXPECT_EQ(r1(r.results[2]), finer.real("r1"));
   EXPECT_GT(r1(r.results[2]), r1(r.results[1]));
   write_bench_report(r, out);
   const nlohmann::json j = read_json(out + "/results.json");
-  EXPECT_EQ(j["acuity"]["slope"], kSlopeQualityA);
+  EXPECT_EQ(j["acuity"]["slope"], kSlopePresetA);
   EXPECT_TRUE(j["margin"].is_null());
   std::filesystem::remove_all(out);
 }

@@ -76,7 +76,10 @@ TEST(Options, ErrorsNameTheField) {
   o = {};
   o.params.set("nope", 1);
   EXPECT_EQ(field_of([&] { validate(o); }), "params");
-  EXPECT_EQ(error_of([] { acuity_from("A", 0.02); }), "quality and slope: give one, not both");
+  EXPECT_EQ(error_of([] { acuity_from("A", 0.02); }),
+            "acuity_preset and slope: give one, not both");
+  EXPECT_EQ(field_of([] { acuity_from("Z", std::nullopt); }), "acuity_preset");
+  EXPECT_EQ(acuity_from("b", std::nullopt).slope, kSlopePresetB);
 }
 
 TEST(Options, ParameterOverridesGoWhereTheyAreDeclared) {
@@ -158,7 +161,7 @@ TEST(Statistics, PassTimesAddUpToTheFrame) {
 
 TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
   const Display d = Display::load("desktop-1080p");
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   const SavingsCheck small = check_savings(d.resized(320, 180), a);
   EXPECT_TRUE(small.nothing_to_save);
   EXPECT_LT(small.pixel_bound, 1.2);
@@ -174,5 +177,5 @@ TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
 
 TEST(Savings, AWideFieldSavesEvenAtModestSizes) {
   const Display quest = Display::load("hmd-quest3").resized(640, 684);
-  EXPECT_FALSE(check_savings(quest, AcuityModel::quality("A")).nothing_to_save);
+  EXPECT_FALSE(check_savings(quest, AcuityModel::preset("A")).nothing_to_save);
 }

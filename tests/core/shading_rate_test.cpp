@@ -21,7 +21,7 @@ const Display& preset(const std::string& name) {
 }
 
 ShadingRate tile(const Display& d, Vec2d gaze, int tx, int ty, ShadingRateOptions o = {}) {
-  return shading_rate_image(d, AcuityModel::quality("A"), gaze, o).at(tx, ty);
+  return shading_rate_image(d, AcuityModel::preset("A"), gaze, o).at(tx, ty);
 }
 
 // Guenter et al.'s display: 1920 px over 510 mm viewed from 590 mm, so the eye
@@ -99,7 +99,7 @@ TEST(ShadingRate, MonotoneInEccentricity) {
     std::vector<Vec2d> gazes = {{0.5 * d.width_px, 0.5 * d.height_px}};
     if (!d.head_mounted()) gazes.insert(gazes.end(), {{300, 200}, {d.width_px - 100.0, 540}});
     for (Vec2d g : gazes) {
-      const ShadingRateImage img = shading_rate_image(d, AcuityModel::quality("A"), g);
+      const ShadingRateImage img = shading_rate_image(d, AcuityModel::preset("A"), g);
       const auto gt = img.tile_of(int(g.x), int(g.y));
       const auto ct = img.tile_of(d.width_px / 2, d.height_px / 2);
       int checked = 0;
@@ -132,7 +132,7 @@ TEST(ShadingRate, OnlySupportedRatesAndFractions) {
   ShadingRateOptions o;
   o.tile_px = 8;
   o.supported = {{1, 1}, {2, 1}, {4, 2}};
-  const ShadingRateImage img = shading_rate_image(d, AcuityModel::quality("B"), {960, 540}, o);
+  const ShadingRateImage img = shading_rate_image(d, AcuityModel::preset("B"), {960, 540}, o);
   EXPECT_EQ(img.tiles_x, 240);
   EXPECT_EQ(img.tiles_y, 135);
   double sum = 0.0;
@@ -206,9 +206,9 @@ TEST(ShadingRate, EncodingsMatchTheSpecifications) {
 TEST(ShadingRate, LatencyMarginShrinksTheCoarseArea) {
   const Display& d = preset("desktop-1080p");
   ShadingRateOptions o;
-  const auto a = shading_rate_image(d, AcuityModel::quality("A"), {960, 540}, o);
+  const auto a = shading_rate_image(d, AcuityModel::preset("A"), {960, 540}, o);
   o.latency_margin_deg = 5.0;  // e.g. 25 ms at 200 deg/s
-  const auto b = shading_rate_image(d, AcuityModel::quality("A"), {960, 540}, o);
+  const auto b = shading_rate_image(d, AcuityModel::preset("A"), {960, 540}, o);
   EXPECT_LT(b.fraction({4, 4}), a.fraction({4, 4}) - 0.05);
   EXPECT_GT(b.fraction({1, 1}), a.fraction({1, 1}));
   EXPECT_GT(b.pixel_ratio(), a.pixel_ratio());
@@ -228,9 +228,9 @@ TEST(ShadingRate, BottomLeftOriginFlipsTheRows) {
   // 320 x 160 (10 tile rows of 16): the OpenGL grid is the Vulkan one upside down.
   const Display d = preset("desktop-1080p").resized(320, 160);
   ShadingRateOptions o;
-  const auto top = shading_rate_image(d, AcuityModel::quality("A"), {100, 30}, o);
+  const auto top = shading_rate_image(d, AcuityModel::preset("A"), {100, 30}, o);
   o.origin_bottom_left = true;
-  const auto bottom = shading_rate_image(d, AcuityModel::quality("A"), {100, 30}, o);
+  const auto bottom = shading_rate_image(d, AcuityModel::preset("A"), {100, 30}, o);
   ASSERT_EQ(top.tiles_y, 10);
   bool differs = false;
   for (int ty = 0; ty < 10; ++ty) {
@@ -256,7 +256,7 @@ TEST(ShadingRate, PlannerReusedAcrossGazesMatchesEachTileWorkedAlone) {
   // tile_shading_rate works out for that tile from scratch (a planner that
   // kept anything of an earlier gaze would differ), on a desktop, a headset
   // and a headset seen through its lens; and shading_rate_image agrees.
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   for (const char* name : {"desktop-1080p", "hmd-quest3", "hmd-quest2-lens"}) {
     SCOPED_TRACE(name);
     const Display d = Display::load(name).resized(480, 270);

@@ -61,7 +61,7 @@ class Fidelity : public test::GlTest {
   TechniqueConfig config(int w, int h, std::map<std::string, double> params = {}) const {
     TechniqueConfig c;
     c.display = Display::load("desktop-1080p").resized(w, h);
-    c.acuity = AcuityModel::quality("A");
+    c.acuity = AcuityModel::preset("A");
     c.margin = 1.0;  // the papers' plans: at test sizes the fidelity margins plan near native
     c.params = std::move(params);
     return c;
@@ -473,7 +473,7 @@ TEST_F(Fidelity, VrsShowsNoTileStructure) {
   const Image img = run(*t, *scene, gaze);
   ShadingRateOptions o;
   o.origin_bottom_left = true;  // the technique's grid (GL)
-  const ShadingRateImage m = shading_rate_image(t->display(), AcuityModel::quality("A"), gaze, o);
+  const ShadingRateImage m = shading_rate_image(t->display(), AcuityModel::preset("A"), gaze, o);
   auto rate = [&](int x, int y) {
     const auto k = m.tile_of(x, y);
     return m.at(k[0], k[1]);

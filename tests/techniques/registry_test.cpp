@@ -6,8 +6,8 @@
 
 #include "bars_technique.hpp"
 #include "errors.hpp"
-#include "foveate/techniques/supersampled_native.hpp"
 #include "foveate/techniques/frame_runner.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 #include "gl_fixture.hpp"
 
 using namespace foveate;
@@ -18,7 +18,7 @@ namespace {
 TechniqueConfig config(int w, int h, std::map<std::string, double> params = {}) {
   TechniqueConfig c;
   c.display = Display::load("desktop-1080p").resized(w, h);
-  c.acuity = AcuityModel::quality("A");
+  c.acuity = AcuityModel::preset("A");
   c.params = std::move(params);
   return c;
 }
@@ -129,8 +129,8 @@ TEST(Registry, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
         << key;
   }
   const TechniqueConfig planned = planning_config(config(1920, 1080), own_values);
-  EXPECT_DOUBLE_EQ(planned.acuity.slope, AcuityModel::quality("A").slope / 1.5);
-  EXPECT_DOUBLE_EQ(planned.acuity.w0_deg, AcuityModel::quality("A").w0_deg / 1.5);
+  EXPECT_DOUBLE_EQ(planned.acuity.slope, AcuityModel::preset("A").slope / 1.5);
+  EXPECT_DOUBLE_EQ(planned.acuity.w0_deg, AcuityModel::preset("A").w0_deg / 1.5);
 }
 
 TEST(Registry, BadRegistrationsAreRefused) {

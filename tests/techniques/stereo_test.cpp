@@ -96,7 +96,7 @@ class Stereo : public test::GlTest {
   std::unique_ptr<Technique> make(const std::string& name, Eye e) const {
     TechniqueConfig c;
     c.display = display.eye(e);
-    c.acuity = AcuityModel::quality("A");
+    c.acuity = AcuityModel::preset("A");
     return make_technique(name, c);
   }
   // Each eye's gaze for a combined gaze at the cyclopean centre converging
@@ -216,7 +216,7 @@ TEST_F(Stereo, FixedFoveationCentresOnEachEyesLens) {
   for (Eye e : kEyes) {
     TechniqueConfig c;
     c.display = display.eye(e);
-    c.acuity = AcuityModel::quality("A");
+    c.acuity = AcuityModel::preset("A");
     c.params = {{"fixed", 1.0}};
     auto t = make_technique("vrs", c);
     GazeState g;

@@ -15,8 +15,8 @@
 #include "foveate/core/planner.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/metrics/metrics.hpp"
-#include "foveate/techniques/supersampled_native.hpp"
 #include "foveate/techniques/frame_runner.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 #include "srgb.hpp"
@@ -82,7 +82,7 @@ class Techniques : public test::GlTest {
   TechniqueConfig config(std::map<std::string, double> params = {}) const {
     TechniqueConfig c;
     c.display = Display::load("desktop-1080p").resized(kW, kH);
-    c.acuity = AcuityModel::quality("A");
+    c.acuity = AcuityModel::preset("A");
     // The papers' plans: at 640x360 the fidelity margins plan layers,
     // regions and rates close to native, with little to test.
     c.margin = 1.0;
@@ -153,7 +153,7 @@ TEST_F(Techniques, LayeredFoveaMatchesNativeAndCountsMatchThePlan) {
   // are rendered out to, (1 + transition)^2 with the default transition 0.2.
   PlannerOptions po;
   po.weights = {1.44, 1.44, 1.0};
-  const LayerPlan plan = plan_layers(config().display, AcuityModel::quality("A"), po);
+  const LayerPlan plan = plan_layers(config().display, AcuityModel::preset("A"), po);
   const Display d = config().display;
   ASSERT_EQ(s.parts.size(), plan.layers.size());
   // Inner layers: square targets reaching 1.2 e_i, of which only the disc the
@@ -237,7 +237,7 @@ TEST_F(Techniques, LayeredPlannedForAFinerAcuityIsCloserToNative) {
   const Image i1 = frame(1.0, &one), i12 = frame(1.2, &finer), i2 = frame(2.0, &two);
   PlannerOptions po;
   po.weights = {1.44, 1.44, 1.0};
-  const LayerPlan plan = plan_layers(config().display, AcuityModel::quality("A").finer(1.2), po);
+  const LayerPlan plan = plan_layers(config().display, AcuityModel::preset("A").finer(1.2), po);
   ASSERT_EQ(finer.parts.size(), plan.layers.size());
   // The outer layer as planned, less the hole the middle layer covers.
   EXPECT_LE(finer.parts.back().pixels, plan.layers.back().pixels);
@@ -280,7 +280,7 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
   const Image truth = ref.read();
   auto acuity_rmse = [&](const Image& img) {
     const metrics::Map m =
-        metrics::acuity_difference(truth, img, config().display, gaze, AcuityModel::quality("A"));
+        metrics::acuity_difference(truth, img, config().display, gaze, AcuityModel::preset("A"));
     double sum = 0;
     for (float v : m.values) sum += double(v) * v;
     return std::sqrt(sum / double(m.values.size()));
