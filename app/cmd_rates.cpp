@@ -158,7 +158,7 @@ RatesPlan make_rates_plan(const RatesArgs& a) {
   p.api = checked_api(a);
   p.opt.tile_px = a.tile;
   p.opt.origin_bottom_left = p.api == RateApi::GlNv;
-  p.opt.latency_margin_deg = a.latency_ms * a.max_saccade / 1000.0;
+  p.opt.latency_travel_deg = a.latency_ms * a.max_saccade / 1000.0;
   if (!a.rates.empty()) {
     try {
       p.opt.supported = parse_shading_rates(a.rates);
@@ -206,7 +206,7 @@ nlohmann::json rates_json(const RatesPlan& p) {
   j["gaze_px"] = {p.gaze.x, p.gaze.y};
   j["acuity"] = {{"slope", p.judged.slope}, {"w0_deg", p.judged.w0_deg}};
   j["margin"] = p.margin;
-  j["latency_margin_deg"] = p.opt.latency_margin_deg;
+  j["latency_margin_deg"] = p.opt.latency_travel_deg;
   nlohmann::json legend = nlohmann::json::array();
   for (ShadingRate r : p.opt.supported) {
     nlohmann::json e = {{"rate", r.name()},
@@ -243,8 +243,8 @@ void print_rates(const RatesArgs& a, const RatesPlan& p) {
             << ") px, acuity w(e) = " << format_fixed(p.judged.slope, 4) << " e + "
             << format_fixed(p.judged.w0_deg, 4) << " deg planned with margin "
             << format_fixed(p.margin, 3);
-  if (p.opt.latency_margin_deg > 0.0) {
-    std::cout << ", latency margin " << format_fixed(p.opt.latency_margin_deg, 2) << " deg";
+  if (p.opt.latency_travel_deg > 0.0) {
+    std::cout << ", latency margin " << format_fixed(p.opt.latency_travel_deg, 2) << " deg";
   }
   std::cout << "\n"
             << m.tiles_x << 'x' << m.tiles_y << " tiles of " << m.tile_px << " px, "

@@ -71,8 +71,8 @@ struct SyntheticViewer::Impl {
     if (!(o.saccade_min_deg > 0 && o.saccade_max_deg >= o.saccade_min_deg &&
           o.fixation_mean_s > 0 && o.fixation_min_s > 0 && o.blink_max_s >= o.blink_min_s &&
           o.blink_min_s > 0 && o.pursuit_max_s >= o.pursuit_min_s && o.pursuit_min_s > 0 &&
-          o.rate_hz >= 0 && o.latency_ms >= 0 && o.noise_deg >= 0 && o.screen_margin >= 0 &&
-          o.screen_margin < 0.5)) {
+          o.rate_hz >= 0 && o.latency_ms >= 0 && o.noise_deg >= 0 && o.edge_inset >= 0 &&
+          o.edge_inset < 0.5)) {
       throw Error("synthetic viewer: inconsistent options");
     }
     px_per_deg = display.eye_distance_px() * std::tan(std::numbers::pi / 180.0);
@@ -143,7 +143,7 @@ struct SyntheticViewer::Impl {
   }
 
   void push_saccade(double t0, Vec2d p0) {
-    const double lo = o.screen_margin, hi = 1.0 - o.screen_margin;
+    const double lo = o.edge_inset, hi = 1.0 - o.edge_inset;
     Vec2d target = p0;
     double amp = 0;
     for (int tries = 0; tries < 32; ++tries) {
@@ -171,7 +171,7 @@ struct SyntheticViewer::Impl {
     s.m.from = p0;
     const double speed = uniform(o.pursuit_min_deg_per_s, o.pursuit_max_deg_per_s);
     double dur = uniform(o.pursuit_min_s, o.pursuit_max_s);
-    const double lo = o.screen_margin, hi = 1.0 - o.screen_margin;
+    const double lo = o.edge_inset, hi = 1.0 - o.edge_inset;
     Vec2d v{};
     for (int tries = 0; tries < 16; ++tries) {
       const double dir = uniform(0.0, 2.0 * std::numbers::pi);

@@ -125,7 +125,7 @@ GazeSample read_json_sample(const nlohmann::json& e, const std::string& p, doubl
 Trace parse_trace_json(const std::string& text, const std::string& where,
                        const TraceOptions& options) {
   const nlohmann::json j = parse_json(text, where);
-  Builder b(options.margin);
+  Builder b(options.off_screen_limit);
   b.trace.format = "json";
   int width = options.width_px, height = options.height_px;
   JsonTraceHeader h;

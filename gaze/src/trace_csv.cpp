@@ -227,7 +227,7 @@ void skip_row(Builder& b, std::string what, bool cut_off, const TraceOptions& op
 
 Trace parse_trace_csv(const std::string& text, const std::string& where,
                       const TraceOptions& options) {
-  Builder b(options.margin);
+  Builder b(options.off_screen_limit);
   int width = options.width_px, height = options.height_px;
   std::vector<std::string> fields;
   std::optional<CsvHeader> header;

@@ -79,7 +79,7 @@ class Checkerboard final : public Technique {
 
   std::array<double, 3> thresholds(const GazeState& g) const {
     std::array<double, 3> t = thresholds_px_;
-    const double extra = latency_margin_deg(g);
+    const double extra = latency_travel_deg(g);
     for (double& x : t) {
       const double e =
           std::atan(x / display_.eye_distance_px()) * 180.0 / 3.14159265358979 * g.fovea_scale +

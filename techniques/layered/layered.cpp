@@ -97,7 +97,7 @@ int Layered::slots(size_t i) const {
 
 Layered::InnerSize Layered::inner_size(size_t i, const GazeState& g) const {
   const Layer& L = plan_.layers[i];
-  const double e = L.radius_deg * g.fovea_scale + latency_margin_deg(g);
+  const double e = L.radius_deg * g.fovea_scale + latency_travel_deg(g);
   const double r = display_.radius_px_at(e);
   const int side =
       std::max(1, static_cast<int>(std::ceil(2.0 * r * (1 + transition_) / L.sampling_factor)));

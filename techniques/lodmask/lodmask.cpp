@@ -54,9 +54,9 @@ class LodMask final : public Technique {
   void reset() override { held_ = false; }
 
   // Radii of the two circles around their centre: the LOD radii at this
-  // gaze (fovea scale, latency margin) grown by the hold distance.
+  // gaze (fovea scale, latency travel) grown by the hold distance.
   std::pair<double, double> radii(const GazeState& g) const {
-    const double extra = latency_margin_deg(g);
+    const double extra = latency_travel_deg(g);
     return {display_.radius_px_at(inner_deg_ * g.fovea_scale + extra) + hold_px_,
             display_.radius_px_at(outer_deg_ * g.fovea_scale + extra) + hold_px_};
   }

@@ -84,9 +84,9 @@ class LogPolar final : public Technique {
   [[nodiscard]] int settle_frames() const override { return 3; }
 
   // Radius (pixels) of the native disc at this gaze: the planned one, grown
-  // by a tracker fallback and the latency margin.
+  // by a tracker fallback and the latency travel.
   double native_px(const GazeState& g) const {
-    const double e = fovea_deg_ * g.fovea_scale + latency_margin_deg(g);
+    const double e = fovea_deg_ * g.fovea_scale + latency_travel_deg(g);
     return std::max(plan_.native_px, display_.radius_px_at(e));
   }
 

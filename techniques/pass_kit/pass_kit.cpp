@@ -213,7 +213,7 @@ FrameStats one_pass_stats(const char* name, double shaded, int width, int height
   return s;
 }
 
-double latency_margin_deg(const GazeState& g) {
+double latency_travel_deg(const GazeState& g) {
   return std::max(0.0, g.latency_ms) * std::max(0.0, g.max_saccade_deg_per_s) / 1000.0;
 }
 

@@ -51,11 +51,11 @@ class Vrs final : public Technique {
       cached_ = false;
     }
     const Vec2d at = fixed_ ? planner_->display().principal_point() : g.gaze_px;
-    const double margin = fixed_ ? 0.0 : latency_margin_deg(g);
+    const double travel = fixed_ ? 0.0 : latency_travel_deg(g);
     const double scale = fixed_ ? 1.0 : std::max(1.0, g.fovea_scale);
-    const std::array<double, 4> key = {at.x, at.y, margin, scale};
+    const std::array<double, 4> key = {at.x, at.y, travel, scale};
     if (!cached_ || key != cached_key_) {
-      cached_rates_ = planner_->image(at, margin, scale);
+      cached_rates_ = planner_->image(at, travel, scale);
       cached_key_ = key;
       cached_ = true;
     }

@@ -1,6 +1,6 @@
 // Shading-rate images: hand-worked tiles on the paper's display and on the
 // headset preset, monotonicity, supported sets, encodings against the API
-// specifications, the latency margin, the grid origin and bad input.
+// specifications, the latency travel, the grid origin and bad input.
 #include "foveate/core/shading_rate.hpp"
 
 #include <gtest/gtest.h>
@@ -55,10 +55,10 @@ TEST(ShadingRate, DesktopHandWorkedTiles) {
   ShadingRateOptions o;
   o.supported = {{1, 1}, {2, 2}};
   EXPECT_EQ(tile(d, g, 110, 33, o), (ShadingRate{2, 2}));
-  // The same tile with a 16-degree latency margin: e = 3.81 deg, w = 0.1255,
+  // The same tile with a 16-degree latency travel: e = 3.81 deg, w = 0.1255,
   // half 0.0628 deg: 2.75 (x) and 2.59 (y) pixels per sample: 2x2.
   o = {};
-  o.latency_margin_deg = 16.0;
+  o.latency_travel_deg = 16.0;
   EXPECT_EQ(tile(d, g, 110, 33, o), (ShadingRate{2, 2}));
 }
 
@@ -207,7 +207,7 @@ TEST(ShadingRate, LatencyMarginShrinksTheCoarseArea) {
   const Display& d = preset("desktop-1080p");
   ShadingRateOptions o;
   const auto a = shading_rate_image(d, AcuityModel::preset("A"), {960, 540}, o);
-  o.latency_margin_deg = 5.0;  // e.g. 25 ms at 200 deg/s
+  o.latency_travel_deg = 5.0;  // e.g. 25 ms at 200 deg/s
   const auto b = shading_rate_image(d, AcuityModel::preset("A"), {960, 540}, o);
   EXPECT_LT(b.fraction({4, 4}), a.fraction({4, 4}) - 0.05);
   EXPECT_GT(b.fraction({1, 1}), a.fraction({1, 1}));
@@ -252,7 +252,7 @@ TEST(ShadingRate, BottomLeftOriginFlipsTheRows) {
 }
 
 TEST(ShadingRate, PlannerReusedAcrossGazesMatchesEachTileWorkedAlone) {
-  // One planner, many gazes, margins and scales: every tile's rate is the one
+  // One planner, many gazes, latency travels and scales: every tile's rate is the one
   // tile_shading_rate works out for that tile from scratch (a planner that
   // kept anything of an earlier gaze would differ), on a desktop, a headset
   // and a headset seen through its lens; and shading_rate_image agrees.
@@ -265,12 +265,12 @@ TEST(ShadingRate, PlannerReusedAcrossGazesMatchesEachTileWorkedAlone) {
     const ShadingRatePlanner p(d, a, o);
     int coarse = 0;
     for (const Vec2d g : {Vec2d{240, 135}, Vec2d{10, 260}, Vec2d{479, 0}, Vec2d{-200, 135}}) {
-      for (const auto& [margin, scale] :
+      for (const auto& [travel, scale] :
            {std::pair{0.0, 1.0}, std::pair{3.0, 1.0}, std::pair{0.0, 2.5}}) {
         ShadingRateOptions q = o;
-        q.latency_margin_deg = margin;
+        q.latency_travel_deg = travel;
         q.fovea_scale = scale;
-        const ShadingRateImage img = p.image(g, margin, scale);
+        const ShadingRateImage img = p.image(g, travel, scale);
         ASSERT_EQ(img.rates.size(), size_t(img.tiles_x * img.tiles_y));
         for (int ty = 0; ty < img.tiles_y; ++ty) {
           for (int tx = 0; tx < img.tiles_x; ++tx) {
@@ -304,10 +304,10 @@ TEST(ShadingRate, BadInputIsRefused) {
   o.tile_px = 12;
   fails(o, "tile");
   o = {};
-  o.latency_margin_deg = -1.0;
-  fails(o, "latency margin");
-  o.latency_margin_deg = std::nan("");
-  fails(o, "latency margin");
+  o.latency_travel_deg = -1.0;
+  fails(o, "latency travel");
+  o.latency_travel_deg = std::nan("");
+  fails(o, "latency travel");
   o = {};
   o.fovea_scale = 0.5;
   fails(o, "fovea scale");

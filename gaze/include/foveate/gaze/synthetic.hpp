@@ -31,10 +31,10 @@ struct SyntheticOptions {
   double blink_rate_hz = 0.25;  ///< blinks start inside fixations at this rate
   double blink_min_s = 0.1;
   double blink_max_s = 0.3;
-  double screen_margin = 0.05;  ///< targets stay this far inside the screen
-  double noise_deg = 0.0;       ///< Gaussian tracker noise per sample (0: none)
-  double rate_hz = 0.0;         ///< tracker rate; 0 = continuous (sample at t)
-  double latency_ms = 0.0;      ///< the tracker reports the eye as it was this long ago
+  double edge_inset = 0.05;  ///< targets stay this far inside the screen (normalized)
+  double noise_deg = 0.0;    ///< Gaussian tracker noise per sample (0: none)
+  double rate_hz = 0.0;      ///< tracker rate; 0 = continuous (sample at t)
+  double latency_ms = 0.0;   ///< the tracker reports the eye as it was this long ago
 };
 
 /// One piece of the viewer's behaviour, for tests and `gaze synth`.

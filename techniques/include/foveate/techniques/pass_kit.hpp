@@ -123,7 +123,7 @@ void set_rect_mapping(const gpu::Program& p, const View& view);
 FrameStats one_pass_stats(const char* name, double shaded, int width, int height);
 
 /// Extra eccentricity (degrees) that the eye can travel during the gaze latency.
-double latency_margin_deg(const GazeState& gaze);
+double latency_travel_deg(const GazeState& gaze);
 
 /// The gaze marker every overlay ends with.
 OverlayShape gaze_dot(const GazeState& gaze);

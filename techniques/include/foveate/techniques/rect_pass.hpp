@@ -54,7 +54,7 @@ std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double 
 
 /// Rectangles of `band` rows each that together cover every pixel of a
 /// width x height target whose centre lies within `radius` of `centre` (GL
-/// pixels): a disc's area plus a pixel's margin, for masks drawn over a disc.
+/// pixels): a disc's area and one pixel around it, for masks drawn over a disc.
 std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
                                   int band = 4);
 
