@@ -1,7 +1,7 @@
 // One linear pass over a Shadertoy shader's text: a tokenizer that skips
 // comments and strings, and a few token-window checks on top of it. No
-// regular expressions and no recursion, by design (std::regex overflowed the
-// stack on long inputs).
+// regular expressions and no recursion, by design: std::regex recurses per
+// character and overflows the stack on long inputs.
 #include "foveate/scenes/shadertoy_source.hpp"
 
 #include <algorithm>

@@ -172,11 +172,10 @@ void PassKit::scene_pass(Scene& scene, const View& view, const gpu::Program& pro
   // One scissored full-screen triangle per rectangle rather than a quad of
   // two triangles each: llvmpipe shades a 4x4 block once per triangle that
   // touches it, and the diagonal of a long thin quad touches nearly every
-  // block of it (a shading pass over bands of rows cost up to twice its
-  // pixels). The scissor clips exactly, on whole blocks where the
-  // rectangles are aligned to them. Each draw costs about 0.14 ms on
-  // llvmpipe (a few hundred pixels of an expensive scene, ten thousand of a
-  // cheap one): bands are merged where that shades at most 8 % more.
+  // block of it. The scissor clips exactly, on whole blocks where the
+  // rectangles are aligned to them. Each draw has a fixed cost (on cheap
+  // scenes more than the pixels it saves: docs/performance.md), so bands are
+  // merged where that shades at most 8 % more.
   gpu::PassState clipped = state;
   for (const PixelRect& r : coarsen_runs(*cover, 0.08)) {
     clipped.scissor = {r[0], r[1], r[2] - r[0], r[3] - r[1]};

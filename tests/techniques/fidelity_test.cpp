@@ -2,7 +2,7 @@
 // their periphery from native"): every technique's foveal disc, out to its
 // innermost radius and at least 2.5 degrees, equals native within the golden
 // tolerance; the periphery keeps native's mean linear luminance; and each
-// technique's own artefacts are checked where they used to show (checkerboard's
+// technique's own artefacts are checked where they would show (checkerboard's
 // lattice of sharp kept quads, lodmask's stale coarse surfaces and popping
 // borders, logpolar's dark rim and blurred fovea).
 #include <gtest/gtest.h>
@@ -256,9 +256,9 @@ TEST_F(Fidelity, LogpolarFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
 }
 
 TEST_F(Fidelity, LogpolarHasNoRimOnDeferredScenes) {
-  // Buffer texels beyond the screen used to shade an empty G-buffer, and the
-  // inverse mapping's filter pulled that into the border rows and columns
-  // (the bottom row was 21 codes darker than native, the sides 11).
+  // Buffer texels beyond the screen must not shade an empty G-buffer: the
+  // inverse mapping's filter would pull that into the border rows and
+  // columns, darker than native.
   const int W = 960, H = 540;
   auto scene = load_scene("guenter");
   const Image ref = native(*scene, W, H);

@@ -49,7 +49,7 @@ std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const Pix
 /// takes in the one directly above it where their bounding box is no more
 /// than `waste` larger than what they cover, and the box meets no other
 /// rectangle of that band and no other box's columns. Passes drawn once per
-/// rectangle pay a fixed cost per draw (about 0.14 ms on llvmpipe).
+/// rectangle pay a fixed cost per draw (docs/performance.md).
 std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double waste);
 
 /// Rectangles of `band` rows each that together cover every pixel of a
