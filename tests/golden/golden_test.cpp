@@ -120,11 +120,14 @@ TEST_F(Golden, AnAlteredImageFailsTheComparison) {
       p[0] = 255, p[1] = 0, p[2] = 255;
     }
   }
+  // It fails, and writes its difference image where failures go (a file
+  // left by an earlier run does not count).
+  const std::filesystem::path diff = test::golden_failure_dir() / "altered-cheap.diff.png";
+  std::filesystem::remove(diff);
   const std::string msg = check_golden(img, kGolden + "/scene-cheap.png", "altered-cheap");
   EXPECT_NE(msg.find("max error"), std::string::npos) << msg;
-  EXPECT_TRUE(std::filesystem::exists(std::filesystem::current_path() / "golden-failures" /
-                                      "altered-cheap.diff.png") ||
-              std::getenv("FOVEATE_TEST_OUTPUT"));
+  EXPECT_TRUE(std::filesystem::exists(diff)) << diff;
+  EXPECT_NE(msg.find(diff.string()), std::string::npos) << msg;
   // A uniformly brightened image fails on the mean.
   Image bright = render(*scene, "native", 128, 72, {64, 36});
   for (size_t i = 0; i < bright.rgba.size(); i += 4)

@@ -1,8 +1,6 @@
 // Each technique against native on the built-in scenes: the fovea matches,
 // the shaded pixels match the plan, identity parameters reproduce native, and
 // gazes at the corners and off screen work.
-#include "foveate/techniques/technique.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +15,7 @@
 #include "foveate/metrics/metrics.hpp"
 #include "foveate/techniques/frame_runner.hpp"
 #include "foveate/techniques/supersampled_native.hpp"
+#include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 #include "srgb.hpp"
@@ -752,77 +751,6 @@ TEST_F(Techniques, LodmaskSaysItNeedsMeshes) {
   // The need is declared, so callers can ask before rendering.
   EXPECT_NE(scene_mismatch(technique_info("lodmask"), scene->info()), "");
   EXPECT_EQ(scene_mismatch(technique_info("lodmask"), load_scene("guenter")->info()), "");
-}
-
-TEST_F(Techniques, BadParametersAreErrors) {
-  EXPECT_THROW(make_technique("layered", config({{"layers", 9}})), Error);
-  EXPECT_THROW(make_technique("layered", config({{"layers", 2.5}})), Error);
-  EXPECT_THROW(make_technique("layered", config({{"sigma", 2}})), Error);
-  EXPECT_THROW(make_technique("logpolar", config({{"sigma", 0.5}})), Error);
-  EXPECT_THROW(make_technique("nope", config()), Error);
-  try {
-    make_technique("checkerboard", config({{"colour", 1}}));
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("block"), std::string::npos)
-        << "lists known keys: " << e.what();
-  }
-}
-
-TEST_F(Techniques, DefaultsComeFromTheAcuityModel) {
-  // A steeper MAR slope (more aggressive) shrinks every foveal region.
-  TechniqueConfig a = config(), b = config();
-  b.acuity = AcuityModel::with_slope(0.05);
-  auto get = [](const std::string& name, const TechniqueConfig& c, const std::string& key) {
-    return resolve_parameters(technique_info(name), c).real(key);
-  };
-  EXPECT_GT(get("checkerboard", a, "r3"), get("checkerboard", b, "r3"));
-  EXPECT_GT(get("inset", a, "fovea_deg"), get("inset", b, "fovea_deg"));
-  EXPECT_LT(get("logpolar", a, "sigma"), get("logpolar", b, "sigma"));
-  EXPECT_GT(get("lodmask", a, "inner_deg"), get("lodmask", b, "inner_deg"));
-}
-
-TEST_F(Techniques, LodmaskCirclesLieWhereHalfACycleCoversTheLodsSilhouetteError) {
-  // LOD k errs by about 0.5 px * 10^k (a tenth of the triangles per level,
-  // chord error ~ 1 / triangles); it may show where w(e) ppd >= 2 * error,
-  // i.e. w(e) >= error * w*. Quality A: w(e) = 0.0275 e + 1/48.
-  auto e_for = [](double w) { return (w - 1.0 / 48.0) / 0.0275; };
-  for (const Size& sz : {Size{1920, 1080}, Size{640, 360}}) {
-    TechniqueConfig c = config();
-    c.display = Display::load("desktop-1080p").resized(sz.w, sz.h);
-    const ParamValues v = resolve_parameters(technique_info("lodmask"), c);
-    const double ws = c.display.sharpness_deg();
-    EXPECT_NEAR(v.real("inner_deg"), e_for(5 * ws), 1e-9) << sz.w;
-    EXPECT_EQ(v.real("outer_deg"), 90.0) << sz.w;  // 50 w*: beyond the screen
-  }
-  // 1920x1080: w* = 0.0516 deg, the mid LOD from 8.6 deg out.
-  TechniqueConfig c = config();
-  c.display = Display::load("desktop-1080p");
-  EXPECT_NEAR(resolve_parameters(technique_info("lodmask"), c).real("inner_deg"), 8.63, 0.02);
-}
-
-TEST_F(Techniques, EveryDeclaredDefaultLiesInItsRange) {
-  // At sizes where the derivations run off their scales (a tiny render of a
-  // wide display, a steep or a flat slope) the defaults are clamped, and
-  // whole-number and boolean parameters are whole.
-  for (const Size& sz : {Size{64, 36}, Size{1920, 1080}, Size{7680, 4320}}) {
-    for (double slope : {0.005, 0.0275, 0.2}) {
-      TechniqueConfig c = config();
-      c.display = Display::load("desktop-1080p").resized(sz.w, sz.h);
-      c.acuity = AcuityModel::with_slope(slope);
-      for (const TechniqueInfo& t : techniques()) {
-        const ParamValues v = resolve_parameters(t, c);
-        ASSERT_EQ(v.items().size(), t.params.size()) << t.name;
-        for (const ParamDecl& p : t.params) {
-          const double x = v.real(p.key);
-          EXPECT_GE(x, p.min) << t.name << "." << p.key;
-          EXPECT_LE(x, p.max) << t.name << "." << p.key;
-          if (p.type != ParamType::Real) {
-            EXPECT_EQ(x, std::round(x)) << t.name << "." << p.key;
-          }
-        }
-      }
-    }
-  }
 }
 
 TEST_F(Techniques, LatencyGrowsEveryFovea) {
