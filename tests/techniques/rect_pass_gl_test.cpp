@@ -10,15 +10,12 @@
 #include "foveate/techniques/pass_kit.hpp"
 #include "foveate/techniques/rect_pass.hpp"
 #include "gl_fixture.hpp"
+#include "pixel_rects.hpp"
 
 namespace foveate::tech {
 namespace {
 
-bool covered(const std::vector<PixelRect>& rects, int x, int y) {
-  for (const PixelRect& r : rects)
-    if (x >= r[0] && x < r[2] && y >= r[1] && y < r[3]) return true;
-  return false;
-}
+using test::covered;
 
 class RectPassTest : public test::GlTest {};
 

@@ -9,14 +9,12 @@
 #include <limits>
 #include <vector>
 
+#include "pixel_rects.hpp"
+
 namespace foveate::tech {
 namespace {
 
-bool covered(const std::vector<PixelRect>& rects, int x, int y) {
-  for (const PixelRect& r : rects)
-    if (x >= r[0] && x < r[2] && y >= r[1] && y < r[3]) return true;
-  return false;
-}
+using test::covered;
 
 double area(const std::vector<PixelRect>& rects) {
   double a = 0;
