@@ -76,7 +76,7 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
 void add_clock_options(CLI::App* sub, SessionArgs& a, const char* default_date) {
   sub->add_option("--fps", a.fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")
       ->capture_default_str();
-  sub->add_option("--time", a.time, "Scene time of the first frame in seconds")
+  sub->add_option("--time", a.start_time_s, "Scene time of the first frame in seconds")
       ->capture_default_str();
   sub->add_flag("--strict", a.strict,
                 "A gaze trace (--gaze trace:FILE) row that cannot be read is an error (default: "
@@ -143,7 +143,7 @@ bench::SessionOptions to_session_options(const SessionArgs& a, const char* defau
   o.margin = a.margin;
   o.gaze = a.gaze;
   o.fps = a.fps;
-  o.start_time_s = a.time;
+  o.start_time_s = a.start_time_s;
   o.stereo = a.stereo;
   if (a.vergence == "inf") {
     o.vergence_m = std::numeric_limits<double>::infinity();

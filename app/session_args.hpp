@@ -31,7 +31,7 @@ struct SessionArgs {
   std::string up;
   std::string model_memory_limit;
   double fps = bench::SessionOptions{}.fps;
-  double time = bench::SessionOptions{}.start_time_s;
+  double start_time_s = bench::SessionOptions{}.start_time_s;  ///< --time
   bool strict = false;
   double frame_timeout = bench::kDefaultFrameTimeoutS;
   std::string date;  ///< --date; empty = the command's default

@@ -24,7 +24,7 @@ class DepthRegions {
   static bool usable(const gpu::RenderTarget& target) { return static_cast<bool>(target.color()); }
   /// The next region: the polygon around the disc (GL pixels), covering all of
   /// it (circumscribed) or only pixels inside it (inscribed).
-  void disc(const gpu::Program& program, Vec2d centre, double radius, bool inscribed);
+  void disc(const gpu::Program& program, Vec2d centre, double radius_px, bool inscribed);
   /// The next region: every pixel not yet drawn.
   void rest(const gpu::Program& program);
 

@@ -54,13 +54,13 @@ class PassKit {
   const gpu::Program& over_regions(const std::string& fragment);
   /// One full-screen pass split around a disc (GL pixels of `target`), so
   /// that each pixel runs only the shader its region needs: `inside` over
-  /// the pixels within `inner`, `band` over the rest of the disc of `outer`,
+  /// the pixels within `inner_px`, `band` over the rest of the disc of `outer_px`,
   /// `outside` beyond (each an over_regions fragment shader); `set` sets up
   /// each program. Timed as `band`'s pass. Into a target without a colour
   /// texture (a window) one full-screen pass of `band`, which must then
   /// handle every region itself.
-  void pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner, double outer,
-                        const std::string& inside, const std::string& band,
+  void pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner_px,
+                        double outer_px, const std::string& inside, const std::string& band,
                         const std::string& outside, const SetUniforms& set);
   /// A pass of an over_rects program into `target` with `state`, covering
   /// only `rects` (GL pixels of the target).

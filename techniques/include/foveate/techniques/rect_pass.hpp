@@ -53,17 +53,17 @@ std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const Pix
 std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double waste);
 
 /// Rectangles of `band` rows each that together cover every pixel of a
-/// width x height target whose centre lies within `radius` of `centre` (GL
+/// width x height target whose centre lies within `radius_px` of (cx, cy) (GL
 /// pixels): a disc's area and one pixel around it, for masks drawn over a disc.
-std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
+std::vector<PixelRect> disc_rects(double cx, double cy, double radius_px, int width, int height,
                                   int band = 4);
 
 /// Rectangles of `band` rows each that together cover every pixel of a
-/// width x height target whose centre lies within `outer` of `centre` (GL
-/// pixels; infinite = the whole target) and not within `inner`: an annulus
-/// less only the pixels that lie inside `inner` for every row of their band
-/// (two rectangles per band where the hole cuts it).
-std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double outer, int width,
-                                     int height, int band = 4);
+/// width x height target whose centre lies within `outer_px` of (cx, cy) (GL
+/// pixels; infinite = the whole target) and not within `inner_px`: an annulus
+/// less only the pixels that lie inside `inner_px` for every row of their
+/// band (two rectangles per band where the hole cuts it).
+std::vector<PixelRect> annulus_rects(double cx, double cy, double inner_px, double outer_px,
+                                     int width, int height, int band = 4);
 
 }  // namespace foveate::tech
