@@ -1,9 +1,9 @@
 #pragma once
-// What single-pass Shadertoy scenes and multipass projects share: reading a
-// user's pass file (checked, size-capped, BOM skipped), the prelude adapted
-// to it (Shadertoy's inputs minus those it declares itself, the legacy names
-// it uses), channel images checked before decoding, the inputs set per pass,
-// and the warning for a channel sampled but not bound.
+// A Shadertoy pass, as single-pass scenes and multipass projects both read
+// one: the user's pass file (checked, size-capped, BOM skipped), the prelude
+// adapted to it (Shadertoy's inputs minus those it declares itself, the
+// legacy names it uses), channel images checked before decoding, the inputs
+// set per pass, and the warning for a channel sampled but not bound.
 #include <array>
 #include <string>
 #include <vector>

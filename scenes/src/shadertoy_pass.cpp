@@ -1,4 +1,4 @@
-#include "shadertoy_common.hpp"
+#include "shadertoy_pass.hpp"
 
 #include <stb/stb_image.h>
 
