@@ -11,7 +11,7 @@
 #include "commands.hpp"
 #include "foveate/bench/report.hpp"
 #include "foveate/core/error.hpp"
-#include "foveate/techniques/reference.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 #include "invocation.hpp"
 #include "messages.hpp"
 #include "output_dir.hpp"
@@ -32,6 +32,7 @@ struct BenchArgs {
   std::string out = "bench-out";
   std::string reference = "native";
   bool no_metrics = false;
+  bool no_diagnostics = false;
   bool passes = false;
   std::string video;
   bool side_by_side = false;
@@ -79,6 +80,7 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   o.frames = a.frames;
   o.warmup = a.warmup;
   o.image_metrics = !a.no_metrics;
+  o.diagnostics = !a.no_diagnostics;
   o.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.allow_fallback = a.allow_fallback;
   o.passes = a.passes;
@@ -112,6 +114,9 @@ void add_common(CLI::App* sub, BenchArgs& a) {
                 "Skip the image metrics against native (PSNR, SSIM, acuity error, FLIP; faster)");
   // The flag's old name, kept working.
   sub->add_flag("--no-quality", a.no_metrics)->group("");
+  sub->add_flag("--no-diagnostics", a.no_diagnostics,
+                "Judge by FovVideoVDP alone: skip PSNR, SSIM, the acuity error, JND, FLIP and "
+                "flicker (several times faster at 1080p)");
   sub->add_flag("--json", a.json,
                 "Print results.json on stdout instead of the table (the files are written too)");
   sub->add_flag("--allow-fallback", a.allow_fallback,
@@ -202,12 +207,13 @@ void register_demo(CLI::App& app) {
   a->out = "foveate-demo";
   CLI::App* sub = app.add_subcommand("demo",
                                      "A short benchmark of a built-in scene with every technique "
-                                     "at quality A; prints the table and the report's path");
+                                     "at acuity preset A; prints the table and the report's path");
   add_common(sub, *a);
   sub->callback([a] {
     if (!quiet() && !a->json)
       std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
-                << ", quality " << (a->session.quality.empty() ? "A" : a->session.quality)
+                << ", acuity preset "
+                << (a->session.acuity_preset.empty() ? "A" : a->session.acuity_preset)
                 << ", display " << a->session.display << " at " << a->session.size << std::endl;
     const bench::BenchOptions o = to_options(*a, "foveate demo");
     print_summary(run_and_write(*a, o, "demo"), *a);

@@ -39,7 +39,7 @@ struct CompareArgs {
   double fps = 60.0;
   bool no_foveation = false;
   PhotometryOverrides photometry;
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   bool json = false;
   bool no_flip = false;
@@ -172,7 +172,7 @@ void print_fvvdp(const metrics::FvvdpResult& r) {
 
 metrics::QualityOptions diagnostic_options(const CompareArgs& a, const Display& display) {
   metrics::QualityOptions opt;
-  opt.acuity = bench::acuity_from(a.quality, a.slope);
+  opt.acuity = bench::acuity_from(a.acuity_preset, a.slope);
   opt.flip = !a.no_flip;
   opt.jnd_threshold = a.threshold;
   // The JND diagnostic sees the same light as FovVideoVDP.
@@ -345,7 +345,7 @@ void register_compare(CLI::App& app) {
                   "reference as a PNG: green invisible, red --heatmap-max JOD");
   sub->add_option("--heatmap-max", a->heatmap_max, "JOD at the top of the heat map's scale")
       ->capture_default_str();
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--threshold", a->threshold,
                   "Diagnostics: pooled visibility (JND) from which a pixel counts as visible")
       ->capture_default_str();

@@ -283,9 +283,9 @@ void run_synth(const SynthArgs& a) {
   Trace t;
   const auto n = static_cast<long long>(a.seconds * a.rate);
   for (long long k = 0; k <= n; ++k) {
-    const double time = static_cast<double>(k) / a.rate;
-    GazeSample s = v.sample(time);
-    s.time_s = time;
+    const double time_s = static_cast<double>(k) / a.rate;
+    GazeSample s = v.sample(time_s);
+    s.time_s = time_s;
     t.samples.push_back(s);
   }
   const bool json = a.out.size() >= 5 && a.out.substr(a.out.size() - 5) == ".json";

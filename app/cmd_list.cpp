@@ -40,7 +40,7 @@ struct TechniquesArgs {
   std::string display = "desktop-1080p";
   std::string size = kDefaultSize;
   bool json = false;
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   std::optional<double> margin;
 };
@@ -61,6 +61,7 @@ void print_techniques_json(const TechniqueConfig& c, PixelSize size) {
                         {"type", param_type_name(p.type)},
                         {"min", p.min},
                         {"max", p.max},
+                        {"tune", p.tune},
                         {"help", p.help}});
     }
     list.push_back({{"name", t.name},
@@ -104,7 +105,7 @@ void register_techniques(CLI::App& app) {
   sub->add_option("--size", a->size, "Render size for the derived defaults (render's default)")
       ->capture_default_str();
   sub->add_flag("--json", a->json, "Print the techniques, parameters and defaults as JSON");
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--margin", a->margin,
                   "Derive the defaults for every technique planned with this margin (as "
                   "render's and bench's --margin, 1 to 4; default: each technique's own)");
@@ -114,7 +115,7 @@ void register_techniques(CLI::App& app) {
     c.display = with_flag("--display", [&] {
                   return Display::load(a->display);
                 }).resized(size.width, size.height);
-    c.acuity = bench::acuity_from(a->quality, a->slope);
+    c.acuity = bench::acuity_from(a->acuity_preset, a->slope);
     note_savings(c.display, c.acuity);
     if (a->margin) bench::check_margin(*a->margin);
     c.margin = a->margin;

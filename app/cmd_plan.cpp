@@ -29,7 +29,7 @@ namespace {
 
 struct PlanArgs {
   std::string display = "desktop-1080p";
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   int layers = 3;
   std::string gaze;
@@ -102,7 +102,7 @@ std::string sweep_svg(const std::vector<SweepRow>& rows) {
     cost.push_back(a);
   }
   ChartOptions c;
-  c.title = "Figure 13: pixels to render, native against foveated (quality A)";
+  c.title = "Figure 13: pixels to render, native against foveated (acuity preset A)";
   c.x_label = "field of view (degrees)";
   c.y_label = "pixels per frame, log scale";
   c.log_y = true;
@@ -112,54 +112,70 @@ std::string sweep_svg(const std::vector<SweepRow>& rows) {
          "\" height=\"" + std::to_string(o.height + c.height) + "\">\n" + top + bottom + "</svg>\n";
 }
 
-void run_plan(const PlanArgs& a) {
-  if (a.max_grid < 1 || a.max_grid > 1000000) {
-    throw Error("--max-grid: expected 1..1000000 candidate radii, got " +
-                std::to_string(a.max_grid));
+// The field-of-view sweep into a .csv or .svg file (and its rows as JSON).
+void run_sweep(const PlanArgs& a) {
+  const std::string ext = std::filesystem::path(a.sweep).extension().string();
+  if (ext != ".csv" && ext != ".svg") {
+    throw Error("--sweep: the file must end in .csv or .svg, got '" + a.sweep + "'");
   }
-  if (!a.sweep.empty()) {
-    const std::string ext = std::filesystem::path(a.sweep).extension().string();
-    if (ext != ".csv" && ext != ".svg") {
-      throw Error("--sweep: the file must end in .csv or .svg, got '" + a.sweep + "'");
-    }
-    // One field of view at a time, for the progress bar (the whole sweep
-    // takes seconds at the default grid).
-    std::vector<SweepRow> rows;
-    Progress progress("plan --sweep", "fields of view", 23, !a.json);
-    for (int i = 0; i <= 22; ++i) {
-      const double fov = 10.0 + 5.0 * i;
-      for (SweepRow& r : fov_sweep(fov, fov, 5.0, a.step, a.max_grid)) rows.push_back(std::move(r));
-      progress.step(format_number(fov) + " deg");
-    }
-    write_file_atomic(a.sweep, ext == ".csv" ? sweep_csv(rows) : sweep_svg(rows));
-    if (a.json) {
-      nlohmann::json j = {{"file", a.sweep}, {"rows", nlohmann::json::array()}};
-      for (const SweepRow& r : rows) {
-        nlohmann::json row = {{"fov_deg", r.fov_deg},
-                              {"display_width_px", r.display_width_px},
-                              {"native_pixels", r.native_pixels}};
-        for (size_t v = 0; v < sweep_variants().size(); ++v) {
-          const std::string n = sweep_variants()[v].name;
-          row["speedup_A_n" + n] = r.speedup_a[v];
-          row["speedup_B_n" + n] = r.speedup_b[v];
-          row["pixels_A_n" + n] = r.pixels_a[v];
-          row["pixels_B_n" + n] = r.pixels_b[v];
-        }
-        j["rows"].push_back(row);
-      }
-      std::cout << j.dump(2) << '\n';
-      return;
-    }
+  // One field of view at a time, for the progress bar (the whole sweep
+  // takes seconds at the default grid).
+  std::vector<SweepRow> rows;
+  Progress progress("plan --sweep", "fields of view", 23, !a.json);
+  for (int i = 0; i <= 22; ++i) {
+    const double fov = 10.0 + 5.0 * i;
+    for (SweepRow& r : fov_sweep(fov, fov, 5.0, a.step, a.max_grid)) rows.push_back(std::move(r));
+    progress.step(format_number(fov) + " deg");
+  }
+  write_file_atomic(a.sweep, ext == ".csv" ? sweep_csv(rows) : sweep_svg(rows));
+  if (!a.json) {
     std::cout << "wrote " << a.sweep << " (" << rows.size() << " fields of view, 10-120 deg)\n";
     return;
   }
+  nlohmann::json j = {{"file", a.sweep}, {"rows", nlohmann::json::array()}};
+  for (const SweepRow& r : rows) {
+    nlohmann::json row = {{"fov_deg", r.fov_deg},
+                          {"display_width_px", r.display_width_px},
+                          {"native_pixels", r.native_pixels}};
+    for (size_t v = 0; v < sweep_variants().size(); ++v) {
+      const std::string n = sweep_variants()[v].name;
+      row["speedup_A_n" + n] = r.speedup_a[v];
+      row["speedup_B_n" + n] = r.speedup_b[v];
+      row["pixels_A_n" + n] = r.pixels_a[v];
+      row["pixels_B_n" + n] = r.pixels_b[v];
+    }
+    j["rows"].push_back(row);
+  }
+  std::cout << j.dump(2) << '\n';
+}
 
+// A plan for one display and gaze, and the same display's plan without its
+// lens (where it has one).
+struct GazePlan {
+  Display display;
+  AcuityModel acuity;
+  Vec2d gaze;
+  LayerPlan plan;
+  std::optional<LayerPlan> without_lens;
+
+  // Where layer i lands on the screen for this gaze (inner layers are
+  // squares centred on the gaze; the outer layer is the whole screen).
+  [[nodiscard]] std::array<double, 4> screen_rect(size_t i) const {
+    const Layer& L = plan.layers[i];
+    if (i + 1 == plan.layers.size())
+      return std::array<double, 4>{0, 0, double(display.width_px), double(display.height_px)};
+    const double half = 0.5 * L.width_px * L.sampling_factor;
+    return std::array<double, 4>{gaze.x - half, gaze.y - half, gaze.x + half, gaze.y + half};
+  }
+};
+
+GazePlan make_gaze_plan(const PlanArgs& a) {
   Display display = Display::load(a.display);
   {
     const PixelSize sz = parse_size(a.size, "--size");
     display = display.resized(sz.width, sz.height);
   }
-  const AcuityModel acuity = bench::acuity_from(a.quality, a.slope);
+  const AcuityModel acuity = bench::acuity_from(a.acuity_preset, a.slope);
   note_savings(display, acuity);
   PlannerOptions opt;
   opt.layers = a.layers;
@@ -175,46 +191,39 @@ void run_plan(const PlanArgs& a) {
                          : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
   // Through a lens the plan depends on the gaze (without --gaze: any gaze).
   if (!a.gaze.empty()) opt.gaze = gaze;
-  const LayerPlan plan = plan_layers(display, acuity, opt);
-  std::optional<LayerPlan> free;
+  GazePlan g{display, acuity, gaze, plan_layers(display, acuity, opt), std::nullopt};
   if (display.lens) {
     Display bare = display;
     bare.lens.reset();
-    free = plan_layers(bare, acuity, opt);
+    g.without_lens = plan_layers(bare, acuity, opt);
   }
+  return g;
+}
 
-  // Where each layer lands on the screen for this gaze (inner layers are squares
-  // centred on the gaze; the outer layer is the whole screen).
-  auto rect = [&](size_t i) {
-    const Layer& L = plan.layers[i];
-    if (i + 1 == plan.layers.size())
-      return std::array<double, 4>{0, 0, double(display.width_px), double(display.height_px)};
-    const double half = 0.5 * L.width_px * L.sampling_factor;
-    return std::array<double, 4>{gaze.x - half, gaze.y - half, gaze.x + half, gaze.y + half};
-  };
-
-  if (a.json) {
-    nlohmann::json j = plan;
-    j["gaze_px"] = {gaze.x, gaze.y};
-    if (free) {
-      const Oversampling o = display.lens_oversampling(gaze);
-      nlohmann::json s = nlohmann::json::array();
-      for (const Layer& L : free->layers) s.push_back(L.sampling_factor);
-      j["lens"] = {{"planned_for", a.gaze.empty() ? "any gaze" : "this gaze"},
-                   {"oversampling_at_gaze", {{"radial", o.radial}, {"tangential", o.tangential}}},
-                   {"without_lens",
-                    {{"sampling_factors", s},
-                     {"total_pixels", free->total_pixels},
-                     {"pixel_ratio", free->pixel_ratio()}}}};
-    }
-    for (size_t i = 0; i < plan.layers.size(); ++i) {
-      const auto r = rect(i);
-      j["layers"][i]["screen_rect_px"] = {r[0], r[1], r[2], r[3]};
-    }
-    std::cout << j.dump(2) << '\n';
-    return;
+void print_plan_json(const PlanArgs& a, const GazePlan& g) {
+  nlohmann::json j = g.plan;
+  j["gaze_px"] = {g.gaze.x, g.gaze.y};
+  if (g.without_lens) {
+    const Oversampling o = g.display.lens_oversampling(g.gaze);
+    nlohmann::json s = nlohmann::json::array();
+    for (const Layer& L : g.without_lens->layers) s.push_back(L.sampling_factor);
+    j["lens"] = {{"planned_for", a.gaze.empty() ? "any gaze" : "this gaze"},
+                 {"oversampling_at_gaze", {{"radial", o.radial}, {"tangential", o.tangential}}},
+                 {"without_lens",
+                  {{"sampling_factors", s},
+                   {"total_pixels", g.without_lens->total_pixels},
+                   {"pixel_ratio", g.without_lens->pixel_ratio()}}}};
   }
+  for (size_t i = 0; i < g.plan.layers.size(); ++i) {
+    const auto r = g.screen_rect(i);
+    j["layers"][i]["screen_rect_px"] = {r[0], r[1], r[2], r[3]};
+  }
+  std::cout << j.dump(2) << '\n';
+}
 
+void print_plan(const PlanArgs& a, const GazePlan& g) {
+  const LayerPlan& plan = g.plan;
+  const AcuityModel& acuity = g.acuity;
   const Display& d = plan.display;
   std::cout << "display " << d.name << ": " << d.width_px << 'x' << d.height_px;
   if (d.head_mounted()) {
@@ -230,15 +239,15 @@ void run_plan(const PlanArgs& a) {
             << " %\n";
   std::cout << "acuity: w(e) = " << format_fixed(acuity.slope, 4) << " e + "
             << format_fixed(acuity.w0_deg, 4) << " deg";
-  if (acuity.slope == kSlopeQualityA) std::cout << " (quality A)";
-  if (acuity.slope == kSlopeQualityB) std::cout << " (quality B)";
-  std::cout << "\ngaze at (" << format_fixed(gaze.x, 1) << ", " << format_fixed(gaze.y, 1)
+  if (acuity.slope == kSlopePresetA) std::cout << " (acuity preset A)";
+  if (acuity.slope == kSlopePresetB) std::cout << " (acuity preset B)";
+  std::cout << "\ngaze at (" << format_fixed(g.gaze.x, 1) << ", " << format_fixed(g.gaze.y, 1)
             << ") px\n\n";
   std::printf("%-6s %11s %11s %9s %13s %11s  %s\n", "layer", "radius deg", "radius px", "s_i",
               "target px", "pixels", "on screen (x0,y0)-(x1,y1)");
   for (size_t i = 0; i < plan.layers.size(); ++i) {
     const Layer& L = plan.layers[i];
-    const auto r = rect(i);
+    const auto r = g.screen_rect(i);
     const std::string sz = std::to_string(L.width_px) + "x" + std::to_string(L.height_px);
     std::printf("%-6zu %11.2f %11.1f %9.3f %13s %11.0f  (%.0f,%.0f)-(%.0f,%.0f)%s\n", i + 1,
                 L.radius_deg, L.radius_px, L.sampling_factor, sz.c_str(), L.pixels, r[0], r[1],
@@ -248,16 +257,34 @@ void run_plan(const PlanArgs& a) {
               plan.total_pixels);
   std::printf("pixel ratio P*/P = %.2fx; with outer layers at half rate = %.2fx\n",
               plan.pixel_ratio(), plan.pixel_ratio_half_rate());
-  if (free) {
+  if (g.without_lens) {
+    const LayerPlan& free = *g.without_lens;
     std::printf("\nthrough the lens (panel %dx%d), planned for %s: %s\n",
-                display.lens->panel_width_px, display.lens->panel_height_px,
+                g.display.lens->panel_width_px, g.display.lens->panel_height_px,
                 a.gaze.empty() ? "any gaze (--gaze plans for one)" : "this gaze",
-                lens_at_gaze(display, gaze).c_str());
+                lens_at_gaze(g.display, g.gaze).c_str());
     std::printf("without the lens:");
-    for (const Layer& L : free->layers) std::printf(" s = %.3f", L.sampling_factor);
+    for (const Layer& L : free.layers) std::printf(" s = %.3f", L.sampling_factor);
     std::printf(", P = %.0f, P*/P = %.2fx (the lens saves %.1f %% of the layer pixels)\n",
-                free->total_pixels, free->pixel_ratio(),
-                100.0 * (1.0 - plan.total_pixels / free->total_pixels));
+                free.total_pixels, free.pixel_ratio(),
+                100.0 * (1.0 - plan.total_pixels / free.total_pixels));
+  }
+}
+
+void run_plan(const PlanArgs& a) {
+  if (a.max_grid < 1 || a.max_grid > 1000000) {
+    throw Error("--max-grid: expected 1..1000000 candidate radii, got " +
+                std::to_string(a.max_grid));
+  }
+  if (!a.sweep.empty()) {
+    run_sweep(a);
+    return;
+  }
+  const GazePlan g = make_gaze_plan(a);
+  if (a.json) {
+    print_plan_json(a, g);
+  } else {
+    print_plan(a, g);
   }
 }
 
@@ -275,7 +302,7 @@ void register_plan(CLI::App& app) {
                       ") or JSON file; through a lens (hmd-rift-dk1, hmd-quest2-lens) no layer "
                       "samples finer than the panel shows")
       ->capture_default_str();
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre (with a "

@@ -31,7 +31,7 @@ struct RatesArgs {
   std::string out;
   std::string preview;
   std::string size;
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   std::optional<double> margin;
   double latency_ms = 0.0;
@@ -110,7 +110,8 @@ Image preview(const ShadingRateImage& m, Vec2d gaze) {
   return img;
 }
 
-void run_rates(const RatesArgs& a) {
+// The options' values checked, and the encoding asked for.
+RateApi checked_api(const RatesArgs& a) {
   const std::string ext = std::filesystem::path(a.out).extension().string();
   if (ext != ".bin" && ext != ".json") {
     throw Error("--out: the file must end in .bin or .json, got '" + a.out + "'");
@@ -129,123 +130,152 @@ void run_rates(const RatesArgs& a) {
   if (a.tile != 8 && a.tile != 16 && a.tile != 32) {
     throw Error("--tile: expected 8, 16 or 32 pixels, got " + std::to_string(a.tile));
   }
-  RateApi api;
   try {
-    api = parse_rate_api(a.api);
+    return parse_rate_api(a.api);
   } catch (const Error& e) {
     throw Error(std::string("--api: ") + e.what());
   }
+}
+
+// The rate image for the options, and what goes with it in the outputs.
+struct RatesPlan {
+  RateApi api{};
   ShadingRateOptions opt;
-  opt.tile_px = a.tile;
-  opt.origin_bottom_left = api == RateApi::GlNv;
-  opt.latency_margin_deg = a.latency_ms * a.max_saccade / 1000.0;
+  Display display;
+  AcuityModel judged;   ///< the acuity the rates are judged by
+  double margin = 1.0;  ///< vrs's planning margin
+  Vec2d gaze;
+  ShadingRateImage m;
+  std::vector<std::uint8_t> bytes;  ///< m encoded for `api`
+  /// Through a lens: the same rates without it, to show what the panel
+  /// relaxed, and how many tiles it made coarser.
+  std::optional<ShadingRateImage> without_lens;
+  int coarser = 0;
+};
+
+RatesPlan make_rates_plan(const RatesArgs& a) {
+  RatesPlan p;
+  p.api = checked_api(a);
+  p.opt.tile_px = a.tile;
+  p.opt.origin_bottom_left = p.api == RateApi::GlNv;
+  p.opt.latency_travel_deg = a.latency_ms * a.max_saccade / 1000.0;
   if (!a.rates.empty()) {
     try {
-      opt.supported = parse_shading_rates(a.rates);
+      p.opt.supported = parse_shading_rates(a.rates);
     } catch (const Error& e) {
       throw Error(std::string("--rates: ") + e.what());
     }
   }
-  Display display = Display::load(a.display);
+  p.display = Display::load(a.display);
   if (!a.size.empty()) {
     const PixelSize sz = parse_size(a.size, "--size");
-    display = display.resized(sz.width, sz.height);
+    p.display = p.display.resized(sz.width, sz.height);
   }
-  const AcuityModel judged = bench::acuity_from(a.quality, a.slope);
+  p.judged = bench::acuity_from(a.acuity_preset, a.slope);
   // The vrs technique's plan: --margin, else its own planning margin.
   TechniqueConfig vrs;
-  vrs.display = display;
-  vrs.acuity = judged;
+  vrs.display = p.display;
+  vrs.acuity = p.judged;
   if (a.margin) bench::check_margin(*a.margin);
   vrs.margin = a.margin;
-  const double margin = resolve_parameters(technique_info("vrs"), vrs).real(kPlanMarginKey);
-  const AcuityModel acuity = judged.finer(margin);
-  const Vec2d gaze = a.gaze.empty()
-                         ? display.principal_point()
-                         : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
-  const ShadingRateImage m = shading_rate_image(display, acuity, gaze, opt);
-  const std::vector<std::uint8_t> bytes = m.encode(api);
-  // Through a lens: the same rates without it, to show what the panel relaxed.
-  std::optional<ShadingRateImage> free;
-  int coarser = 0;
-  if (display.lens) {
-    Display bare = display;
+  p.margin = resolve_parameters(technique_info("vrs"), vrs).real(kPlanMarginKey);
+  const AcuityModel acuity = p.judged.finer(p.margin);
+  p.gaze = a.gaze.empty() ? p.display.principal_point()
+                          : parse_point(a.gaze, p.display.width_px, p.display.height_px, "--gaze");
+  p.m = shading_rate_image(p.display, acuity, p.gaze, p.opt);
+  p.bytes = p.m.encode(p.api);
+  if (p.display.lens) {
+    Display bare = p.display;
     bare.lens.reset();
-    free = shading_rate_image(bare, acuity, gaze, opt);
-    for (size_t i = 0; i < m.rates.size(); ++i)
-      coarser += m.rates[i].pixels() > free->rates[i].pixels();
+    p.without_lens = shading_rate_image(bare, acuity, p.gaze, p.opt);
+    for (size_t i = 0; i < p.m.rates.size(); ++i)
+      p.coarser += p.m.rates[i].pixels() > p.without_lens->rates[i].pixels();
   }
+  return p;
+}
 
-  if (ext == ".bin") {
-    write_file_atomic(a.out,
-                      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-  } else {
-    nlohmann::json j;
-    j["size"] = {m.width_px, m.height_px};
-    j["tile"] = m.tile_px;
-    j["tiles"] = {m.tiles_x, m.tiles_y};
-    j["api"] = rate_api_name(api);
-    j["row_order"] = m.origin_bottom_left ? "bottom-to-top" : "top-to-bottom";
-    j["display"] = display;
-    j["gaze_px"] = {gaze.x, gaze.y};
-    j["acuity"] = {{"slope", judged.slope}, {"w0_deg", judged.w0_deg}};
-    j["margin"] = margin;
-    j["latency_margin_deg"] = opt.latency_margin_deg;
-    nlohmann::json legend = nlohmann::json::array();
-    for (ShadingRate r : opt.supported) {
-      nlohmann::json e = {{"rate", r.name()},
-                          {"value", encode_shading_rate(r, api)},
-                          {"fraction", m.fraction(r)},
-                          {"colour", hex_colour(rate_index(r))}};
-      if (api == RateApi::GlNv) e["gl_enum"] = gl_nv_palette()[rate_index(r)];
-      legend.push_back(e);
-    }
-    j["legend"] = legend;
-    nlohmann::json grid = nlohmann::json::array();
-    for (int ty = 0; ty < m.tiles_y; ++ty) {
-      nlohmann::json row = nlohmann::json::array();
-      for (int tx = 0; tx < m.tiles_x; ++tx) row.push_back(bytes[size_t(ty) * m.tiles_x + tx]);
-      grid.push_back(row);
-    }
-    j["grid"] = grid;
-    j["shaded_samples"] = m.shaded_samples();
-    j["pixel_ratio"] = m.pixel_ratio();
-    if (free) {
-      const Oversampling o = display.lens_oversampling(gaze);
-      j["lens"] = {{"oversampling_at_gaze", {{"radial", o.radial}, {"tangential", o.tangential}}},
-                   {"tiles_coarser_than_without_lens", coarser},
-                   {"pixel_ratio_without_lens", free->pixel_ratio()}};
-    }
-    write_file_atomic(a.out, j.dump(1) + "\n");
+nlohmann::json rates_json(const RatesPlan& p) {
+  const ShadingRateImage& m = p.m;
+  nlohmann::json j;
+  j["size"] = {m.width_px, m.height_px};
+  j["tile"] = m.tile_px;
+  j["tiles"] = {m.tiles_x, m.tiles_y};
+  j["api"] = rate_api_name(p.api);
+  j["row_order"] = m.origin_bottom_left ? "bottom-to-top" : "top-to-bottom";
+  j["display"] = p.display;
+  j["gaze_px"] = {p.gaze.x, p.gaze.y};
+  j["acuity"] = {{"slope", p.judged.slope}, {"w0_deg", p.judged.w0_deg}};
+  j["margin"] = p.margin;
+  j["latency_margin_deg"] = p.opt.latency_travel_deg;
+  nlohmann::json legend = nlohmann::json::array();
+  for (ShadingRate r : p.opt.supported) {
+    nlohmann::json e = {{"rate", r.name()},
+                        {"value", encode_shading_rate(r, p.api)},
+                        {"fraction", m.fraction(r)},
+                        {"colour", hex_colour(rate_index(r))}};
+    if (p.api == RateApi::GlNv) e["gl_enum"] = gl_nv_palette()[rate_index(r)];
+    legend.push_back(e);
   }
-  if (!a.preview.empty()) write_png(a.preview, preview(m, gaze));
+  j["legend"] = legend;
+  nlohmann::json grid = nlohmann::json::array();
+  for (int ty = 0; ty < m.tiles_y; ++ty) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int tx = 0; tx < m.tiles_x; ++tx) row.push_back(p.bytes[size_t(ty) * m.tiles_x + tx]);
+    grid.push_back(row);
+  }
+  j["grid"] = grid;
+  j["shaded_samples"] = m.shaded_samples();
+  j["pixel_ratio"] = m.pixel_ratio();
+  if (p.without_lens) {
+    const Oversampling o = p.display.lens_oversampling(p.gaze);
+    j["lens"] = {{"oversampling_at_gaze", {{"radial", o.radial}, {"tangential", o.tangential}}},
+                 {"tiles_coarser_than_without_lens", p.coarser},
+                 {"pixel_ratio_without_lens", p.without_lens->pixel_ratio()}};
+  }
+  return j;
+}
 
-  std::cout << "display " << display.name << " " << display.width_px << 'x' << display.height_px
-            << ", gaze (" << format_fixed(gaze.x, 1) << ", " << format_fixed(gaze.y, 1)
-            << ") px, acuity w(e) = " << format_fixed(judged.slope, 4) << " e + "
-            << format_fixed(judged.w0_deg, 4) << " deg planned with margin "
-            << format_fixed(margin, 3);
-  if (opt.latency_margin_deg > 0.0) {
-    std::cout << ", latency margin " << format_fixed(opt.latency_margin_deg, 2) << " deg";
+void print_rates(const RatesArgs& a, const RatesPlan& p) {
+  const ShadingRateImage& m = p.m;
+  std::cout << "display " << p.display.name << " " << p.display.width_px << 'x'
+            << p.display.height_px << ", gaze (" << format_fixed(p.gaze.x, 1) << ", "
+            << format_fixed(p.gaze.y, 1)
+            << ") px, acuity w(e) = " << format_fixed(p.judged.slope, 4) << " e + "
+            << format_fixed(p.judged.w0_deg, 4) << " deg planned with margin "
+            << format_fixed(p.margin, 3);
+  if (p.opt.latency_travel_deg > 0.0) {
+    std::cout << ", latency margin " << format_fixed(p.opt.latency_travel_deg, 2) << " deg";
   }
   std::cout << "\n"
             << m.tiles_x << 'x' << m.tiles_y << " tiles of " << m.tile_px << " px, "
-            << rate_api_name(api) << " encoding, rows "
+            << rate_api_name(p.api) << " encoding, rows "
             << (m.origin_bottom_left ? "bottom-to-top" : "top-to-bottom") << "\n\n";
   std::printf("%-5s %6s %10s\n", "rate", "value", "pixels");
-  for (ShadingRate r : opt.supported) {
-    std::printf("%-5s %6d %9.1f%%\n", r.name().c_str(), encode_shading_rate(r, api),
+  for (ShadingRate r : p.opt.supported) {
+    std::printf("%-5s %6d %9.1f%%\n", r.name().c_str(), encode_shading_rate(r, p.api),
                 100.0 * m.fraction(r));
   }
   std::printf("\nshaded samples / native pixels = %.4f (%.2fx fewer invocations)\n",
               m.pixel_ratio(), 1.0 / m.pixel_ratio());
-  if (free) {
+  if (p.without_lens) {
     std::printf("through the lens: %s; %d tiles coarser than without the lens (%.4f without it)\n",
-                lens_at_gaze(display, gaze).c_str(), coarser, free->pixel_ratio());
+                lens_at_gaze(p.display, p.gaze).c_str(), p.coarser, p.without_lens->pixel_ratio());
   }
   std::cout << "wrote " << a.out;
   if (!a.preview.empty()) std::cout << " and " << a.preview;
   std::cout << '\n';
+}
+
+void run_rates(const RatesArgs& a) {
+  const RatesPlan p = make_rates_plan(a);
+  if (std::filesystem::path(a.out).extension() == ".bin") {
+    write_file_atomic(
+        a.out, std::string_view(reinterpret_cast<const char*>(p.bytes.data()), p.bytes.size()));
+  } else {
+    write_file_atomic(a.out, rates_json(p).dump(1) + "\n");
+  }
+  if (!a.preview.empty()) write_png(a.preview, preview(p.m, p.gaze));
+  print_rates(a, p);
 }
 
 }  // namespace
@@ -272,7 +302,7 @@ void register_rates(CLI::App& app) {
   sub->add_option("--out", a->out, "Output: FILE.bin (one byte per tile) or FILE.json")->required();
   sub->add_option("--preview", a->preview, "Also write a PNG: a colour per rate and a legend");
   sub->add_option("--size", a->size, "Render at WxH with the display's geometry (field of view)");
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--margin", a->margin,
                   "Plan for an acuity this many times finer (1 to 4; 1 = two samples per MAR "
                   "cycle of the model itself); default: the vrs technique's own planning margin, "

@@ -15,7 +15,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
-#include "foveate/techniques/reference.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 #include "messages.hpp"
 #include "output_dir.hpp"
 #include "process_stats.hpp"
@@ -117,7 +117,7 @@ class RenderRun {
 
  private:
   void frame(int k, bench::VideoWriter* video) {
-    const GazeState gaze = session_.gaze().at(session_.renderer().frame_input(k).time_s);
+    const GazeState gaze = session_.gaze().at(session_.frame_runner().frame_input(k).time_s);
     Image native_image;
     if (native_.view) {
       session_.watchdog().run("frame " + std::to_string(k) + " (native)",
@@ -158,7 +158,7 @@ class RenderRun {
     return session_.watchdog().run(
         "frame " + std::to_string(k) + " of the ssaa:" + std::to_string(s_.reference) +
             " reference",
-        [&] { return supersampled_->render(session_.renderer().frame_input(k)); },
+        [&] { return supersampled_->render(session_.frame_runner().frame_input(k)); },
         double(s_.reference) * s_.reference);
   }
 
@@ -176,7 +176,7 @@ class RenderRun {
   const RenderSetup& s_;
   bench::Session session_;
   bench::SessionTechnique technique_, native_;
-  std::unique_ptr<bench::ReferenceScene> supersampled_;
+  std::unique_ptr<bench::SupersampledScene> supersampled_;
   Totals totals_;
 };
 

@@ -12,7 +12,7 @@
 #include "commands.hpp"
 #include "foveate/bench/tune.hpp"
 #include "foveate/core/error.hpp"
-#include "foveate/techniques/reference.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 #include "invocation.hpp"
 #include "messages.hpp"
 #include "output_dir.hpp"
@@ -31,13 +31,14 @@ struct TuneArgs {
   std::string size = kDefaultSize;
   std::string display = bench::SessionOptions{}.display;
   PhotometryOverrides photometry;
-  std::string quality;
+  std::string acuity_preset;
   std::optional<double> slope;
   std::string gaze;
   double fps = bench::SessionOptions{}.fps;
   int frames = bench::TuneOptions::default_bench().frames;
   int warmup = bench::TuneOptions::default_bench().warmup;
   std::string reference = "ssaa:4";
+  bool grid = false;
   std::string shard;
   std::string out = "tune-out";
   bool json = false;
@@ -61,13 +62,14 @@ bench::TuneOptions to_options(const TuneArgs& a) {
   s.size = parse_size(a.size, "--size");
   s.display = a.display;
   s.photometry = a.photometry;
-  s.acuity = bench::acuity_from(a.quality, a.slope);
+  s.acuity = bench::acuity_from(a.acuity_preset, a.slope);
   s.gaze = a.gaze;
   s.fps = a.fps;
   o.bench.frames = a.frames;
   o.bench.warmup = a.warmup;
   o.bench.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.bench.command = invocation();
+  o.grid = a.grid;
   if (!a.shard.empty()) o.shard = parse_shard(a.shard, "--shard");
   bench::validate(o);
   return o;
@@ -132,7 +134,7 @@ void register_tune(CLI::App& app) {
                   "Display preset (" + Display::preset_names() + ") or JSON file")
       ->capture_default_str();
   add_photometry_flags(*sub, a->photometry);
-  add_acuity_options(sub, a->quality, a->slope);
+  add_acuity_options(sub, a->acuity_preset, a->slope);
   sub->add_option("--gaze", a->gaze, "Gaze source (default the centre)");
   sub->add_option("--fps", a->fps, "Frame rate of the fixed clock")->capture_default_str();
   sub->add_option("--frames", a->frames, "Measured frames per candidate (a moving camera)")
@@ -141,6 +143,9 @@ void register_tune(CLI::App& app) {
   sub->add_option("--reference", a->reference,
                   "What JOD is judged against: ssaa[:N] (native with NxN supersampling) or native")
       ->capture_default_str();
+  sub->add_flag("--grid", a->grid,
+                "Evaluate the fixed grid (every margin crossed with one other parameter changed "
+                "at a time) instead of the staged search, as shards do");
   sub->add_option("--shard", a->shard,
                   "Run job K of N (K/N) of a fixed grid of candidates; 'foveate merge' joins the "
                   "jobs' --out folders");

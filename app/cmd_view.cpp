@@ -71,7 +71,7 @@ void run_view(const ViewArgs& a) {
   callbacks.mouse = [&]() -> std::optional<Vec2d> { return mouse; };
   bench::Session session(o, callbacks);
   gpu::Window& window = *session.window();
-  Viewer view(session, a.technique, params, a.session.quality, a.session.slope);
+  Viewer view(session, a.technique, params, a.session.acuity_preset, a.session.slope);
   view.set_overlay(a.overlay);
   Ui ui(window);
   std::fprintf(stderr, "foveate view: keys %s; techniques:", kKeys);
@@ -125,7 +125,7 @@ void run_view(const ViewArgs& a) {
       mouse.reset();
     }
     const GazeState gaze = session.gaze().at(wall);
-    FrameInput input = session.renderer().frame_input(frame);
+    FrameInput input = session.frame_runner().frame_input(frame);
     input.time_s = o.start_time_s + wall;  // the viewer runs on the wall clock
     session.watchdog().run("frame " + std::to_string(frame) + " (" + view.technique().name() + ")",
                            [&] { view.render_frame(input, gaze, wall); });
@@ -155,14 +155,15 @@ void register_view(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
   CLI::App* sub = app.add_subcommand(
       "view", "Live window with a control panel: the gaze follows the mouse over the image");
-  sub->footer(std::string("Keys: ") + kKeys +
-              ".\nThe panel beside the image: technique; a slider per parameter with its range "
-              "and unit (hover for its meaning; Ctrl+click to type; * = set by you or --param, "
-              "kept across technique switches); quality A/B and MAR slope; display; show native "
-              "or split screen (native left, foveated right, drag the divider); frame time, "
-              "native sampled once a second on the same frame and the speedup; the share of "
-              "pixels shaded; what each overlay colour marks; the gaze source and filter.\n\n" +
-              viewer::Script::help() + "\n");
+  sub->footer(
+      std::string("Keys: ") + kKeys +
+      ".\nThe panel beside the image: technique; a slider per parameter with its range "
+      "and unit (hover for its meaning; Ctrl+click to type; * = set by you or --param, "
+      "kept across technique switches); acuity preset A/B and MAR slope; display; show native "
+      "or split screen (native left, foveated right, drag the divider); frame time, "
+      "native sampled once a second on the same frame and the speedup; the share of "
+      "pixels shaded; what each overlay colour marks; the gaze source and filter.\n\n" +
+      viewer::Script::help() + "\n");
   add_session_options(sub, a->session, false, "now", true);
   sub->get_option("--gaze")->description(
       std::string("Gaze source; default the mouse over the image. ") + gaze::gaze_spec_help());

@@ -11,7 +11,9 @@ namespace foveate::app {
 
 std::string flag_for(const std::string& field) {
   static const std::map<std::string, std::string> flags = {
+      {"acuity_preset", "--acuity"},
       {"allow_fallback", "--allow-fallback"},
+      {"bound_jod", "--bound"},
       {"camera_path", "--camera-path"},
       {"channels", "--channel"},
       {"display", "--display"},
@@ -27,9 +29,10 @@ std::string flag_for(const std::string& field) {
       {"photometry.contrast_ratio", "--contrast-ratio"},
       {"photometry.peak_cd_m2", "--peak-luminance"},
       {"photometry.reflectivity", "--reflectivity"},
-      {"quality", "--quality"},
       {"reference", "--reference"},
       {"scene", "--scene"},
+      {"scenes", "--scenes"},
+      {"shard", "--shard"},
       {"side_by_side", "--side-by-side"},
       {"size", "--size"},
       {"slope", "--slope"},

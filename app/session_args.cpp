@@ -52,12 +52,12 @@ bench::ParamOverrides session_params(const SessionArgs& a) {
   return out;
 }
 
-void add_acuity_options(CLI::App* sub, std::string& quality, std::optional<double>& slope) {
-  sub->add_option("--quality", quality,
-                  "Acuity preset: A (m = 0.0275) or B (m = 0.0220); default A");
-  sub->add_option(
-      "--slope", slope,
-      "Custom MAR slope m in degrees per degree of eccentricity (instead of --quality)");
+void add_acuity_options(CLI::App* sub, std::string& preset, std::optional<double>& slope) {
+  sub->add_option("--acuity,--quality", preset,
+                  "Acuity preset of Guenter et al.'s user study: A (m = 0.0275) or B (m = "
+                  "0.0220); default A (--quality is the same option)");
+  sub->add_option("--slope", slope,
+                  "Custom MAR slope m in degrees per degree of eccentricity (instead of --acuity)");
 }
 
 namespace {
@@ -84,7 +84,7 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
                       ") or JSON file (its field of view is kept at --size)")
       ->capture_default_str();
   add_photometry_flags(*sub, a.photometry);
-  add_acuity_options(sub, a.quality, a.slope);
+  add_acuity_options(sub, a.acuity_preset, a.slope);
   sub->add_option("--margin", a.margin,
                   "Plan every technique for an acuity this many times finer (slope and foveal "
                   "MAR divided by it, 1 to 4) than the one the metrics judge by: 1 = each "
@@ -104,7 +104,7 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
 void add_clock_options(CLI::App* sub, SessionArgs& a, const char* default_date) {
   sub->add_option("--fps", a.fps, "Frame rate of the fixed clock (frame k is at time + k / fps)")
       ->capture_default_str();
-  sub->add_option("--time", a.time, "Scene time of the first frame in seconds")
+  sub->add_option("--time", a.start_time_s, "Scene time of the first frame in seconds")
       ->capture_default_str();
   sub->add_flag("--strict", a.strict,
                 "A gaze trace (--gaze trace:FILE) row that cannot be read is an error (default: "
@@ -168,11 +168,11 @@ bench::SessionOptions to_session_options(const SessionArgs& a, const char* defau
   o.size = parse_size(a.size, "--size");
   o.display = a.display;
   o.photometry = a.photometry;
-  o.acuity = bench::acuity_from(a.quality, a.slope);
+  o.acuity = bench::acuity_from(a.acuity_preset, a.slope);
   o.margin = a.margin;
   o.gaze = a.gaze;
   o.fps = a.fps;
-  o.start_time_s = a.time;
+  o.start_time_s = a.start_time_s;
   o.stereo = a.stereo;
   if (a.vergence == "inf") {
     o.vergence_m = std::numeric_limits<double>::infinity();

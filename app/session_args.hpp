@@ -23,7 +23,7 @@ struct SessionArgs {
   std::string size = kDefaultSize;
   std::string display = bench::SessionOptions{}.display;
   PhotometryOverrides photometry;
-  std::string quality;
+  std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   std::optional<double> margin;
   std::vector<std::string> params;
@@ -34,7 +34,7 @@ struct SessionArgs {
   std::string up;
   std::string model_memory_limit;
   double fps = bench::SessionOptions{}.fps;
-  double time = bench::SessionOptions{}.start_time_s;
+  double start_time_s = bench::SessionOptions{}.start_time_s;  ///< --time
   bool strict = false;
   double frame_timeout = bench::kDefaultFrameTimeoutS;
   std::string date;  ///< --date; empty = the command's default
@@ -42,16 +42,16 @@ struct SessionArgs {
   std::string vergence;  ///< --vergence; empty = parallel
 };
 
-/// Registers --scene --size --display --quality --slope --margin --param --gaze
+/// Registers --scene --size --display --acuity --slope --margin --param --gaze
 /// --camera-path --channel --up --model-memory-limit --fps --time --strict --frame-timeout --date
 /// on `sub`. `scene_required` makes --scene mandatory (render). `default_date` is what --date
 /// means when not given ("now" in view; a fixed date elsewhere, for determinism).
 /// `stereo` adds --stereo and --vergence (render, bench, view).
 void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required = false,
                          const char* default_date = kFixedDate, bool stereo = false);
-/// --quality and --slope, registered with one help text (the commands that
+/// --acuity (alias --quality) and --slope, registered with one help text (the commands that
 /// take an acuity model without a session).
-void add_acuity_options(CLI::App* sub, std::string& quality, std::optional<double>& slope);
+void add_acuity_options(CLI::App* sub, std::string& preset, std::optional<double>& slope);
 /// The typed options; an error in what the text says names the flag, and
 /// the library's check of the values names the field (main() writes it as
 /// its flag). An empty --date gives `default_date`.

@@ -91,6 +91,131 @@ int positive(const char* text, const char* what) {
   return static_cast<int>(v);
 }
 
+struct Row {
+  const char* method;
+  double ms;
+};
+
+// The passes and copies measured, over the targets they need: an sRGB output
+// as the techniques write, a full-resolution source and a layer of 1/scale
+// the size in three formats.
+class OutputFloor {
+ public:
+  OutputFloor(int width, int height, int scale)
+      : W_(width),
+        H_(height),
+        w_(std::max(1, width / scale)),
+        h_(std::max(1, height / scale)),
+        constant_(fullscreen(kConstant, "constant.frag")),
+        fetch_(fullscreen(kFetch, "fetch.frag")),
+        fetch4_(fullscreen(kFetch4, "fetch4.frag")),
+        texel_(fullscreen(kTexelFetch, "texel_fetch.frag")),
+        compute_(compiler_.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"copy.comp", kCompute}}}},
+                                 "copy")),
+        out_(gpu::RenderTarget::create(W_, H_)),                   // sRGB, as the output
+        same_(gpu::RenderTarget::create(W_, H_)),                  // a full-resolution source
+        low_(gpu::RenderTarget::create(w_, h_)),                   // a layer
+        low_half_(gpu::RenderTarget::create(w_, h_, GL_RGBA16F)),  // linear layer
+        low_unorm_(gpu::RenderTarget::create(w_, h_, GL_RGBA8)),   // no decode
+        linear8_(gpu::RenderTarget::create(W_, H_, GL_RGBA8)),     // image-storable
+        vao_(gpu::VertexArray::create()) {
+    low_.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    same_.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    low_half_.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    low_unorm_.clear(0.3f, 0.6f, 0.9f, 1.0f);
+    for (gpu::RenderTarget* t : {&low_, &low_half_, &low_unorm_})
+      t->color().set_filter(GL_LINEAR, GL_LINEAR);
+  }
+
+  [[nodiscard]] int layer_width() const { return w_; }
+  [[nodiscard]] int layer_height() const { return h_; }
+
+  std::vector<Row> passes(int repeats) {
+    std::vector<Row> rows;
+    rows.push_back(
+        {"clear (glClearNamedFramebufferfv)", median_ms([&] { out_.clear(0, 0, 0, 1); }, repeats)});
+    rows.push_back(
+        {"full-screen pass, constant colour", median_ms([&] { draw(constant_); }, repeats)});
+    rows.push_back({"full-screen pass, 1 bilinear fetch from the layer",
+                    median_ms([&] { draw(fetch_); }, repeats)});
+    rows.push_back({"full-screen pass, 1 texelFetch (nearest) from the layer",
+                    median_ms([&] { draw(texel_); }, repeats)});
+    source_ = &low_half_;
+    rows.push_back({"full-screen pass, 1 bilinear fetch from an RGBA16F layer",
+                    median_ms([&] { draw(fetch_); }, repeats)});
+    source_ = &low_unorm_;
+    rows.push_back({"full-screen pass, 1 bilinear fetch from an RGBA8 (UNORM) layer",
+                    median_ms([&] { draw(fetch_); }, repeats)});
+    source_ = &low_;
+    rows.push_back(
+        {"full-screen pass, 4 bilinear fetches", median_ms([&] { draw(fetch4_); }, repeats)});
+    return rows;
+  }
+
+  std::vector<Row> copies(int repeats) {
+    std::vector<Row> rows;
+    rows.push_back({"glBlitNamedFramebuffer, linear, layer -> output",
+                    median_ms(
+                        [&] {
+                          glBlitNamedFramebuffer(low_.framebuffer(), out_.framebuffer(), 0, 0, w_,
+                                                 h_, 0, 0, W_, H_, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+                        },
+                        repeats)});
+    rows.push_back({"glCopyImageSubData, full-resolution copy",
+                    median_ms(
+                        [&] {
+                          glCopyImageSubData(same_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                                             out_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, W_, H_,
+                                             1);
+                        },
+                        repeats)});
+    rows.push_back({"compute shader, 1 fetch + imageStore (RGBA8)",
+                    median_ms(
+                        [&] {
+                          compute_.use();
+                          glBindTextureUnit(0, low_.color().id());
+                          glBindImageTexture(0, linear8_.color().id(), 0, GL_FALSE, 0,
+                                             GL_WRITE_ONLY, GL_RGBA8);
+                          glDispatchCompute(static_cast<GLuint>((W_ + 7) / 8),
+                                            static_cast<GLuint>((H_ + 7) / 8), 1);
+                          glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+                        },
+                        repeats)});
+    return rows;
+  }
+
+ private:
+  gpu::Program fullscreen(const char* frag, const char* what) const {
+    return compiler_.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+                            gpu::StageSource{GL_FRAGMENT_SHADER, {{what, frag}}}},
+                           what);
+  }
+
+  void draw(const gpu::Program& p) {
+    out_.bind();
+    gpu::apply(gpu::PassState{});
+    p.use();
+    glBindTextureUnit(0, source_->color().id());
+    p.allow_missing({"u_source", "u_texel"});
+    p.set("u_source", 0);
+    if (p.uniform_if_present("u_texel") >= 0) {
+      if (&p == &texel_)
+        p.set("u_texel", float(w_) / float(W_), float(h_) / float(H_));
+      else
+        p.set("u_texel", 1.0f / float(w_), 1.0f / float(h_));
+    }
+    glBindVertexArray(vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  int W_, H_, w_, h_;
+  const gpu::ShaderCompiler compiler_;
+  const gpu::Program constant_, fetch_, fetch4_, texel_, compute_;
+  gpu::RenderTarget out_, same_, low_, low_half_, low_unorm_, linear8_;
+  const gpu::RenderTarget* source_ = &low_;
+  gpu::VertexArray vao_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -100,104 +225,14 @@ int main(int argc, char** argv) {
   const int repeats = argc > 4 ? positive(argv[4], "REPEATS") : 15;
   try {
     auto context = gpu::create_headless_context({});
-    const gpu::ShaderCompiler compiler;
-    auto fullscreen = [&](const char* frag, const char* what) {
-      return compiler.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
-                             gpu::StageSource{GL_FRAGMENT_SHADER, {{what, frag}}}},
-                            what);
-    };
-    const gpu::Program constant = fullscreen(kConstant, "constant.frag");
-    const gpu::Program fetch = fullscreen(kFetch, "fetch.frag");
-    const gpu::Program fetch4 = fullscreen(kFetch4, "fetch4.frag");
-    const gpu::Program texel = fullscreen(kTexelFetch, "texel_fetch.frag");
-    const gpu::Program compute =
-        compiler.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"copy.comp", kCompute}}}}, "copy");
-
-    const int w = std::max(1, W / scale), h = std::max(1, H / scale);
-    gpu::RenderTarget out = gpu::RenderTarget::create(W, H);   // sRGB, as the techniques' output
-    gpu::RenderTarget same = gpu::RenderTarget::create(W, H);  // a full-resolution source
-    gpu::RenderTarget low = gpu::RenderTarget::create(w, h);   // a layer
-    gpu::RenderTarget low_half = gpu::RenderTarget::create(w, h, GL_RGBA16F);  // linear layer
-    gpu::RenderTarget low_unorm = gpu::RenderTarget::create(w, h, GL_RGBA8);   // no decode
-    gpu::RenderTarget linear8 = gpu::RenderTarget::create(W, H, GL_RGBA8);     // image-storable
-    low.clear(0.3f, 0.6f, 0.9f, 1.0f);
-    same.clear(0.3f, 0.6f, 0.9f, 1.0f);
-    low_half.clear(0.3f, 0.6f, 0.9f, 1.0f);
-    low_unorm.clear(0.3f, 0.6f, 0.9f, 1.0f);
-    for (gpu::RenderTarget* t : {&low, &low_half, &low_unorm})
-      t->color().set_filter(GL_LINEAR, GL_LINEAR);
-    const gpu::RenderTarget* source = &low;
-    gpu::VertexArray vao = gpu::VertexArray::create();
-    auto draw = [&](const gpu::Program& p) {
-      out.bind();
-      gpu::apply(gpu::PassState{});
-      p.use();
-      glBindTextureUnit(0, source->color().id());
-      p.allow_missing({"u_source", "u_texel"});
-      p.set("u_source", 0);
-      if (p.uniform_if_present("u_texel") >= 0) {
-        if (&p == &texel)
-          p.set("u_texel", float(w) / float(W), float(h) / float(H));
-        else
-          p.set("u_texel", 1.0f / float(w), 1.0f / float(h));
-      }
-      glBindVertexArray(vao.id());
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-    };
-
-    struct Row {
-      const char* method;
-      double ms;
-    };
-    std::vector<Row> rows;
-    rows.push_back(
-        {"clear (glClearNamedFramebufferfv)", median_ms([&] { out.clear(0, 0, 0, 1); }, repeats)});
-    rows.push_back(
-        {"full-screen pass, constant colour", median_ms([&] { draw(constant); }, repeats)});
-    rows.push_back({"full-screen pass, 1 bilinear fetch from the layer",
-                    median_ms([&] { draw(fetch); }, repeats)});
-    rows.push_back({"full-screen pass, 1 texelFetch (nearest) from the layer",
-                    median_ms([&] { draw(texel); }, repeats)});
-    source = &low_half;
-    rows.push_back({"full-screen pass, 1 bilinear fetch from an RGBA16F layer",
-                    median_ms([&] { draw(fetch); }, repeats)});
-    source = &low_unorm;
-    rows.push_back({"full-screen pass, 1 bilinear fetch from an RGBA8 (UNORM) layer",
-                    median_ms([&] { draw(fetch); }, repeats)});
-    source = &low;
-    rows.push_back(
-        {"full-screen pass, 4 bilinear fetches", median_ms([&] { draw(fetch4); }, repeats)});
-    rows.push_back({"glBlitNamedFramebuffer, linear, layer -> output",
-                    median_ms(
-                        [&] {
-                          glBlitNamedFramebuffer(low.framebuffer(), out.framebuffer(), 0, 0, w, h,
-                                                 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-                        },
-                        repeats)});
-    rows.push_back({"glCopyImageSubData, full-resolution copy",
-                    median_ms(
-                        [&] {
-                          glCopyImageSubData(same.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                                             out.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, W, H, 1);
-                        },
-                        repeats)});
-    rows.push_back({"compute shader, 1 fetch + imageStore (RGBA8)",
-                    median_ms(
-                        [&] {
-                          compute.use();
-                          glBindTextureUnit(0, low.color().id());
-                          glBindImageTexture(0, linear8.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                                             GL_RGBA8);
-                          glDispatchCompute(static_cast<GLuint>((W + 7) / 8),
-                                            static_cast<GLuint>((H + 7) / 8), 1);
-                          glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
-                        },
-                        repeats)});
-
+    OutputFloor floor(W, H, scale);
+    std::vector<Row> rows = floor.passes(repeats);
+    for (Row& r : floor.copies(repeats)) rows.push_back(r);
     const auto* renderer = glGetString(GL_RENDERER);
     std::printf(
         "Output floor at %dx%d from a %dx%d layer on %s (median of %d, glFinish-bracketed)\n\n", W,
-        H, w, h, renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats);
+        H, floor.layer_width(), floor.layer_height(),
+        renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats);
     std::printf("| method | ms |\n|---|---:|\n");
     for (const Row& r : rows) std::printf("| %s | %.1f |\n", r.method, r.ms);
   } catch (const Error& e) {

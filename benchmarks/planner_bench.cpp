@@ -12,11 +12,15 @@ void plan(benchmark::State& state, const char* display) {
   foveate::PlannerOptions o;
   o.layers = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    benchmark::DoNotOptimize(foveate::plan_layers(d, foveate::AcuityModel::quality("A"), o));
+    benchmark::DoNotOptimize(foveate::plan_layers(d, foveate::AcuityModel::preset("A"), o));
   }
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(plan, desktop_1080p, "desktop-1080p")->DenseRange(2, 6)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(plan, desktop_27_4k, "desktop-27-4k")->DenseRange(2, 6)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plan, desktop_1080p, "desktop-1080p")
+    ->DenseRange(2, 6)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(plan, desktop_27_4k, "desktop-27-4k")
+    ->DenseRange(2, 6)
+    ->Unit(benchmark::kMillisecond);

@@ -11,7 +11,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
-#include "foveate/techniques/reference.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 
 namespace foveate::python {
 
@@ -91,17 +91,23 @@ py::dict result_dict(const bench::BenchResult& r, bool images) {
 
 py::dict run(const std::string& scene, std::optional<std::vector<std::string>> techniques,
              py::handle size, int frames, int warmup, const std::string& display,
-             const std::string& quality, std::optional<double> slope, std::optional<double> margin,
-             const py::dict& params, const std::string& gaze, const std::string& reference,
-             bool metrics, py::handle sweep, double fps, const std::string& out,
-             const std::string& video, bool side_by_side, bool images, bool stereo,
-             py::handle vergence, double frame_timeout_s) {
+             const std::string& acuity_preset, const std::string& quality,
+             std::optional<double> slope, std::optional<double> margin, const py::dict& params,
+             const std::string& gaze, const std::string& reference, bool metrics, py::handle sweep,
+             double fps, const std::string& out, const std::string& video, bool side_by_side,
+             bool images, bool stereo, py::handle vergence, double frame_timeout_s) {
   bench::BenchOptions o;
   keywords([&] {
     o.session.scene = scene;
     o.session.size = size_from(size);
     o.session.display = display;
-    o.session.acuity = bench::acuity_from(quality, slope);
+    if (!acuity_preset.empty() && !quality.empty()) {
+      throw bench::OptionError("quality",
+                               bench::FieldText{"{acuity_preset} and {quality} are one option "
+                                                "(quality its former name): give one",
+                                                {"acuity_preset", "quality"}});
+    }
+    o.session.acuity = bench::acuity_from(acuity_preset.empty() ? quality : acuity_preset, slope);
     o.session.margin = margin;
     o.session.gaze = gaze;
     o.session.fps = fps;
@@ -150,6 +156,7 @@ py::list technique_list(py::handle display, py::handle size, const AcuityModel& 
       pd["type"] = param_type_name(p.type);
       pd["min"] = p.min;
       pd["max"] = p.max;
+      pd["tune"] = p.tune;
       pd["default"] = values.real(p.key);
       ps.append(pd);
     }
@@ -184,8 +191,8 @@ void bind_bench(py::module_& m) {
   m.def("bench", &run, py::kw_only(), py::arg("scene") = "cheap",
         py::arg("techniques") = py::none(), py::arg("size") = "960x540",
         py::arg("frames") = defaults.frames, py::arg("warmup") = defaults.warmup,
-        py::arg("display") = defaults.session.display, py::arg("quality") = "",
-        py::arg("slope") = py::none(), py::arg("margin") = py::none(),
+        py::arg("display") = defaults.session.display, py::arg("acuity_preset") = "",
+        py::arg("quality") = "", py::arg("slope") = py::none(), py::arg("margin") = py::none(),
         py::arg("params") = py::dict(), py::arg("gaze") = "", py::arg("reference") = "native",
         py::arg("metrics") = defaults.image_metrics, py::arg("sweep") = py::none(),
         py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("video") = "",
@@ -201,8 +208,10 @@ in "skipped"). size "WxH" or (w, h); params {"layers": 3} or
 {"layered.layers": 3}; gaze a --gaze spec ("0.3,0.4", "synthetic:7",
 "trace:FILE"); reference "native" or "ssaa:4"; margin as --margin (plan every
 technique for an acuity that many times finer than the metrics'; None: each
-technique's own planning margin); sweep (key, from, to, step), e.g.
-("slope", 0.02, 0.03, 0.005) or ("margin", 1, 2, 0.5); out a folder for
+technique's own planning margin); acuity_preset "A" or "B" (Guenter et al.'s
+presets; quality= is the same, its former name) or slope a MAR slope; sweep
+(key, from, to, step), e.g. ("slope", 0.02, 0.03, 0.005) or
+("margin", 1, 2, 0.5); out a folder for
 results.json, .csv, .md, report.html; video a file (.mp4) of the frames.
 images=True adds each technique's last frame ("image", HxWx3 uint8) and
 "native_image". stereo=True renders both eyes of a stereo display

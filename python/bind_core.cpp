@@ -25,8 +25,11 @@ py::object as_dict(const T& value) {
 }
 
 void bind_acuity(py::module_& m) {
-  m.attr("SLOPE_QUALITY_A") = kSlopeQualityA;
-  m.attr("SLOPE_QUALITY_B") = kSlopeQualityB;
+  m.attr("SLOPE_PRESET_A") = kSlopePresetA;
+  m.attr("SLOPE_PRESET_B") = kSlopePresetB;
+  // The presets' former names.
+  m.attr("SLOPE_QUALITY_A") = kSlopePresetA;
+  m.attr("SLOPE_QUALITY_B") = kSlopePresetB;
   m.attr("FOVEAL_MAR_DEG") = kFovealMarDeg;
   py::class_<AcuityModel>(m, "AcuityModel",
                           "The MAR model of Guenter et al. 2012, eq. 1: w(e) = slope * e + w0_deg "
@@ -37,15 +40,18 @@ void bind_acuity(py::module_& m) {
              a.w0_deg = w0_deg;
              return a;
            }),
-           py::arg("slope") = kSlopeQualityA, py::arg("w0_deg") = kFovealMarDeg)
+           py::arg("slope") = kSlopePresetA, py::arg("w0_deg") = kFovealMarDeg)
       .def_readonly("slope", &AcuityModel::slope)
       .def_readonly("w0_deg", &AcuityModel::w0_deg)
       .def("mar_deg", py::vectorize(&AcuityModel::mar_deg), py::arg("eccentricity_deg"),
            "MAR in degrees per cycle at eccentricity e (degrees); numbers or numpy arrays.")
       .def("eccentricity_for_mar", py::vectorize(&AcuityModel::eccentricity_for_mar),
            py::arg("mar_deg"), "The eccentricity at which the MAR reaches w (0 when w <= w0).")
-      .def_static("quality", &AcuityModel::quality, py::arg("name"),
-                  "Quality preset 'A' (slope 0.0275) or 'B' (0.0220) of Guenter et al.")
+      .def_static("preset", &AcuityModel::preset, py::arg("name"),
+                  "Acuity preset 'A' (slope 0.0275) or 'B' (0.0220) of Guenter et al.'s user "
+                  "study")
+      .def_static("quality", &AcuityModel::preset, py::arg("name"),
+                  "preset's former name: AcuityModel.preset(name)")
       .def_static("with_slope", &AcuityModel::with_slope, py::arg("slope"))
       .def("__repr__", [](const AcuityModel& a) {
         std::ostringstream s;
@@ -200,7 +206,7 @@ void bind_planner(py::module_& m) {
       py::arg("fov_from_deg") = 10.0, py::arg("fov_to_deg") = 120.0, py::arg("fov_step_deg") = 5.0,
       py::arg("grid_step_deg") = 0.05,
       "Figures 12-13 of Guenter et al.: predicted speedup against field of view per variant "
-      "('2', '3', '4', '3*' layers) for quality A and B");
+      "('2', '3', '4', '3*' layers) for acuity presets A and B");
 }
 
 void bind_models(py::module_& m) {

@@ -49,8 +49,10 @@ std::vector<Image> frames_of(py::handle array, const std::string& what) {
   if (!a) throw py::type_error(what + ": expected a numpy array");
   if (a.ndim() == 3) return {image_from_array(a, what)};
   if (a.ndim() != 4) {
-    throw py::value_error(what + ": expected HxWx3 or HxWx4 (an image) or FxHxWx3 or FxHxWx4 "
-                                 "(a sequence), got " + std::to_string(a.ndim()) + " dimensions");
+    throw py::value_error(what +
+                          ": expected HxWx3 or HxWx4 (an image) or FxHxWx3 or FxHxWx4 "
+                          "(a sequence), got " +
+                          std::to_string(a.ndim()) + " dimensions");
   }
   std::vector<Image> out;
   for (py::ssize_t f = 0; f < a.shape(0); ++f) {
@@ -61,7 +63,8 @@ std::vector<Image> frames_of(py::handle array, const std::string& what) {
 
 py::dict fvvdp(py::handle test, py::handle reference, py::handle display, py::handle gaze,
                double fps, bool foveated, bool heatmap, std::vector<double> band_edges_deg) {
-  const std::vector<Image> tests = frames_of(test, "test"), refs = frames_of(reference, "reference");
+  const std::vector<Image> tests = frames_of(test, "test"),
+                           refs = frames_of(reference, "reference");
   if (tests.size() != refs.size()) {
     throw py::value_error("test has " + std::to_string(tests.size()) + " frames, reference " +
                           std::to_string(refs.size()));
@@ -70,11 +73,10 @@ py::dict fvvdp(py::handle test, py::handle reference, py::handle display, py::ha
   for (size_t f = 0; f < tests.size(); ++f) {
     for (const Image* img : {&tests[f], &refs[f]}) {
       if (img->width != first.width || img->height != first.height) {
-        throw py::value_error("frame " + std::to_string(f) + ": shape (" +
-                              std::to_string(img->height) + ", " + std::to_string(img->width) +
-                              ") differs from the reference's first frame's (" +
-                              std::to_string(first.height) + ", " + std::to_string(first.width) +
-                              ")");
+        throw py::value_error(
+            "frame " + std::to_string(f) + ": shape (" + std::to_string(img->height) + ", " +
+            std::to_string(img->width) + ") differs from the reference's first frame's (" +
+            std::to_string(first.height) + ", " + std::to_string(first.width) + ")");
       }
     }
   }
@@ -110,20 +112,9 @@ py::dict fvvdp(py::handle test, py::handle reference, py::handle display, py::ha
   return out;
 }
 
-}  // namespace
-
-void bind_metrics(py::module_& m) {
-  m.def("fvvdp", &fvvdp, py::arg("test"), py::arg("reference"),
-        py::arg("display") = "desktop-1080p", py::arg("gaze") = py::none(),
-        py::arg("fps") = 60.0, py::arg("foveated") = true, py::arg("heatmap") = false,
-        py::arg("band_edges_deg") = std::vector<double>{0, 5, 10, 20},
-        "FovVideoVDP (Mantiuk et al. 2021, v1.2): how visible test's difference from reference "
-        "is, in JOD (10 = none; 1 JOD apart = 75 % prefer the higher). test and reference: "
-        "HxWx3/4 images or FxHxWx3/4 sequences (uint8 sRGB or float 0..1); display: a Display "
-        "or preset name (its photometry and field of view, resized to the frames); gaze: None "
-        "(centre), (x, y) in pixels, or an (F, 2) array per frame; fps: the sequence's frame "
-        "rate. Returns a dict: 'jod', 'bands' (JOD per eccentricity band), 'frame_jod', "
-        "'photometry', ... and with heatmap=True the distortion maps (HxW float32, JOD).");
+// Per-pixel and whole-image measures of two images: MSE, PSNR, SSIM and its
+// map, luminance codes.
+void bind_pixel_metrics(py::module_& m) {
   m.def(
       "mse",
       [](py::handle r, py::handle t) {
@@ -159,6 +150,11 @@ void bind_metrics(py::module_& m) {
         return map_to_array(metrics::luminance_codes(image_from_array(img, "image")));
       },
       py::arg("image"), "CIE Y re-encoded with the sRGB curve to 0..255, HxW float32");
+}
+
+// Maps and models of what the eye sees: eccentricity, the acuity filter, JND,
+// FLIP, Barten's CSF.
+void bind_perception(py::module_& m) {
   m.def(
       "eccentricity_map",
       [](py::handle display, int width, int height, py::handle gaze) {
@@ -216,6 +212,24 @@ void bind_metrics(py::module_& m) {
         "Barten's contrast sensitivity at u cycles per degree");
   m.def("acuity_response", &metrics::acuity_response, py::arg("frequency"), py::arg("cutoff"),
         "The acuity filter's response to a grating (both in cycles per pixel)");
+}
+
+}  // namespace
+
+void bind_metrics(py::module_& m) {
+  m.def("fvvdp", &fvvdp, py::arg("test"), py::arg("reference"),
+        py::arg("display") = "desktop-1080p", py::arg("gaze") = py::none(), py::arg("fps") = 60.0,
+        py::arg("foveated") = true, py::arg("heatmap") = false,
+        py::arg("band_edges_deg") = std::vector<double>{0, 5, 10, 20},
+        "FovVideoVDP (Mantiuk et al. 2021, v1.2): how visible test's difference from reference "
+        "is, in JOD (10 = none; 1 JOD apart = 75 % prefer the higher). test and reference: "
+        "HxWx3/4 images or FxHxWx3/4 sequences (uint8 sRGB or float 0..1); display: a Display "
+        "or preset name (its photometry and field of view, resized to the frames); gaze: None "
+        "(centre), (x, y) in pixels, or an (F, 2) array per frame; fps: the sequence's frame "
+        "rate. Returns a dict: 'jod', 'bands' (JOD per eccentricity band), 'frame_jod', "
+        "'photometry', ... and with heatmap=True the distortion maps (HxW float32, JOD).");
+  bind_pixel_metrics(m);
+  bind_perception(m);
   m.def(
       "compare",
       [](py::handle r, py::handle t, py::handle display, py::handle gaze, const AcuityModel& acuity,

@@ -24,12 +24,12 @@ double ema(double old, double sample, double weight, bool first) {
 }  // namespace
 
 Viewer::Viewer(bench::Session& session, const std::string& technique,
-               const bench::ParamOverrides& params, const std::string& quality,
+               const bench::ParamOverrides& params, const std::string& preset,
                std::optional<double> slope)
     : session_(session), name_(technique) {
-  acuity_ = bench::acuity_from(quality, slope);
-  quality_ =
-      slope ? "custom" : (quality.empty() ? "A" : std::string(1, char(std::toupper(quality[0]))));
+  acuity_ = bench::acuity_from(preset, slope);
+  acuity_preset_ =
+      slope ? "custom" : (preset.empty() ? "A" : std::string(1, char(std::toupper(preset[0]))));
   for (const TechniqueInfo& t : techniques()) {
     if (!scene_mismatch(t, session_.scene().info()).empty()) continue;
     available_.push_back(t.name);
@@ -112,14 +112,14 @@ void Viewer::use_acuity(const AcuityModel& next) {
   }
 }
 
-void Viewer::set_quality(const std::string& preset) {
-  use_acuity(with_flag("quality", [&] { return AcuityModel::quality(preset); }));
-  quality_ = std::string(1, char(std::toupper(preset[0])));
+void Viewer::set_acuity_preset(const std::string& preset) {
+  use_acuity(AcuityModel::preset(preset));
+  acuity_preset_ = std::string(1, char(std::toupper(preset[0])));
 }
 
 void Viewer::set_slope(double m) {
   use_acuity(with_flag("slope", [&] { return AcuityModel::with_slope(m); }));
-  quality_ = m == kSlopeQualityA ? "A" : m == kSlopeQualityB ? "B" : "custom";
+  acuity_preset_ = m == kSlopePresetA ? "A" : m == kSlopePresetB ? "B" : "custom";
 }
 
 void Viewer::set_display(const std::string& spec) {
@@ -187,7 +187,7 @@ void Viewer::blit_columns(int x0, int x1) {
   // The output holds sRGB-encoded bytes: copied as they are.
   glDisable(GL_FRAMEBUFFER_SRGB);
   const gpu::RenderTarget& out =
-      session_.stereo() ? session_.stereo()->output() : session_.renderer().output();
+      session_.stereo() ? session_.stereo()->output() : session_.frame_runner().output();
   glBlitNamedFramebuffer(out.framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H, x1, fb_h,
                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
@@ -265,7 +265,7 @@ nlohmann::json Viewer::state() const {
     for (const auto& [k, v] : m) all[t][k] = v;
   }
   j["overrides_by_technique"] = all;
-  j["quality"] = quality_;
+  j["quality"] = acuity_preset_;  // print-state's key, which scripts read
   j["slope"] = acuity_.slope;
   j["margin"] =
       session_.options().margin ? nlohmann::json(*session_.options().margin) : nlohmann::json();

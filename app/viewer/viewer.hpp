@@ -34,10 +34,10 @@ struct ViewerStats {
 
 class Viewer {
  public:
-  /// `params` (from --param) seed every technique's parameters; the quality
-  /// ("A", "B" or "" for A) or `slope` the acuity model.
+  /// `params` (from --param) seed every technique's parameters; the acuity
+  /// preset ("A", "B" or "" for A) or `slope` the acuity model.
   Viewer(bench::Session& session, const std::string& technique, const bench::ParamOverrides& params,
-         const std::string& quality, std::optional<double> slope);
+         const std::string& acuity_preset, std::optional<double> slope);
   ~Viewer();
 
   // Actions. Each throws foveate::Error naming the input when it is refused,
@@ -47,7 +47,7 @@ class Viewer {
   void set_param(const std::string& technique, const std::string& key, double value);
   /// Forgets the current technique's overrides (back to the derived defaults).
   void reset_params();
-  void set_quality(const std::string& preset);  ///< "A" or "B"
+  void set_acuity_preset(const std::string& preset);  ///< "A" or "B"
   void set_slope(double m);
   void set_display(const std::string& spec);
   void set_show_native(bool on) { show_native_ = on; }
@@ -62,13 +62,14 @@ class Viewer {
   [[nodiscard]] const std::string& technique_name() const { return name_; }
   [[nodiscard]] const Technique& technique() const { return *technique_.view; }
   [[nodiscard]] const std::map<std::string, double>& overrides() const;
-  [[nodiscard]] const std::string& quality() const { return quality_; }  ///< "A", "B", "custom"
+  /// "A", "B" or "custom" (a slope of its own).
+  [[nodiscard]] const std::string& acuity_preset() const { return acuity_preset_; }
   [[nodiscard]] double slope() const { return acuity_.slope; }
   [[nodiscard]] const std::string& display_spec() const { return session_.options().display; }
   [[nodiscard]] bool show_native() const { return show_native_; }
   [[nodiscard]] bool split() const { return split_; }
   [[nodiscard]] double divider() const { return divider_; }
-  [[nodiscard]] bool overlay() const { return session_.renderer().options().overlay; }
+  [[nodiscard]] bool overlay() const { return session_.frame_runner().options().overlay; }
   [[nodiscard]] const ViewerStats& stats() const { return stats_; }
   [[nodiscard]] std::optional<double> speedup() const;
   [[nodiscard]] const GazeState& gaze() const { return gaze_; }
@@ -100,7 +101,7 @@ class Viewer {
   std::vector<std::string> available_;
   std::map<std::string, std::map<std::string, double>> params_;  // per technique
   std::string name_;
-  std::string quality_ = "A";
+  std::string acuity_preset_ = "A";
   AcuityModel acuity_;
   bench::SessionTechnique technique_;
   bench::SessionTechnique native_;

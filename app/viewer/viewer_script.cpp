@@ -15,10 +15,11 @@ struct Verb {
   int min_args, max_args;
 };
 constexpr Verb kVerbs[] = {
-    {"technique", 1, 1}, {"param", 1, 1},      {"reset", 0, 0},       {"quality", 1, 1},
+    {"technique", 1, 1}, {"param", 1, 1},      {"reset", 0, 0},       {"acuity", 1, 1},
     {"slope", 1, 1},     {"display", 1, 1},    {"ab", 0, 1},          {"split", 0, 1},
     {"divider", 1, 1},   {"overlay", 0, 1},    {"measure", 0, 0},     {"frames", 1, 1},
-    {"wait", 1, 1},      {"screenshot", 1, 1}, {"print-state", 0, 0}, {"quit", 0, 0}};
+    {"wait", 1, 1},      {"screenshot", 1, 1}, {"print-state", 0, 0}, {"quit", 0, 0},
+    {"quality", 1, 1}};  // quality: acuity's former name
 
 double number(const std::string& s, const std::string& what) {
   char* end = nullptr;
@@ -45,7 +46,7 @@ const char* Script::help() {
          "  technique NAME          switch technique (parameters set before are kept)\n"
          "  param [TECH.]KEY=VALUE  set a parameter (of the current technique by default)\n"
          "  reset                   the current technique's parameters back to their defaults\n"
-         "  quality A|B, slope M    the acuity model\n"
+         "  acuity A|B, slope M     the acuity model (its preset, or a slope)\n"
          "  display SPEC            display preset or JSON file\n"
          "  ab [native|foveated]    show native or the technique (no argument: flip)\n"
          "  split [on|off]          split screen: native left, foveated right\n"
@@ -133,8 +134,8 @@ void Script::run(const Command& c, Viewer& v) {
     v.set_param(tech, key, number(a[0].substr(eq + 1), "param"));
   } else if (c.verb == "reset") {
     v.reset_params();
-  } else if (c.verb == "quality") {
-    v.set_quality(a[0]);
+  } else if (c.verb == "acuity" || c.verb == "quality") {
+    v.set_acuity_preset(a[0]);
   } else if (c.verb == "slope") {
     v.set_slope(number(a[0], "slope"));
   } else if (c.verb == "display") {

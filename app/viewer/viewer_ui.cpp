@@ -177,12 +177,69 @@ void Ui::legend_and_gaze(Viewer& v) {
   }
 }
 
+void Ui::acuity_and_display(Viewer& v) {
+  if (ImGui::RadioButton("acuity A", v.acuity_preset() == "A"))
+    act([&] { v.set_acuity_preset("A"); });
+  ImGui::SameLine();
+  if (ImGui::RadioButton("acuity B", v.acuity_preset() == "B"))
+    act([&] { v.set_acuity_preset("B"); });
+  auto it = pending_.find("slope");
+  double m = it != pending_.end() ? it->second : v.slope();
+  const double lo = 0.005, hi = 0.08;
+  if (ImGui::SliderScalar("MAR slope m", ImGuiDataType_Double, &m, &lo, &hi, "%.4f deg/deg"))
+    pending_["slope"] = m;
+  if (ImGui::IsItemDeactivatedAfterEdit()) {
+    pending_.erase("slope");
+    act([&] { v.set_slope(m); });
+  } else if (!ImGui::IsItemActive()) {
+    pending_.erase("slope");
+  }
+  if (ImGui::BeginCombo("display", v.display_spec().c_str())) {
+    for (const Display& d : Display::presets()) {
+      if (ImGui::Selectable(d.name.c_str(), d.name == v.display_spec())) {
+        act([&] { v.set_display(d.name); });
+      }
+    }
+    ImGui::EndCombo();
+  }
+}
+
+// The split's divider, draggable on the image, or the A/B flip's label.
+void Ui::draw_divider(Viewer& v) {
+  ImGuiIO& io = ImGui::GetIO();
+  const float W = static_cast<float>(v.width()), H = static_cast<float>(v.height());
+  if (v.split()) {
+    const float x = static_cast<float>(v.divider()) * W;
+    const ImVec2 m = io.MousePos;
+    const bool near = std::abs(m.x - x) <= 6.0f && m.y >= 0 && m.y < H;
+    if (!io.WantCaptureMouse && near && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+      dragging_ = true;
+    if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
+    if (dragging_) v.set_divider(std::clamp(m.x / W, 0.0f, 1.0f));
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    const ImU32 c =
+        (near || dragging_) ? IM_COL32(255, 255, 80, 255) : IM_COL32(255, 255, 255, 200);
+    dl->AddLine(ImVec2(x, 0), ImVec2(x, H), c, 2.0f);
+    dl->AddRectFilled(ImVec2(x - 4, H * 0.5f - 14), ImVec2(x + 4, H * 0.5f + 14), c, 2.0f);
+    dl->AddText(ImVec2(6, 4), IM_COL32(255, 255, 255, 230), "native");
+    const std::string right = v.technique_name();
+    dl->AddText(ImVec2(W - 6 - ImGui::CalcTextSize(right.c_str()).x, 4),
+                IM_COL32(255, 255, 255, 230), right.c_str());
+  } else {
+    dragging_ = false;
+    if (v.show_native()) {
+      ImGui::GetForegroundDrawList()->AddText(ImVec2(6, 4), IM_COL32(255, 255, 255, 230),
+                                              "native (Space: back to the technique)");
+    }
+  }
+}
+
 void Ui::draw(Viewer& v) {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   ImGuiIO& io = ImGui::GetIO();
-  const float W = static_cast<float>(v.width()), H = static_cast<float>(v.height());
+  const float W = static_cast<float>(v.width());
 
   ImGui::SetNextWindowPos(ImVec2(W, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(std::max(io.DisplaySize.x - W, 100.0f), io.DisplaySize.y),
@@ -217,60 +274,14 @@ void Ui::draw(Viewer& v) {
     if (ImGui::Checkbox("overlay (O)", &overlay)) v.set_overlay(overlay);
   }
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameters(v);
-  if (ImGui::CollapsingHeader("Acuity and display", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (ImGui::RadioButton("quality A", v.quality() == "A")) act([&] { v.set_quality("A"); });
-    ImGui::SameLine();
-    if (ImGui::RadioButton("quality B", v.quality() == "B")) act([&] { v.set_quality("B"); });
-    auto it = pending_.find("slope");
-    double m = it != pending_.end() ? it->second : v.slope();
-    const double lo = 0.005, hi = 0.08;
-    if (ImGui::SliderScalar("MAR slope m", ImGuiDataType_Double, &m, &lo, &hi, "%.4f deg/deg"))
-      pending_["slope"] = m;
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
-      pending_.erase("slope");
-      act([&] { v.set_slope(m); });
-    } else if (!ImGui::IsItemActive()) {
-      pending_.erase("slope");
-    }
-    if (ImGui::BeginCombo("display", v.display_spec().c_str())) {
-      for (const Display& d : Display::presets()) {
-        if (ImGui::Selectable(d.name.c_str(), d.name == v.display_spec())) {
-          act([&] { v.set_display(d.name); });
-        }
-      }
-      ImGui::EndCombo();
-    }
-  }
+  if (ImGui::CollapsingHeader("Acuity and display", ImGuiTreeNodeFlags_DefaultOpen))
+    acuity_and_display(v);
   legend_and_gaze(v);
   ImGui::TextDisabled("keys: 1-9 technique, Space A/B, S split, O overlay, R reset, Esc quit");
   ImGui::PopItemWidth();
   ImGui::End();
 
-  // The split's divider, draggable on the image.
-  if (v.split()) {
-    const float x = static_cast<float>(v.divider()) * W;
-    const ImVec2 m = io.MousePos;
-    const bool near = std::abs(m.x - x) <= 6.0f && m.y >= 0 && m.y < H;
-    if (!io.WantCaptureMouse && near && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-      dragging_ = true;
-    if (!io.MouseDown[ImGuiMouseButton_Left]) dragging_ = false;
-    if (dragging_) v.set_divider(std::clamp(m.x / W, 0.0f, 1.0f));
-    ImDrawList* dl = ImGui::GetForegroundDrawList();
-    const ImU32 c =
-        (near || dragging_) ? IM_COL32(255, 255, 80, 255) : IM_COL32(255, 255, 255, 200);
-    dl->AddLine(ImVec2(x, 0), ImVec2(x, H), c, 2.0f);
-    dl->AddRectFilled(ImVec2(x - 4, H * 0.5f - 14), ImVec2(x + 4, H * 0.5f + 14), c, 2.0f);
-    dl->AddText(ImVec2(6, 4), IM_COL32(255, 255, 255, 230), "native");
-    const std::string right = v.technique_name();
-    dl->AddText(ImVec2(W - 6 - ImGui::CalcTextSize(right.c_str()).x, 4),
-                IM_COL32(255, 255, 255, 230), right.c_str());
-  } else {
-    dragging_ = false;
-    if (v.show_native()) {
-      ImGui::GetForegroundDrawList()->AddText(ImVec2(6, 4), IM_COL32(255, 255, 255, 230),
-                                              "native (Space: back to the technique)");
-    }
-  }
+  draw_divider(v);
 
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

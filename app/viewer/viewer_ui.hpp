@@ -36,6 +36,8 @@ class Ui {
   void parameters(Viewer& v);
   void measurements(Viewer& v);
   void legend_and_gaze(Viewer& v);
+  void acuity_and_display(Viewer& v);
+  void draw_divider(Viewer& v);
   /// Runs a Viewer action, keeping its error to show.
   template <class Fn>
   void act(Fn&& fn);

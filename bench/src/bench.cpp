@@ -82,6 +82,7 @@ BenchResult BenchRun::run() {
   // least as long as asked.
   out_.warmup = options_.warmup;
   for (const Run& r : runs_) out_.warmup = std::max(out_.warmup, r.impl.view->settle_frames());
+  out_.warmup = std::max(out_.warmup, other_shards_settle_);
   open_video();
   // Steps: every frame rendered, and every frame judged (the metrics take as
   // long as the rendering on a CPU), so that the time left is honest.

@@ -28,7 +28,7 @@ void BenchRun::measure(int k) {
   const std::vector<size_t>& order = orders_[static_cast<size_t>(k)];
   const int frame = out_.warmup + k;
   const bool last = k + 1 == options_.frames;
-  const GazeState g = session_.gaze().at(session_.renderer().frame_input(frame).time_s);
+  const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(frame).time_s);
   // The image every run is judged against: native, or the supersampled
   // reference (untimed, rendered from a scene of its own).
   Reference reference;
@@ -40,7 +40,7 @@ void BenchRun::measure(int k) {
     } else {
       reference.out = session_.watchdog().run(
           "frame " + std::to_string(frame) + " of the ssaa:" + std::to_string(n) + " reference",
-          [&] { return reference_->render(session_.renderer().frame_input(frame)); },
+          [&] { return reference_->render(session_.frame_runner().frame_input(frame)); },
           double(n) * n);
       if (cache) cache->frames[frame] = reference.out;
     }

@@ -74,7 +74,7 @@ void BenchRun::check_gaze_source() {
 }
 
 void BenchRun::add_run(const std::string& technique, double value, bool swept, int run_index,
-                       const RunSpec* spec) {
+                       const RunSpec* spec, bool measured) {
   Run r;
   r.technique = technique;
   r.sweep_value = value;
@@ -91,6 +91,12 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept, i
     params.per_technique[technique][options_.sweep.param] = value;
   }
   r.impl = session_.make(technique, params, r.acuity);
+  if (!measured) {
+    // Another shard's run: only how long it needs to settle, so that every
+    // shard warms up alike and measures the same frames.
+    other_shards_settle_ = std::max(other_shards_settle_, r.impl.view->settle_frames());
+    return;
+  }
   if (session_.stereo()) r.result.eyes.resize(2);
   r.result.technique = technique;
   r.result.sweep_value = value;
@@ -106,7 +112,7 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept, i
     qo.contrast.black_cd_m2 = light.black_cd_m2();
     qo.fvvdp_options.fps = options_.session.fps;
     r.series = std::make_unique<metrics::QualitySeries>(session_.display(), qo);
-    if (StereoRenderer* stereo = session_.stereo()) {
+    if (StereoFrameRunner* stereo = session_.stereo()) {
       for (Eye e : kEyes) {
         r.eye_series[static_cast<size_t>(e)] =
             std::make_unique<metrics::QualitySeries>(stereo->display().eye(e), qo);
@@ -120,7 +126,7 @@ void BenchRun::add_runs() {
   // Native is the reference for speed and quality: always run, once, in
   // every shard. The other runs are numbered in one order for every shard
   // and dealt out in turn.
-  add_run("native", 0.0, false, 0, nullptr);
+  add_run("native", 0.0, false, 0, nullptr, true);
   int index = 0;
   const Shard& shard = options_.shard;
   const auto mine = [&] { return (index - 1) % shard.count == shard.index; };
@@ -128,7 +134,7 @@ void BenchRun::add_runs() {
     std::set<std::string> skipped;
     for (const RunSpec& spec : options_.runs) {
       ++index;
-      if (!mine()) continue;
+      const bool measured = mine();
       const std::string why =
           scene_mismatch(technique_info(spec.technique), session_.scene().info());
       if (!why.empty() && options_.skip_unrunnable) {
@@ -138,7 +144,7 @@ void BenchRun::add_runs() {
         }
         continue;
       }
-      add_run(spec.technique, 0.0, false, index, &spec);
+      add_run(spec.technique, 0.0, false, index, &spec, measured);
     }
     native_listed_ = true;  // explicit runs are judged against native's figures
     return;
@@ -148,11 +154,11 @@ void BenchRun::add_runs() {
     if (options_.sweep.applies_to(t)) {
       for (double v : options_.sweep.values) {
         ++index;
-        if (mine()) add_run(t, v, true, index, nullptr);
+        add_run(t, v, true, index, nullptr, mine());
       }
     } else {
       ++index;
-      if (mine()) add_run(t, 0.0, false, index, nullptr);
+      add_run(t, 0.0, false, index, nullptr, mine());
     }
   }
   native_listed_ = shard.count > 1 || std::find(out_.techniques.begin(), out_.techniques.end(),
@@ -190,7 +196,7 @@ void BenchRun::warm_up() {
   // it: the measured frames continue from the techniques' steady state, as
   // they would in an application.
   for (int k = 0; k < out_.warmup; ++k) {
-    const GazeState g = session_.gaze().at(session_.renderer().frame_input(k).time_s);
+    const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(k).time_s);
     for (Run& r : runs_) {
       session_.watchdog().run("warm-up frame " + std::to_string(k) + " (" + r.technique + ")",
                               [&] { session_.render(r.impl, k, g); });

@@ -49,7 +49,7 @@ class BenchRun {
   void choose_techniques();
   void check_gaze_source();
   void add_run(const std::string& technique, double value, bool swept, int run_index,
-               const RunSpec* spec);
+               const RunSpec* spec, bool measured);
   void add_runs();
   void open_video();
   void warm_up();
@@ -70,9 +70,10 @@ class BenchRun {
   const BenchCallbacks& callbacks_;
   BenchResult out_;
   Session session_;
-  std::unique_ptr<ReferenceScene> reference_;
+  std::unique_ptr<SupersampledScene> reference_;
   std::vector<Run> runs_;
   bool native_listed_ = false;
+  int other_shards_settle_ = 0;              ///< the settle frames of runs other shards measure
   std::vector<std::vector<size_t>> orders_;  ///< each measured frame's order of the runs
   std::vector<size_t> shown_;                ///< the runs the video shows, in order
   std::unique_ptr<VideoWriter> video_;

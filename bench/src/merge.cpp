@@ -21,6 +21,8 @@ T value_at(const nlohmann::json& j, const char* key, const std::string& where) {
   }
 }
 
+double as_number(const nlohmann::json& v) { return v.is_number() ? v.get<double>() : std::nan(""); }
+
 double number_or_nan(const nlohmann::json& j, const char* key) {
   const auto it = j.find(key);
   return it == j.end() || !it->is_number() ? std::nan("") : it->get<double>();
@@ -33,25 +35,26 @@ TechniqueResult read_result(const nlohmann::json& r, const std::string& where) {
   t.sweep_value = r.value("sweep_value", 0.0);
   const std::string label = r.value("label", t.technique);
   if (label != t.technique && r.find("sweep_value") == r.end()) t.label = label;
-  for (const auto& [k, v] : r.value("parameters", nlohmann::json::object()).items())
-    t.parameters.emplace_back(k, v.get<double>());
-  t.frame_ms = r.value("frame_ms", std::vector<double>{});
+  const nlohmann::json parameters = r.value("parameters", nlohmann::json::object());
+  for (const auto& [k, v] : parameters.items()) t.parameters.emplace_back(k, as_number(v));
+  for (const auto& v : r.value("frame_ms", nlohmann::json::array()))
+    t.frame_ms.push_back(as_number(v));
   t.median_ms = number_or_nan(r, "median_ms");
   t.p90_ms = number_or_nan(r, "p90_ms");
   t.mean_ms = number_or_nan(r, "mean_ms");
   t.speedup = number_or_nan(r, "speedup");
   if (const auto ci = r.find("speedup_ci95"); ci != r.end() && ci->size() == 2) {
-    t.speedup_lo = (*ci)[0].get<double>();
-    t.speedup_hi = (*ci)[1].get<double>();
+    t.speedup_lo = as_number((*ci)[0]);
+    t.speedup_hi = as_number((*ci)[1]);
   }
   t.shaded_pixels = number_or_nan(r, "shaded_pixels");
   t.native_pixels = number_or_nan(r, "native_pixels");
   t.pixel_ratio = number_or_nan(r, "pixel_ratio");
   t.bound_share = number_or_nan(r, "bound_share");
   for (const auto& p : r.value("parts", nlohmann::json::array()))
-    t.parts.push_back({p.value("name", ""), p.value("pixels", 0.0)});
+    t.parts.push_back({p.value("name", ""), number_or_nan(p, "pixels")});
   if (const auto ps = r.find("passes"); ps != r.end() && ps->is_array()) {
-    for (const auto& p : *ps) t.passes.push_back({p.value("name", ""), p.value("ms", 0.0)});
+    for (const auto& p : *ps) t.passes.push_back({p.value("name", ""), number_or_nan(p, "ms")});
   }
   if (const auto q = r.find("quality"); q != r.end() && q->is_object() && !q->empty())
     t.metrics = metrics::quality_summary_from_json(*q);
@@ -125,6 +128,7 @@ BenchResult read_bench_results(const nlohmann::json& j, const std::string& where
   b.skipped = j.value("skipped", std::vector<std::string>{});
   b.gaze_fallback = j.value("gaze_fallback", false);
   read_options(j, where, b);
+  b.settings_key = j.value("settings", nlohmann::json::object()).dump();
   for (const auto& r : value_at<nlohmann::json>(j, "results", where)) {
     b.results.push_back(read_result(r, where));
     b.techniques.push_back(b.results.back().technique);
@@ -137,7 +141,10 @@ BenchResult merge_shards(const std::vector<BenchResult>& shards,
   if (shards.empty()) throw Error("merge: no shards given");
   const BenchResult& first = shards.front();
   const int count = first.options.shard.count;
-  const nlohmann::json settings = bench_settings_json(first);
+  const auto settings_of = [](const BenchResult& r) {
+    return r.settings_key.empty() ? bench_settings_json(r).dump() : r.settings_key;
+  };
+  const std::string settings = settings_of(first);
   std::set<int> seen;
   for (size_t i = 0; i < shards.size(); ++i) {
     const BenchResult& s = shards[i];
@@ -150,7 +157,7 @@ BenchResult merge_shards(const std::vector<BenchResult>& shards,
       throw Error(names[i] + ": shard of " + std::to_string(s.options.shard.count) + ", but " +
                   names[0] + " is a shard of " + std::to_string(count));
     }
-    if (bench_settings_json(s) != settings) {
+    if (settings_of(s) != settings) {
       throw Error(names[i] + ": other settings than " + names[0] +
                   " (scene, size, display, frames, reference, techniques, parameters or runs "
                   "differ): not shards of one benchmark");

@@ -22,7 +22,7 @@ Session::Session(const SessionOptions& o, SessionCallbacks callbacks)
   make_context();
   scene_ = load_scene(o.scene, o.scene_options);
   if (o.stereo) right_scene_ = load_scene(o.scene, o.scene_options);
-  make_renderers();
+  make_frame_runners();
   watchdog_ = std::make_unique<FrameWatchdog>(o.frame_timeout_s, scene_->info().name,
                                               callbacks_.frame_timeout);
   make_tracker();
@@ -61,8 +61,8 @@ void Session::make_context() {
   context_ = std::move(w);
 }
 
-void Session::make_renderers() {
-  RendererOptions ro;
+void Session::make_frame_runners() {
+  FrameRunnerOptions ro;
   ro.width = options_.size.width;
   ro.height = options_.size.height;
   ro.fps = options_.fps;
@@ -71,10 +71,10 @@ void Session::make_renderers() {
   ro.mouse_down = options_.mouse_down;
   if (options_.stereo) {
     stereo_ = for_field("size", [&] {
-      return std::make_unique<StereoRenderer>(*scene_, *right_scene_, stereo_display_, ro);
+      return std::make_unique<StereoFrameRunner>(*scene_, *right_scene_, stereo_display_, ro);
     });
   } else {
-    renderer_ = for_field("size", [&] { return std::make_unique<Renderer>(*scene_, ro); });
+    frame_runner_ = for_field("size", [&] { return std::make_unique<FrameRunner>(*scene_, ro); });
   }
 }
 
@@ -157,13 +157,13 @@ SessionTechnique Session::make(const std::string& technique, const ParamOverride
 }
 
 SessionFrame Session::render(SessionTechnique& t, int frame, const GazeState& gaze) {
-  return render(t, renderer().frame_input(frame), gaze);
+  return render(t, frame_runner().frame_input(frame), gaze);
 }
 
 SessionFrame Session::render(SessionTechnique& t, const FrameInput& input, const GazeState& gaze) {
   SessionFrame out;
   if (!stereo_) {
-    out.total = renderer_->render(*t.view, input, gaze);
+    out.total = frame_runner_->render(*t.view, input, gaze);
     out.eyes[0] = out.total;
     return out;
   }
@@ -177,11 +177,11 @@ SessionFrame Session::render(SessionTechnique& t, const FrameInput& input, const
 }
 
 Image Session::read_output() const {
-  return stereo_ ? stereo_->read_output() : renderer_->read_output();
+  return stereo_ ? stereo_->read_output() : frame_runner_->read_output();
 }
 
 Image Session::read_eye(Eye eye) const {
-  return stereo_ ? stereo_->read_eye(eye) : renderer_->read_output();
+  return stereo_ ? stereo_->read_eye(eye) : frame_runner_->read_output();
 }
 
 std::vector<OverlayShape> Session::overlay(const SessionTechnique& t, const GazeState& gaze) const {
@@ -196,25 +196,25 @@ std::vector<OverlayShape> Session::overlay(const SessionTechnique& t, const Gaze
 }
 
 void Session::set_overlay(bool on) {
-  renderer().set_overlay(on);
+  frame_runner().set_overlay(on);
   if (stereo_) stereo_->set_overlay(on);
 }
 
-Image ReferenceScene::render(const FrameInput& input) {
+Image SupersampledScene::render(const FrameInput& input) {
   supersampled->render(*scene, input);
   return supersampled->read();
 }
 
-std::unique_ptr<ReferenceScene> Session::make_reference(int factor) const {
+std::unique_ptr<SupersampledScene> Session::make_reference(int factor) const {
   if (stereo_) {
     throw OptionError("reference", FieldText{"{reference}: the supersampled reference is "
                                              "monocular; not available with {stereo}",
                                              {"reference", "stereo"}});
   }
-  auto r = std::make_unique<ReferenceScene>();
+  auto r = std::make_unique<SupersampledScene>();
   r->scene = load_scene(options_.scene, options_.scene_options);
   r->supersampled = for_field(
-      "reference", [&] { return std::make_unique<SupersampledReference>(display_, factor); });
+      "reference", [&] { return std::make_unique<SupersampledNative>(display_, factor); });
   return r;
 }
 
@@ -224,7 +224,7 @@ void Session::present() {
   // The output holds sRGB-encoded bytes: copied as they are (no decode on
   // read, no encode on write), whatever the window's framebuffer encoding.
   glDisable(GL_FRAMEBUFFER_SRGB);
-  const gpu::RenderTarget& out = stereo_ ? stereo_->output() : renderer_->output();
+  const gpu::RenderTarget& out = stereo_ ? stereo_->output() : frame_runner_->output();
   glBlitNamedFramebuffer(out.framebuffer(), 0, 0, 0, out.width(), out.height(), 0, 0, w, h,
                          GL_COLOR_BUFFER_BIT, GL_LINEAR);
   window_->swap_buffers();

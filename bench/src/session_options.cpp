@@ -17,13 +17,20 @@ std::string printed(double value) {
 
 }  // namespace
 
-AcuityModel acuity_from(const std::string& quality, std::optional<double> slope) {
-  if (!quality.empty() && slope)
-    throw OptionError("slope",
-                      FieldText{"{quality} and {slope}: give one, not both", {"quality", "slope"}});
+AcuityModel acuity_from(const std::string& preset, std::optional<double> slope) {
+  if (!preset.empty() && slope)
+    throw OptionError("slope", FieldText{"{acuity_preset} and {slope}: give one, not both",
+                                         {"acuity_preset", "slope"}});
   if (slope) return AcuityModel::with_slope(*slope);
-  if (!quality.empty()) return AcuityModel::quality(quality);
-  return AcuityModel::quality("A");
+  if (!preset.empty()) {
+    try {
+      return AcuityModel::preset(preset);
+    } catch (const Error&) {
+      throw OptionError("acuity_preset",
+                        "expected A or B (Guenter et al.'s acuity presets), got '" + preset + "'");
+    }
+  }
+  return AcuityModel::preset("A");
 }
 
 void check_margin(double margin) {

@@ -55,7 +55,7 @@ class Search {
     scene_ = name;
     cache_ = std::make_shared<ReferenceFrames>();
     techniques_ = tuned_techniques(options_);
-    if (options_.shard.count > 1) {
+    if (options_.grid || options_.shard.count > 1) {
       evaluate(grid(), 1, true);
       return;
     }
@@ -317,7 +317,9 @@ TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks) 
   out.settings_key = tune_settings_key(options);
   Search search(options, callbacks, out);
   for (const std::string& scene : options.scenes) search.scene(scene);
-  if (options.scenes.size() > 1 && options.shard.count == 1) search.cross_check(options.scenes);
+  if (options.scenes.size() > 1 && !options.grid && options.shard.count == 1) {
+    search.cross_check(options.scenes);
+  }
   choose_parameters(out);
   return out;
 }

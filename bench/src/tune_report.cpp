@@ -29,6 +29,7 @@ nlohmann::json tune_settings(const TuneOptions& o) {
   return {{"scenes", o.scenes},
           {"techniques", o.techniques ? nlohmann::json(*o.techniques) : nlohmann::json()},
           {"bound_jod", o.bound_jod},
+          {"grid", o.grid || o.shard.count > 1},
           {"size", {s.size.width, s.size.height}},
           {"display", s.display},
           {"photometry",
@@ -109,6 +110,7 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
   if (s.contains("techniques") && s["techniques"].is_array())
     o.techniques = s["techniques"].get<std::vector<std::string>>();
   o.bound_jod = s.value("bound_jod", 0.25);
+  o.grid = s.value("grid", false);
   if (const auto size = s.find("size"); size != s.end() && size->size() == 2)
     o.bench.session.size = {(*size)[0].get<int>(), (*size)[1].get<int>()};
   o.bench.session.display = s.value("display", o.bench.session.display);
@@ -129,7 +131,8 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
   r.environment.cpu_model = env.value("cpu_model", "");
   r.environment.cores = env.value("cpu_cores", 0u);
   r.renderer = j.value("renderer", "");
-  for (const auto& [scene, jod] : j.value("native_jod", nlohmann::json::object()).items())
+  const nlohmann::json native_jod = j.value("native_jod", nlohmann::json::object());
+  for (const auto& [scene, jod] : native_jod.items())
     r.native_jod[scene] = jod.is_number() ? jod.get<double>() : std::nan("");
   for (const auto& p : j.value("points", nlohmann::json::array())) {
     TunePoint t;

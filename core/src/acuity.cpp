@@ -17,12 +17,12 @@ double AcuityModel::eccentricity_for_mar(double mar) const {
   return std::max(0.0, (mar - w0_deg) / slope);
 }
 
-AcuityModel AcuityModel::quality(const std::string& name) {
+AcuityModel AcuityModel::preset(const std::string& name) {
   std::string n = name;
   std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::toupper(c); });
-  if (n == "A") return AcuityModel{kSlopeQualityA, kFovealMarDeg};
-  if (n == "B") return AcuityModel{kSlopeQualityB, kFovealMarDeg};
-  throw Error("quality: expected A or B, got '" + name + "'");
+  if (n == "A") return AcuityModel{kSlopePresetA, kFovealMarDeg};
+  if (n == "B") return AcuityModel{kSlopePresetB, kFovealMarDeg};
+  throw Error("acuity preset: expected A or B, got '" + name + "'");
 }
 
 AcuityModel AcuityModel::with_slope(double m) {

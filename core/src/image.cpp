@@ -20,9 +20,8 @@ bool is_png(const std::string& bytes) {
   return bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0;
 }
 
-// 8-bit PNG through libpng's simplified API: several times faster than
-// stb_image, which matters where sequences of frames are read (compare, the
-// metrics). 16-bit PNGs go to stb_image, which keeps their values' top byte
+// 8-bit PNG through libpng's simplified API: faster than stb_image, which
+// matters where sequences of frames are read (compare, the metrics). 16-bit PNGs go to stb_image, which keeps their values' top byte
 // (libpng would take them as linear light).
 std::optional<Image> read_png(const std::string& path, const std::string& bytes) {
   png_image png{};
@@ -109,8 +108,8 @@ bool write_png_rows(const Image& image, bool opaque, std::string& out) {
 
 }  // namespace
 
-// The sub filter and fast deflate: an eighth of stb_image_write's time per
-// frame and smaller files, which decode faster too (the Paeth filter that a
+// The sub filter and fast deflate: far faster than stb_image_write per frame,
+// and smaller files, which decode faster too (the Paeth filter that a
 // thorough encoder picks is the slowest part of decoding).
 std::string encode_png(const Image& image) {
   if (image.empty()) throw Error("cannot encode an empty image");

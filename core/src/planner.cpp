@@ -31,19 +31,67 @@ double inner_pixels(const Geometry& g, double e, double s) {
   const double d = 2.0 * g.focal * std::tan(e * kRad) / s;
   return d * d;
 }
+
 // Eq. 3 and 4 for the outer layer: the whole screen at sampling factor s.
 double outer_pixels(const Geometry& g, double s) {
   const double d = g.long_axis / s;
   return g.aspect * d * d;
 }
+
 }  // namespace
 
 double sampling_factor_at(double e, const AcuityModel& a, const Display& d) {
   return std::max(1.0, a.mar_deg(e) / d.sharpness_deg());
 }
 
-LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
-                      const PlannerOptions& opt) {
+namespace {
+
+// The sampling factor of a layer over the eccentricities [a, b): the
+// acuity's at a (1 for the first) and, through a lens (lens.hpp), no finer
+// than the panel shows anywhere in that ring, whose view angles from the lens
+// axis (gamma being the gaze's) are at least 0 when it holds the axis,
+// gamma - b inside it, a - gamma outside it.
+class LayerSampling {
+ public:
+  LayerSampling(const Display& display, const AcuityModel& acuity, const PlannerOptions& opt)
+      : display_(display), acuity_(acuity), table_(display.lens_oversampling_table()) {
+    if (table_ && opt.gaze) {
+      if (!std::isfinite(opt.gaze->x) || !std::isfinite(opt.gaze->y)) {
+        throw Error("gaze: must be finite");
+      }
+      gamma_ = display.eccentricity_deg(display.principal_point(), *opt.gaze);
+      any_gaze_ = false;
+    }
+  }
+  /// The acuity's factor at eccentricity e.
+  [[nodiscard]] double after(double e) const { return sampling_factor_at(e, acuity_, display_); }
+  /// The lens's factor over [a, b).
+  [[nodiscard]] double lens(double a, double b) const {
+    if (!table_) return 1.0;
+    double from = 0.0;  // any gaze: the whole buffer
+    if (!any_gaze_) from = gamma_ < a ? a - gamma_ : (gamma_ > b ? gamma_ - b : 0.0);
+    // Less than 5 % of oversampling is not worth a resampled layer: it would
+    // save under 10 % of the layer's pixels and cost the fovea its exactness
+    // (a layer at s > 1 is jittered and resolved, not native).
+    const double s = table_->least_beyond(from).least();
+    return s < 1.05 ? 1.0 : s;
+  }
+  /// Both.
+  [[nodiscard]] double layer(double a, double b) const {
+    return std::max(a > 0.0 ? after(a) : 1.0, lens(a, b));
+  }
+
+ private:
+  const Display& display_;
+  const AcuityModel& acuity_;
+  std::optional<OversamplingTable> table_;
+  double gamma_ = 0.0;
+  bool any_gaze_ = true;
+};
+
+// Each layer's weight, checked along with the rest of the options.
+std::vector<double> checked_weights(const Display& display, const AcuityModel& acuity,
+                                    const PlannerOptions& opt) {
   display.validate();
   const int n = opt.layers;
   if (n < 1 || n > 6) throw Error("layers: expected 1..6, got " + std::to_string(n));
@@ -62,45 +110,11 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   for (double x : w) {
     if (!(x > 0.0) || !std::isfinite(x)) throw Error("weights: each must be > 0");
   }
+  return w;
+}
 
-  Geometry g;
-  g.focal = display.eye_distance_px();
-  g.long_axis = display.long_axis_px();
-  g.aspect = display.aspect();
-  g.sharp = display.sharpness_deg();
-  g.e_star = display.half_fov_deg();
-  auto s_after = [&](double e) { return sampling_factor_at(e, acuity, display); };
-
-  // Through a lens (lens.hpp): a layer over the eccentricities [a, b) around
-  // the gaze need not sample finer than the panel shows anywhere in that ring,
-  // whose view angles from the lens axis (gamma being the gaze's) are at least
-  // 0 when it holds the axis, gamma - b inside it, a - gamma outside it.
-  const std::optional<OversamplingTable> table = display.lens_oversampling_table();
-  double gamma = 0.0;
-  if (table) {
-    if (opt.gaze) {
-      if (!std::isfinite(opt.gaze->x) || !std::isfinite(opt.gaze->y)) {
-        throw Error("gaze: must be finite");
-      }
-      gamma = display.eccentricity_deg(display.principal_point(), *opt.gaze);
-    }
-  }
-  auto lens_s = [&](double a, double b) {
-    if (!table) return 1.0;
-    double from = 0.0;  // any gaze: the whole buffer
-    if (opt.gaze) from = gamma < a ? a - gamma : (gamma > b ? gamma - b : 0.0);
-    // Less than 5 % of oversampling is not worth a resampled layer: it would
-    // save under 10 % of the layer's pixels and cost the fovea its exactness
-    // (a layer at s > 1 is jittered and resolved, not native).
-    const double s = table->least_beyond(from).least();
-    return s < 1.05 ? 1.0 : s;
-  };
-  // s of the layer over [a, b): the acuity's at a (1 for the first) and the lens's.
-  auto s_layer = [&](double a, double b) {
-    return std::max(a > 0.0 ? s_after(a) : 1.0, lens_s(a, b));
-  };
-
-  // Candidate radii: the grid strictly inside (0, e*), bounded in number.
+// Candidate radii: the grid strictly inside (0, e*), bounded in number.
+std::vector<double> candidate_radii(const Geometry& g, const PlannerOptions& opt) {
   const double points = std::floor(g.e_star / opt.grid_step_deg);
   if (!(points <= static_cast<double>(opt.max_grid_points))) {
     // The smallest step within the limit, rounded up to two significant digits.
@@ -121,66 +135,81 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
     if (e >= g.e_star) break;
     grid.push_back(e);
   }
+  return grid;
+}
 
-  std::vector<double> radii;  // e_1 .. e_{n-1}
-  if (n > 1) {
-    std::vector<double> first = grid;  // candidates for e_1
-    if (opt.fixed_s2) {
-      if (n < 3) throw Error("fixed s2: needs at least 3 layers");
-      const double s2 = *opt.fixed_s2;
-      if (!(s2 >= 1.0)) throw Error("fixed s2: must be >= 1");
-      const double e1 = acuity.eccentricity_for_mar(s2 * g.sharp);
-      if (!(e1 > 0.0 && e1 < g.e_star)) {
-        throw Error("fixed s2: s2 = " + format_number(s2) + " puts e1 outside the display");
-      }
-      first = {e1};
-    }
-    // cost[i][k]: least weighted pixels of layers 1..i+1 with e_{i+1} = cand[i][k].
-    const int m = n - 1;
-    std::vector<std::vector<double>> cand(m, grid);
-    cand[0] = first;
-    std::vector<std::vector<double>> cost(m);
-    std::vector<std::vector<int>> from(m);
-    cost[0].resize(cand[0].size());
-    for (size_t k = 0; k < cand[0].size(); ++k)
-      cost[0][k] = w[0] * inner_pixels(g, cand[0][k], s_layer(0.0, cand[0][k]));
-    for (int i = 1; i < m; ++i) {
-      cost[i].assign(cand[i].size(), kInf);
-      from[i].assign(cand[i].size(), -1);
-      for (size_t j = 0; j < cand[i - 1].size(); ++j) {
-        if (!std::isfinite(cost[i - 1][j])) continue;
-        const double s0 = s_after(cand[i - 1][j]);
-        for (size_t k = 0; k < cand[i].size(); ++k) {
-          if (cand[i][k] <= cand[i - 1][j]) continue;
-          const double s = std::max(s0, lens_s(cand[i - 1][j], cand[i][k]));
-          const double c = cost[i - 1][j] + w[i] * inner_pixels(g, cand[i][k], s);
-          if (c < cost[i][k]) {
-            cost[i][k] = c;
-            from[i][k] = static_cast<int>(j);
-          }
+// The candidates for e_1: the grid, or the one radius a fixed s2 gives.
+std::vector<double> first_radii(const Geometry& g, const std::vector<double>& grid,
+                                const AcuityModel& acuity, const PlannerOptions& opt) {
+  if (!opt.fixed_s2) return grid;
+  if (opt.layers < 3) throw Error("fixed s2: needs at least 3 layers");
+  const double s2 = *opt.fixed_s2;
+  if (!(s2 >= 1.0)) throw Error("fixed s2: must be >= 1");
+  const double e1 = acuity.eccentricity_for_mar(s2 * g.sharp);
+  if (!(e1 > 0.0 && e1 < g.e_star)) {
+    throw Error("fixed s2: s2 = " + format_number(s2) + " puts e1 outside the display");
+  }
+  return {e1};
+}
+
+// e_1 .. e_{n-1} with the least weighted pixels in total (dynamic
+// programming over the candidates: cost[i][k] is the least of layers 1..i+1
+// with e_{i+1} = cand[i][k]).
+std::vector<double> optimal_radii(const Geometry& g, const std::vector<double>& grid,
+                                  const std::vector<double>& w, const LayerSampling& sampling,
+                                  const AcuityModel& acuity, const PlannerOptions& opt) {
+  const int n = opt.layers;
+  const int m = n - 1;
+  std::vector<std::vector<double>> cand(m, grid);
+  cand[0] = first_radii(g, grid, acuity, opt);
+  std::vector<std::vector<double>> cost(m);
+  std::vector<std::vector<int>> from(m);
+  cost[0].resize(cand[0].size());
+  for (size_t k = 0; k < cand[0].size(); ++k)
+    cost[0][k] = w[0] * inner_pixels(g, cand[0][k], sampling.layer(0.0, cand[0][k]));
+  for (int i = 1; i < m; ++i) {
+    cost[i].assign(cand[i].size(), kInf);
+    from[i].assign(cand[i].size(), -1);
+    for (size_t j = 0; j < cand[i - 1].size(); ++j) {
+      if (!std::isfinite(cost[i - 1][j])) continue;
+      const double s0 = sampling.after(cand[i - 1][j]);
+      for (size_t k = 0; k < cand[i].size(); ++k) {
+        if (cand[i][k] <= cand[i - 1][j]) continue;
+        const double s = std::max(s0, sampling.lens(cand[i - 1][j], cand[i][k]));
+        const double c = cost[i - 1][j] + w[i] * inner_pixels(g, cand[i][k], s);
+        if (c < cost[i][k]) {
+          cost[i][k] = c;
+          from[i][k] = static_cast<int>(j);
         }
       }
     }
-    double best = kInf;
-    int arg = -1;
-    for (size_t j = 0; j < cand[m - 1].size(); ++j) {
-      if (!std::isfinite(cost[m - 1][j])) continue;
-      const double c = cost[m - 1][j] + w[n - 1] * outer_pixels(g, s_layer(cand[m - 1][j], kInf));
-      if (c < best) {
-        best = c;
-        arg = static_cast<int>(j);
-      }
-    }
-    if (arg < 0)
-      throw Error("layers: the display is too small for " + std::to_string(n) +
-                  " layers at this grid step");
-    radii.assign(m, 0.0);
-    for (int i = m - 1; i >= 0; --i) {
-      radii[i] = cand[i][arg];
-      if (i > 0) arg = from[i][arg];
+  }
+  double best = kInf;
+  int arg = -1;
+  for (size_t j = 0; j < cand[m - 1].size(); ++j) {
+    if (!std::isfinite(cost[m - 1][j])) continue;
+    const double c =
+        cost[m - 1][j] + w[n - 1] * outer_pixels(g, sampling.layer(cand[m - 1][j], kInf));
+    if (c < best) {
+      best = c;
+      arg = static_cast<int>(j);
     }
   }
+  if (arg < 0)
+    throw Error("layers: the display is too small for " + std::to_string(n) +
+                " layers at this grid step");
+  std::vector<double> radii(m, 0.0);
+  for (int i = m - 1; i >= 0; --i) {
+    radii[i] = cand[i][arg];
+    if (i > 0) arg = from[i][arg];
+  }
+  return radii;
+}
 
+// The plan of layers with radii e_1 .. e_{n-1}.
+LayerPlan make_plan(const Display& display, const AcuityModel& acuity, const Geometry& g,
+                    const std::vector<double>& radii, const LayerSampling& sampling) {
+  const int n = static_cast<int>(radii.size()) + 1;
   LayerPlan plan;
   plan.display = display;
   plan.acuity = acuity;
@@ -188,7 +217,7 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   for (int i = 0; i < n; ++i) {
     Layer L;
     const double inner = i > 0 ? radii[i - 1] : 0.0;
-    const double s = s_layer(inner, i < n - 1 ? radii[i] : kInf);
+    const double s = sampling.layer(inner, i < n - 1 ? radii[i] : kInf);
     L.sampling_factor = s;
     if (i < n - 1) {
       L.radius_deg = radii[i];
@@ -208,6 +237,24 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   }
   if (n == 1) plan.total_pixels_half_rate = plan.total_pixels;
   return plan;
+}
+
+}  // namespace
+
+LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
+                      const PlannerOptions& opt) {
+  const std::vector<double> w = checked_weights(display, acuity, opt);
+  Geometry g;
+  g.focal = display.eye_distance_px();
+  g.long_axis = display.long_axis_px();
+  g.aspect = display.aspect();
+  g.sharp = display.sharpness_deg();
+  g.e_star = display.half_fov_deg();
+  const LayerSampling sampling(display, acuity, opt);
+  const std::vector<double> grid = candidate_radii(g, opt);
+  const std::vector<double> radii =
+      opt.layers > 1 ? optimal_radii(g, grid, w, sampling, acuity, opt) : std::vector<double>{};
+  return make_plan(display, acuity, g, radii, sampling);
 }
 
 void to_json(nlohmann::json& j, const LayerPlan& p) {
@@ -246,7 +293,7 @@ std::vector<SweepRow> fov_sweep(double from, double to, double step, double grid
     throw Error("sweep: need 0 < from <= to < 179 and step > 0");
   }
   std::vector<SweepRow> rows;
-  const AcuityModel qa = AcuityModel::quality("A"), qb = AcuityModel::quality("B");
+  const AcuityModel qa = AcuityModel::preset("A"), qb = AcuityModel::preset("B");
   for (double fov = from; fov <= to + 1e-9; fov += step) {
     SweepRow row;
     row.fov_deg = fov;

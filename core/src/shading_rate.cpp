@@ -148,9 +148,9 @@ void ShadingRateOptions::validate() const {
   if (tile_px != 8 && tile_px != 16 && tile_px != 32) {
     throw Error("tile: expected 8, 16 or 32 pixels, got " + std::to_string(tile_px));
   }
-  if (!std::isfinite(latency_margin_deg) || latency_margin_deg < 0.0) {
-    throw Error("latency margin: expected a finite number of degrees >= 0, got " +
-                std::to_string(latency_margin_deg));
+  if (!std::isfinite(latency_travel_deg) || latency_travel_deg < 0.0) {
+    throw Error("latency travel: expected a finite number of degrees >= 0, got " +
+                std::to_string(latency_travel_deg));
   }
   if (!std::isfinite(fovea_scale) || fovea_scale < 1.0 || fovea_scale > 100.0) {
     throw Error("fovea scale: expected 1..100, got " + std::to_string(fovea_scale));
@@ -263,7 +263,7 @@ TileBounds tile_bounds(const Display& display, const std::array<int, 4>& rect,
 }
 
 // The coarsest supported rate for a tile whose point nearest the gaze is at
-// `e` degrees (latency margin and fovea scale applied).
+// `e` degrees (latency travel and fovea scale applied).
 ShadingRate rate_within(const TileBounds& b, double e, const AcuityModel& acuity,
                         const std::vector<ShadingRate>& supported) {
   const double half_cycle = 0.5 * acuity.mar_deg(e) * kRad;
@@ -285,12 +285,12 @@ ShadingRate rate_within(const TileBounds& b, double e, const AcuityModel& acuity
 }
 
 // Eccentricity of the tile's point nearest the gaze, divided by the fovea
-// scale, less the latency margin.
+// scale, less the latency travel.
 double tile_eccentricity(const Display& display, Vec2d gaze, const std::array<int, 4>& rect,
-                         double latency_margin_deg, double fovea_scale) {
+                         double latency_travel_deg, double fovea_scale) {
   return std::max(
       0.0, min_eccentricity(display, gaze, rect[0], rect[1], rect[2], rect[3]) / fovea_scale -
-               latency_margin_deg);
+               latency_travel_deg);
 }
 
 }  // namespace
@@ -300,7 +300,7 @@ ShadingRate tile_shading_rate(const Display& display, const AcuityModel& acuity,
   const auto table = display.lens_oversampling_table();
   return rate_within(
       tile_bounds(display, rect, table ? &*table : nullptr),
-      tile_eccentricity(display, gaze, rect, options.latency_margin_deg, options.fovea_scale),
+      tile_eccentricity(display, gaze, rect, options.latency_travel_deg, options.fovea_scale),
       acuity, options.supported);
 }
 
@@ -327,18 +327,18 @@ ShadingRatePlanner::ShadingRatePlanner(const Display& display, const AcuityModel
   }
 }
 
-ShadingRateImage ShadingRatePlanner::image(Vec2d gaze, double latency_margin_deg,
+ShadingRateImage ShadingRatePlanner::image(Vec2d gaze, double latency_travel_deg,
                                            double fovea_scale) const {
   if (!std::isfinite(gaze.x) || !std::isfinite(gaze.y)) throw Error("gaze: must be finite");
   ShadingRateOptions o = options_;
-  o.latency_margin_deg = latency_margin_deg;
+  o.latency_travel_deg = latency_travel_deg;
   o.fovea_scale = fovea_scale;
   o.validate();
   ShadingRateImage img = blank_;
   img.rates.reserve(tiles_.size());
   for (const Tile& t : tiles_) {
     img.rates.push_back(rate_within(
-        t.bounds, tile_eccentricity(display_, gaze, t.rect, latency_margin_deg, fovea_scale),
+        t.bounds, tile_eccentricity(display_, gaze, t.rect, latency_travel_deg, fovea_scale),
         acuity_, options_.supported));
   }
   return img;
@@ -347,7 +347,7 @@ ShadingRateImage ShadingRatePlanner::image(Vec2d gaze, double latency_margin_deg
 ShadingRateImage shading_rate_image(const Display& display, const AcuityModel& acuity, Vec2d gaze,
                                     const ShadingRateOptions& options) {
   return ShadingRatePlanner(display, acuity, options)
-      .image(gaze, options.latency_margin_deg, options.fovea_scale);
+      .image(gaze, options.latency_travel_deg, options.fovea_scale);
 }
 
 }  // namespace foveate

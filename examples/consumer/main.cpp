@@ -5,7 +5,7 @@
 
 int main() {
   const foveate::LayerPlan plan = foveate::plan_layers(foveate::Display::load("desktop-1080p"),
-                                                       foveate::AcuityModel::quality("A"));
+                                                       foveate::AcuityModel::preset("A"));
   for (const foveate::Layer& layer : plan.layers) {
     std::printf("layer: %.2f deg, s = %.2f, %dx%d\n", layer.radius_deg, layer.sampling_factor,
                 layer.width_px, layer.height_px);

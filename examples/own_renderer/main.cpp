@@ -1,7 +1,7 @@
 // A user's own renderer, foveated. The scene below knows nothing of
 // foveation: it says how to shade a screen position (GLSL) and binds its
 // uniforms. Any technique then decides which positions get shaded, at what
-// rate; foveate::Renderer runs the frames and gaze::GazeTracker turns a gaze
+// rate; foveate::FrameRunner runs the frames and gaze::GazeTracker turns a gaze
 // source into the gaze each frame follows. The program also registers a
 // technique of its own at run time ("letterbox"), which then runs like the
 // built-in ones. Run: ./own_renderer [technique] [out.png]
@@ -12,7 +12,7 @@
 #include "foveate/core/image.hpp"
 #include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 
 namespace {
 
@@ -104,15 +104,15 @@ int main(int argc, char** argv) {
     const int w = 640, h = 360;
     foveate::TechniqueConfig config;
     config.display = foveate::Display::load("desktop-1080p").resized(w, h);
-    config.acuity = foveate::AcuityModel::quality("A");
+    config.acuity = foveate::AcuityModel::preset("A");
     auto t = foveate::make_technique(technique, config);
 
     RingsScene scene;
-    foveate::RendererOptions options;
+    foveate::FrameRunnerOptions options;
     options.width = w;
     options.height = h;
     options.start_time_s = 1.0;
-    foveate::Renderer renderer(scene, options);
+    foveate::FrameRunner runner(scene, options);
     // The gaze: a fixed point here; "trace:FILE", "synthetic:7" or
     // "pupil" work the same way.
     foveate::gaze::GazeContext gc;
@@ -121,10 +121,10 @@ int main(int argc, char** argv) {
 
     foveate::FrameStats stats;
     for (int frame = 0; frame < 3; ++frame) {
-      const foveate::GazeState gaze = tracker.at(renderer.frame_input(frame).time_s);
-      stats = renderer.render(*t, frame, gaze);
+      const foveate::GazeState gaze = tracker.at(runner.frame_input(frame).time_s);
+      stats = runner.render(*t, frame, gaze);
     }
-    foveate::write_png(out, renderer.read_output());
+    foveate::write_png(out, runner.read_output());
     std::printf("%s: shaded %.0f of %.0f pixels (%.1f %%), wrote %s\n", technique.c_str(),
                 stats.shaded_pixels, stats.native_pixels,
                 100.0 * stats.shaded_pixels / stats.native_pixels, out.c_str());

@@ -18,7 +18,7 @@ std::string FilterCounters::summary() const {
 }
 
 GazeFilter::GazeFilter(FilterOptions options, Display display)
-    : options_(options), display_(std::move(display)), validator_(options.margin) {
+    : options_(options), display_(std::move(display)), validator_(options.off_screen_limit) {
   const FilterOptions& o = options_;
   auto bad = [](const char* what) { throw Error(std::string("gaze filter: ") + what); };
   if (!(o.min_confidence >= 0 && o.min_confidence <= 1)) bad("min_confidence must be in 0..1");
@@ -84,7 +84,7 @@ FilteredGaze GazeFilter::update(const GazeSample& s, double now_s) {
               std::max(done, o.main_sequence.amplitude_for_peak_deg(sac_peak_));
           if (done > 1e-9) {
             const double f = predicted / done;
-            const double lo = -o.margin, hi = 1.0 + o.margin;
+            const double lo = -o.off_screen_limit, hi = 1.0 + o.off_screen_limit;
             out_ = {std::clamp(sac_start_.x + f * (s.pos.x - sac_start_.x), lo, hi),
                     std::clamp(sac_start_.y + f * (s.pos.y - sac_start_.y), lo, hi)};
           }

@@ -6,6 +6,7 @@
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
+#include "foveate/gaze/nearest_object.hpp"
 #include "foveate/gaze/pupil.hpp"
 #include "foveate/gaze/synthetic.hpp"
 #include "foveate/gaze/trace.hpp"
@@ -77,9 +78,10 @@ std::string DropCounts::summary() const {
   return s + ")";
 }
 
-SampleValidator::SampleValidator(double margin) : margin_(margin) {
-  if (!(std::isfinite(margin) && margin >= 0.0 && margin <= 10.0)) {
-    throw Error("gaze margin: expected 0..10 screen widths, got " + format_number(margin));
+SampleValidator::SampleValidator(double off_screen_limit) : off_screen_limit_(off_screen_limit) {
+  if (!(std::isfinite(off_screen_limit) && off_screen_limit >= 0.0 && off_screen_limit <= 10.0)) {
+    throw Error("gaze off-screen limit: expected 0..10 screen sizes, got " +
+                format_number(off_screen_limit));
   }
 }
 
@@ -88,8 +90,9 @@ std::optional<DropReason> SampleValidator::check(const GazeSample& s) {
   if (!std::isfinite(s.time_s) || !std::isfinite(s.pos.x) || !std::isfinite(s.pos.y) ||
       !std::isfinite(s.confidence)) {
     r = DropReason::kNonFinite;
-  } else if (s.pos.x < -margin_ || s.pos.x > 1.0 + margin_ || s.pos.y < -margin_ ||
-             s.pos.y > 1.0 + margin_ || s.confidence < 0.0 || s.confidence > 1.0) {
+  } else if (s.pos.x < -off_screen_limit_ || s.pos.x > 1.0 + off_screen_limit_ ||
+             s.pos.y < -off_screen_limit_ || s.pos.y > 1.0 + off_screen_limit_ ||
+             s.confidence < 0.0 || s.confidence > 1.0) {
     r = DropReason::kOutOfRange;
   } else if (have_last_ && s.time_s < last_time_) {
     r = DropReason::kBackwards;

@@ -158,7 +158,7 @@ struct PupilSource::Impl {
   double offset = 0.0;  // tracker clock - local clock
   double last_message = 0.0;
 
-  explicit Impl(PupilOptions opt) : o(std::move(opt)), validator(o.margin) {}
+  explicit Impl(PupilOptions opt) : o(std::move(opt)), validator(o.off_screen_limit) {}
 
   double now() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

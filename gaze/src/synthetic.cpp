@@ -10,94 +10,6 @@
 
 namespace foveate::gaze {
 
-// ------------------------------------------------------------ main sequence
-
-double MainSequence::duration_s(double amplitude_deg) const {
-  return (d0_ms + k_ms_per_deg * std::max(0.0, amplitude_deg)) * 1e-3;
-}
-
-double MainSequence::peak_velocity_deg_per_s(double amplitude_deg) const {
-  return vmax_deg_per_s * (1.0 - std::exp(-std::max(0.0, amplitude_deg) / c_deg));
-}
-
-double MainSequence::amplitude_for_peak_deg(double peak) const {
-  const double f = std::clamp(peak / vmax_deg_per_s, 0.0, 0.999);
-  return -c_deg * std::log1p(-f);
-}
-
-namespace {
-
-/// Peak / mean of u^a (1-u)^a on [0, 1]: 0.25^a / B(a+1, a+1).
-double profile_ratio(double a) {
-  return std::exp(a * std::log(0.25) + std::lgamma(2 * a + 2) - 2 * std::lgamma(a + 1));
-}
-
-double inv_beta(double a) { return std::exp(std::lgamma(2 * a + 2) - 2 * std::lgamma(a + 1)); }
-
-}  // namespace
-
-double profile_exponent_for_ratio(double ratio) {
-  const double r = std::clamp(ratio, 1.0001, 3.5);
-  double lo = 0.0, hi = 12.0;
-  for (int i = 0; i < 80; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (profile_ratio(mid) < r ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-double profile_velocity(double u, double a) {
-  if (u <= 0.0 || u >= 1.0) return 0.0;
-  return std::pow(u * (1.0 - u), a) * inv_beta(a);
-}
-
-namespace {
-
-/// Continued fraction of the incomplete beta function (modified Lentz).
-double beta_cf(double a, double b, double x) {
-  constexpr double tiny = 1e-300, eps = 1e-15;
-  const double qab = a + b, qap = a + 1.0, qam = a - 1.0;
-  double c = 1.0, d = 1.0 - qab * x / qap;
-  if (std::fabs(d) < tiny) d = tiny;
-  d = 1.0 / d;
-  double h = d;
-  for (int m = 1; m <= 300; ++m) {
-    const double m2 = 2.0 * m;
-    double aa = m * (b - m) * x / ((qam + m2) * (a + m2));
-    d = 1.0 + aa * d;
-    if (std::fabs(d) < tiny) d = tiny;
-    c = 1.0 + aa / c;
-    if (std::fabs(c) < tiny) c = tiny;
-    d = 1.0 / d;
-    h *= d * c;
-    aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
-    d = 1.0 + aa * d;
-    if (std::fabs(d) < tiny) d = tiny;
-    c = 1.0 + aa / c;
-    if (std::fabs(c) < tiny) c = tiny;
-    d = 1.0 / d;
-    const double del = d * c;
-    h *= del;
-    if (std::fabs(del - 1.0) < eps) break;
-  }
-  return h;
-}
-
-}  // namespace
-
-double profile_position(double u, double a) {
-  if (u <= 0.0) return 0.0;
-  if (u >= 1.0) return 1.0;
-  if (u == 0.5) return 0.5;
-  // I_u(p, p) with p = a + 1; the profile is symmetric, so use the side where
-  // the continued fraction converges fast.
-  const double p = a + 1.0;
-  if (u > 0.5) return 1.0 - profile_position(1.0 - u, a);
-  const double front =
-      std::exp(std::lgamma(2 * p) - 2 * std::lgamma(p) + p * std::log(u) + p * std::log1p(-u));
-  return front * beta_cf(p, p, u) / p;
-}
-
 const char* to_string(Movement::Kind kind) {
   switch (kind) {
     case Movement::Kind::kFixation:
@@ -159,8 +71,8 @@ struct SyntheticViewer::Impl {
     if (!(o.saccade_min_deg > 0 && o.saccade_max_deg >= o.saccade_min_deg &&
           o.fixation_mean_s > 0 && o.fixation_min_s > 0 && o.blink_max_s >= o.blink_min_s &&
           o.blink_min_s > 0 && o.pursuit_max_s >= o.pursuit_min_s && o.pursuit_min_s > 0 &&
-          o.rate_hz >= 0 && o.latency_ms >= 0 && o.noise_deg >= 0 && o.screen_margin >= 0 &&
-          o.screen_margin < 0.5)) {
+          o.rate_hz >= 0 && o.latency_ms >= 0 && o.noise_deg >= 0 && o.edge_inset >= 0 &&
+          o.edge_inset < 0.5)) {
       throw Error("synthetic viewer: inconsistent options");
     }
     px_per_deg = display.eye_distance_px() * std::tan(std::numbers::pi / 180.0);
@@ -231,7 +143,7 @@ struct SyntheticViewer::Impl {
   }
 
   void push_saccade(double t0, Vec2d p0) {
-    const double lo = o.screen_margin, hi = 1.0 - o.screen_margin;
+    const double lo = o.edge_inset, hi = 1.0 - o.edge_inset;
     Vec2d target = p0;
     double amp = 0;
     for (int tries = 0; tries < 32; ++tries) {
@@ -259,7 +171,7 @@ struct SyntheticViewer::Impl {
     s.m.from = p0;
     const double speed = uniform(o.pursuit_min_deg_per_s, o.pursuit_max_deg_per_s);
     double dur = uniform(o.pursuit_min_s, o.pursuit_max_s);
-    const double lo = o.screen_margin, hi = 1.0 - o.screen_margin;
+    const double lo = o.edge_inset, hi = 1.0 - o.edge_inset;
     Vec2d v{};
     for (int tries = 0; tries < 16; ++tries) {
       const double dir = uniform(0.0, 2.0 * std::numbers::pi);
@@ -417,50 +329,5 @@ std::string SyntheticViewer::describe() const {
   if (o.latency_ms > 0) s += ", " + std::to_string(static_cast<int>(o.latency_ms)) + " ms latency";
   return s + ")";
 }
-
-// ------------------------------------------------------------ nearest object
-
-NearestObjectViewer::NearestObjectViewer(const Display& display,
-                                         std::function<std::vector<Vec2d>(double)> objects,
-                                         MainSequence main_sequence, double catch_up_deg)
-    : display_(display),
-      objects_(std::move(objects)),
-      ms_(main_sequence),
-      catch_up_deg_(catch_up_deg) {}
-
-GazeSample NearestObjectViewer::sample(double t_s) {
-  const std::vector<Vec2d> objs = objects_ ? objects_(t_s) : std::vector<Vec2d>{};
-  if (!started_) {
-    pos_ = objs.empty() ? Vec2d{0.5, 0.5} : objs.front();
-    started_ = true;
-  }
-  if (in_saccade_) {
-    const double u = (t_s - sac_start_) / sac_dur_;
-    if (u < 1.0) {
-      pos_ = lerp(sac_from_, sac_to_, profile_position(u, sac_a_));
-      return {t_s, pos_, 1.0, true};
-    }
-    in_saccade_ = false;
-    pos_ = sac_to_;
-  }
-  if (!objs.empty()) {
-    const Vec2d target = objs.front();
-    const double amp = angle_between_deg(display_, pos_, target);
-    if (amp > catch_up_deg_) {
-      // A new or escaped object: saccade to where it is now; pursuit resumes after landing.
-      in_saccade_ = true;
-      sac_start_ = t_s;
-      sac_from_ = pos_;
-      sac_to_ = target;
-      sac_dur_ = ms_.duration_s(amp);
-      sac_a_ = profile_exponent_for_ratio(ms_.peak_velocity_deg_per_s(amp) * sac_dur_ / amp);
-    } else {
-      pos_ = target;  // smooth pursuit
-    }
-  }
-  return {t_s, pos_, 1.0, true};
-}
-
-std::string NearestObjectViewer::describe() const { return "looking at the nearest scene object"; }
 
 }  // namespace foveate::gaze

@@ -18,105 +18,131 @@ namespace foveate::gaze {
 
 using namespace detail;
 
+namespace {
+
+/// What a JSON trace's object form says about its samples.
+struct JsonTraceHeader {
+  TimeUnit time_unit = TimeUnit::kAuto;
+  PosUnit pos_unit = PosUnit::kAuto;
+  const nlohmann::json* samples = nullptr;
+};
+
+/// Reads the object form's fields (format, units, screen size, samples).
+JsonTraceHeader read_json_header(const nlohmann::json& j, const std::string& where, int& width,
+                                 int& height) {
+  JsonTraceHeader h;
+  JsonReader r(j, where);
+  std::string format, tunit, punit;
+  if (r.string("format", format) && format != "foveate-gaze") {
+    throw Error(r.path("format") + ": expected \"foveate-gaze\", got \"" + format + "\"");
+  }
+  if (r.string("time_unit", tunit)) {
+    if (tunit == "s") {
+      h.time_unit = TimeUnit::kSeconds;
+    } else if (tunit == "ms") {
+      h.time_unit = TimeUnit::kMilliseconds;
+    } else {
+      throw Error(r.path("time_unit") + ": expected \"s\" or \"ms\", got \"" + tunit + "\"");
+    }
+  }
+  if (r.string("position_unit", punit)) {
+    if (punit == "normalized") {
+      h.pos_unit = PosUnit::kNormalized;
+    } else if (punit == "px") {
+      h.pos_unit = PosUnit::kPixels;
+    } else {
+      throw Error(r.path("position_unit") + ": expected \"normalized\" or \"px\", got \"" + punit +
+                  "\"");
+    }
+  }
+  if (const nlohmann::json* sp = r.get("screen_px")) {
+    if (!sp->is_array() || sp->size() != 2 || !(*sp)[0].is_number_integer() ||
+        !(*sp)[1].is_number_integer() || (*sp)[0].get<long long>() < 1 ||
+        (*sp)[1].get<long long>() < 1 || (*sp)[0].get<long long>() > 65536 ||
+        (*sp)[1].get<long long>() > 65536) {
+      throw Error(r.path("screen_px") + ": expected [width, height] in pixels");
+    }
+    width = (*sp)[0].get<int>();
+    height = (*sp)[1].get<int>();
+  }
+  h.samples = r.get("samples");
+  if (!h.samples) throw Error(where + ": samples: missing");
+  r.finish();
+  return h;
+}
+
+double json_number(const nlohmann::json& v, const std::string& path, double fallback) {
+  if (v.is_null()) return fallback;
+  if (!v.is_number()) throw Error(path + ": expected a number or null, got " + v.type_name());
+  return v.get<double>();
+}
+
+/// One sample, [t, x, y(, confidence(, valid))] or {"t", "x", "y", ...}, at
+/// path `p`; its latency (NaN where none) in `latency_ms`.
+GazeSample read_json_sample(const nlohmann::json& e, const std::string& p, double& latency_ms,
+                            Builder& b) {
+  GazeSample s;
+  latency_ms = kNaN;
+  if (e.is_array()) {
+    if (e.size() < 3 || e.size() > 5) {
+      throw Error(p + ": expected [t, x, y] or [t, x, y, confidence(, valid)]");
+    }
+    s.time_s = json_number(e[0], p + "[0]", kNaN);
+    s.pos = {json_number(e[1], p + "[1]", kNaN), json_number(e[2], p + "[2]", kNaN)};
+    if (e.size() > 3) s.confidence = json_number(e[3], p + "[3]", 1.0);
+    if (e.size() > 4) {
+      if (!e[4].is_boolean() && !e[4].is_number_integer()) {
+        throw Error(p + "[4]: valid: expected true/false or 1/0");
+      }
+      s.valid = e[4].is_boolean() ? e[4].get<bool>() : e[4].get<long long>() != 0;
+    }
+  } else if (e.is_object()) {
+    JsonReader r(e, p);
+    const nlohmann::json* t = r.get("t");
+    if (!t) t = r.get("time");
+    if (!t) throw Error(p + ": missing \"t\"");
+    const nlohmann::json* x = r.get("x");
+    const nlohmann::json* y = r.get("y");
+    if (!x || !y) throw Error(p + ": missing \"x\" or \"y\"");
+    s.time_s = json_number(*t, p + ".t", kNaN);
+    s.pos = {json_number(*x, p + ".x", kNaN), json_number(*y, p + ".y", kNaN)};
+    if (const nlohmann::json* c = r.get("confidence"))
+      s.confidence = json_number(*c, p + ".confidence", 1.0);
+    if (const nlohmann::json* l = r.get("latency_ms")) {
+      latency_ms = json_number(*l, p + ".latency_ms", kNaN);
+      b.with_latency = true;
+    }
+    r.boolean("valid", s.valid);
+    r.finish();
+  } else {
+    throw Error(p + ": expected an array [t, x, y, ...] or an object {\"t\", \"x\", \"y\"}");
+  }
+  return s;
+}
+
+}  // namespace
+
 Trace parse_trace_json(const std::string& text, const std::string& where,
                        const TraceOptions& options) {
   const nlohmann::json j = parse_json(text, where);
-  Builder b(options.margin);
+  Builder b(options.off_screen_limit);
   b.trace.format = "json";
-  TimeUnit htu = TimeUnit::kAuto;
-  PosUnit hpu = PosUnit::kAuto;
   int width = options.width_px, height = options.height_px;
-  const nlohmann::json* samples = &j;
-  if (j.is_object()) {
-    JsonReader r(j, where);
-    std::string format, tunit, punit;
-    if (r.string("format", format) && format != "foveate-gaze") {
-      throw Error(r.path("format") + ": expected \"foveate-gaze\", got \"" + format + "\"");
-    }
-    if (r.string("time_unit", tunit)) {
-      if (tunit == "s") {
-        htu = TimeUnit::kSeconds;
-      } else if (tunit == "ms") {
-        htu = TimeUnit::kMilliseconds;
-      } else {
-        throw Error(r.path("time_unit") + ": expected \"s\" or \"ms\", got \"" + tunit + "\"");
-      }
-    }
-    if (r.string("position_unit", punit)) {
-      if (punit == "normalized") {
-        hpu = PosUnit::kNormalized;
-      } else if (punit == "px") {
-        hpu = PosUnit::kPixels;
-      } else {
-        throw Error(r.path("position_unit") + ": expected \"normalized\" or \"px\", got \"" +
-                    punit + "\"");
-      }
-    }
-    if (const nlohmann::json* sp = r.get("screen_px")) {
-      if (!sp->is_array() || sp->size() != 2 || !(*sp)[0].is_number_integer() ||
-          !(*sp)[1].is_number_integer() || (*sp)[0].get<long long>() < 1 ||
-          (*sp)[1].get<long long>() < 1 || (*sp)[0].get<long long>() > 65536 ||
-          (*sp)[1].get<long long>() > 65536) {
-        throw Error(r.path("screen_px") + ": expected [width, height] in pixels");
-      }
-      width = (*sp)[0].get<int>();
-      height = (*sp)[1].get<int>();
-    }
-    samples = r.get("samples");
-    if (!samples) throw Error(where + ": samples: missing");
-    r.finish();
-  }
-  if (!samples->is_array()) throw Error(where + ": samples: expected an array");
-  const TimeUnit tu = resolve(htu, options.time_unit, TimeUnit::kSeconds, where, "time");
-  const PosUnit pu = resolve(hpu, options.pos_unit, PosUnit::kNormalized, where, "positions");
-
-  auto num = [&](const nlohmann::json& v, const std::string& path, double fallback) {
-    if (v.is_null()) return fallback;
-    if (!v.is_number()) throw Error(path + ": expected a number or null, got " + v.type_name());
-    return v.get<double>();
-  };
-  for (size_t i = 0; i < samples->size(); ++i) {
-    const nlohmann::json& e = (*samples)[i];
-    const std::string p = where + ": samples[" + std::to_string(i) + "]";
-    GazeSample s;
-    double lat = kNaN;
-    if (e.is_array()) {
-      if (e.size() < 3 || e.size() > 5) {
-        throw Error(p + ": expected [t, x, y] or [t, x, y, confidence(, valid)]");
-      }
-      s.time_s = num(e[0], p + "[0]", kNaN);
-      s.pos = {num(e[1], p + "[1]", kNaN), num(e[2], p + "[2]", kNaN)};
-      if (e.size() > 3) s.confidence = num(e[3], p + "[3]", 1.0);
-      if (e.size() > 4) {
-        if (!e[4].is_boolean() && !e[4].is_number_integer()) {
-          throw Error(p + "[4]: valid: expected true/false or 1/0");
-        }
-        s.valid = e[4].is_boolean() ? e[4].get<bool>() : e[4].get<long long>() != 0;
-      }
-    } else if (e.is_object()) {
-      JsonReader r(e, p);
-      const nlohmann::json* t = r.get("t");
-      if (!t) t = r.get("time");
-      if (!t) throw Error(p + ": missing \"t\"");
-      const nlohmann::json* x = r.get("x");
-      const nlohmann::json* y = r.get("y");
-      if (!x || !y) throw Error(p + ": missing \"x\" or \"y\"");
-      s.time_s = num(*t, p + ".t", kNaN);
-      s.pos = {num(*x, p + ".x", kNaN), num(*y, p + ".y", kNaN)};
-      if (const nlohmann::json* c = r.get("confidence"))
-        s.confidence = num(*c, p + ".confidence", 1.0);
-      if (const nlohmann::json* l = r.get("latency_ms")) {
-        lat = num(*l, p + ".latency_ms", kNaN);
-        b.with_latency = true;
-      }
-      r.boolean("valid", s.valid);
-      r.finish();
-    } else {
-      throw Error(p + ": expected an array [t, x, y, ...] or an object {\"t\", \"x\", \"y\"}");
-    }
+  JsonTraceHeader h;
+  h.samples = &j;
+  if (j.is_object()) h = read_json_header(j, where, width, height);
+  const nlohmann::json& samples = *h.samples;
+  if (!samples.is_array()) throw Error(where + ": samples: expected an array");
+  const TimeUnit tu = resolve(h.time_unit, options.time_unit, TimeUnit::kSeconds, where, "time");
+  const PosUnit pu =
+      resolve(h.pos_unit, options.pos_unit, PosUnit::kNormalized, where, "positions");
+  for (size_t i = 0; i < samples.size(); ++i) {
+    double latency_ms = kNaN;
+    GazeSample s =
+        read_json_sample(samples[i], where + ": samples[" + std::to_string(i) + "]", latency_ms, b);
     if (tu == TimeUnit::kMilliseconds) s.time_s *= 1e-3;
     if (pu == PosUnit::kPixels) s.pos = {s.pos.x / width, s.pos.y / height};
-    b.add(s, lat);
+    b.add(s, latency_ms);
   }
   return b.finish(where, pu);
 }

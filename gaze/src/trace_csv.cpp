@@ -4,6 +4,7 @@
 // TraceOptions::strict); a last line cut off mid-write is dropped likewise.
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 
 #include "foveate/core/error.hpp"
 #include "trace_parse.hpp"
@@ -101,20 +102,135 @@ struct Column {
   std::string name;
 };
 
+/// What a header says: the columns and the units.
+struct CsvHeader {
+  std::vector<std::string> names;
+  size_t line = 0;
+  Column t, x, y, conf, valid, latency;
+  bool pupil = false;
+  TimeUnit time_unit = TimeUnit::kSeconds;
+  PosUnit pos_unit = PosUnit::kNormalized;
+  size_t needed = 0;  ///< fields a row must have
+};
+
+/// Reads the header line `fields` (line `line_no`, text `t`).
+CsvHeader read_header(const std::vector<std::string>& fields, size_t line_no, const std::string& t,
+                      const std::string& where, const TraceOptions& options) {
+  CsvHeader h;
+  h.names = fields;
+  h.line = line_no;
+  const std::string at = where_line(where, line_no);
+  TimeUnit htu = TimeUnit::kAuto;
+  PosUnit hpu = PosUnit::kAuto;
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const std::string n = lower(fields[i]);
+    auto set = [&](Column& c) {
+      if (c.index >= 0) {
+        throw Error(at + ": columns '" + c.name + "' and '" + fields[i] +
+                    "' both give the same value");
+      }
+      c = {static_cast<int>(i), fields[i]};
+    };
+    if (n == "gaze_timestamp") {
+      set(h.t);
+      h.pupil = true;
+    } else if (n == "norm_pos_x") {
+      set(h.x);
+    } else if (n == "norm_pos_y") {
+      set(h.y);
+    } else if (n == "time" || n == "t" || n == "timestamp" || n == "time_s" || n == "t_s" ||
+               n == "timestamp_s") {
+      set(h.t);
+      if (n.size() > 2 && n.ends_with("_s")) htu = TimeUnit::kSeconds;
+    } else if (n == "time_ms" || n == "t_ms" || n == "timestamp_ms") {
+      set(h.t);
+      htu = TimeUnit::kMilliseconds;
+    } else if (n == "x" || n == "gaze_x" || n == "x_norm") {
+      set(h.x);
+      if (n == "x_norm") hpu = PosUnit::kNormalized;
+    } else if (n == "x_px" || n == "gaze_x_px") {
+      set(h.x);
+      hpu = PosUnit::kPixels;
+    } else if (n == "y" || n == "gaze_y" || n == "y_norm") {
+      set(h.y);
+    } else if (n == "y_px" || n == "gaze_y_px") {
+      set(h.y);
+    } else if (n == "confidence" || n == "conf") {
+      set(h.conf);
+    } else if (n == "valid") {
+      set(h.valid);
+    } else if (n == "latency_ms") {
+      set(h.latency);
+    }
+  }
+  if (h.t.index < 0 || h.x.index < 0 || h.y.index < 0) {
+    throw Error(at +
+                ": the header needs a time column (time_s or time_ms), x and y (or x_px, y_px; "
+                "or Pupil's gaze_timestamp, norm_pos_x, norm_pos_y); got '" +
+                t + "'");
+  }
+  if (h.pupil) {
+    if (h.x.name != "norm_pos_x" || h.y.name != "norm_pos_y") {
+      throw Error(at + ": a Pupil export (gaze_timestamp) needs norm_pos_x and norm_pos_y");
+    }
+    htu = TimeUnit::kSeconds;
+    hpu = PosUnit::kNormalized;
+  }
+  h.time_unit = resolve(htu, options.time_unit, TimeUnit::kSeconds, at, "time");
+  h.pos_unit = resolve(hpu, options.pos_unit, PosUnit::kNormalized, at, "positions");
+  for (const Column* c : {&h.t, &h.x, &h.y, &h.conf, &h.valid, &h.latency}) {
+    h.needed = std::max(h.needed, static_cast<size_t>(c->index + 1));
+  }
+  return h;
+}
+
+/// Adds the data row `fields` to `b`; throws a RowProblem where it cannot.
+void read_row(const std::vector<std::string>& fields, bool split_ok, const CsvHeader& h, int width,
+              int height, Builder& b) {
+  if (!split_ok) throw RowProblem{"unterminated quoted field"};
+  if (fields.size() < h.needed) {
+    throw RowProblem{"expected " + std::to_string(h.names.size()) +
+                     " fields as in the header (line " + std::to_string(h.line) + "), got " +
+                     std::to_string(fields.size())};
+  }
+  auto number = [&](const Column& c, double fallback) {
+    if (c.index < 0) return fallback;
+    const std::string& f = fields[c.index];
+    double v = 0;
+    if (!parse_number(f, v)) throw RowProblem{c.name + ": '" + f + "' is not a number"};
+    return v;
+  };
+  GazeSample s;
+  s.time_s = number(h.t, kNaN);
+  if (h.time_unit == TimeUnit::kMilliseconds) s.time_s *= 1e-3;
+  s.pos = {number(h.x, kNaN), number(h.y, kNaN)};
+  if (h.pupil) s.pos.y = 1.0 - s.pos.y;  // Pupil: origin bottom-left
+  if (h.pos_unit == PosUnit::kPixels) s.pos = {s.pos.x / width, s.pos.y / height};
+  s.confidence = number(h.conf, 1.0);
+  if (h.conf.index >= 0 && fields[h.conf.index].empty()) s.confidence = 1.0;
+  if (h.valid.index >= 0 && !parse_bool(fields[h.valid.index], s.valid)) {
+    throw RowProblem{"valid: expected 1/0 or true/false, got '" + fields[h.valid.index] + "'"};
+  }
+  b.add(s, number(h.latency, kNaN));
+}
+
+/// A row that cannot be read: an error with --strict, else skipped with a
+/// warning (the first kMaxRowWarnings of them) and counted.
+void skip_row(Builder& b, std::string what, bool cut_off, const TraceOptions& options) {
+  if (cut_off) what += " (the last line is cut off: no newline at its end)";
+  if (options.strict) throw Error(what + "; rejected by --strict");
+  ++b.trace.skipped_rows;
+  if (b.trace.warnings.size() < kMaxRowWarnings) b.trace.warnings.push_back(what + "; row skipped");
+}
+
 }  // namespace
 
 Trace parse_trace_csv(const std::string& text, const std::string& where,
                       const TraceOptions& options) {
-  Builder b(options.margin);
+  Builder b(options.off_screen_limit);
   int width = options.width_px, height = options.height_px;
-  std::vector<std::string> header, fields;
-  size_t header_line = 0;
-  Column ct, cx, cy, cconf, cvalid, clat;
-  bool pupil = false;
-  TimeUnit tu = TimeUnit::kSeconds;
-  PosUnit pu = PosUnit::kNormalized;
-  size_t needed = 0;
-
+  std::vector<std::string> fields;
+  std::optional<CsvHeader> header;
   size_t line_no = 0, pos = 0;
   while (pos < text.size()) {
     size_t nl = text.find('\n', pos);
@@ -129,123 +245,24 @@ Trace parse_trace_csv(const std::string& text, const std::string& where,
     if (t.empty()) continue;
     if (t[0] == '#') {
       const std::string c = lower(trim(t.substr(1)));
-      if (c.rfind("screen_px:", 0) == 0) {
-        if (!parse_screen(c.substr(10), width, height)) {
-          throw Error(where_line(where, line_no) + ": screen_px: expected WIDTHxHEIGHT, got '" +
-                      trim(t.substr(1)).substr(10) + "'");
-        }
+      if (c.rfind("screen_px:", 0) == 0 && !parse_screen(c.substr(10), width, height)) {
+        throw Error(where_line(where, line_no) + ": screen_px: expected WIDTHxHEIGHT, got '" +
+                    trim(t.substr(1)).substr(10) + "'");
       }
       continue;
     }
     const bool split_ok = split_csv(line, fields);
-    if (!split_ok && header.empty()) {
-      throw Error(where_line(where, line_no) + ": unterminated quoted field");
-    }
-    if (header.empty()) {
-      header = fields;
-      header_line = line_no;
-      TimeUnit htu = TimeUnit::kAuto;
-      PosUnit hpu = PosUnit::kAuto;
-      for (size_t i = 0; i < header.size(); ++i) {
-        const std::string n = lower(header[i]);
-        const int idx = static_cast<int>(i);
-        auto set = [&](Column& c) {
-          if (c.index >= 0) {
-            throw Error(where_line(where, line_no) + ": columns '" + c.name + "' and '" +
-                        header[i] + "' both give the same value");
-          }
-          c = {idx, header[i]};
-        };
-        if (n == "gaze_timestamp") {
-          set(ct);
-          pupil = true;
-        } else if (n == "norm_pos_x") {
-          set(cx);
-        } else if (n == "norm_pos_y") {
-          set(cy);
-        } else if (n == "time" || n == "t" || n == "timestamp" || n == "time_s" || n == "t_s" ||
-                   n == "timestamp_s") {
-          set(ct);
-          if (n.size() > 2 && n.ends_with("_s")) htu = TimeUnit::kSeconds;
-        } else if (n == "time_ms" || n == "t_ms" || n == "timestamp_ms") {
-          set(ct);
-          htu = TimeUnit::kMilliseconds;
-        } else if (n == "x" || n == "gaze_x" || n == "x_norm") {
-          set(cx);
-          if (n == "x_norm") hpu = PosUnit::kNormalized;
-        } else if (n == "x_px" || n == "gaze_x_px") {
-          set(cx);
-          hpu = PosUnit::kPixels;
-        } else if (n == "y" || n == "gaze_y" || n == "y_norm") {
-          set(cy);
-        } else if (n == "y_px" || n == "gaze_y_px") {
-          set(cy);
-        } else if (n == "confidence" || n == "conf") {
-          set(cconf);
-        } else if (n == "valid") {
-          set(cvalid);
-        } else if (n == "latency_ms") {
-          set(clat);
-        }
-      }
-      if (ct.index < 0 || cx.index < 0 || cy.index < 0) {
-        throw Error(where_line(where, line_no) +
-                    ": the header needs a time column (time_s or time_ms), x and y (or x_px, y_px; "
-                    "or Pupil's gaze_timestamp, norm_pos_x, norm_pos_y); got '" +
-                    t + "'");
-      }
-      if (pupil) {
-        if (cx.name != "norm_pos_x" || cy.name != "norm_pos_y") {
-          throw Error(where_line(where, line_no) +
-                      ": a Pupil export (gaze_timestamp) needs norm_pos_x and norm_pos_y");
-        }
-        htu = TimeUnit::kSeconds;
-        hpu = PosUnit::kNormalized;
-      }
-      tu = resolve(htu, options.time_unit, TimeUnit::kSeconds, where_line(where, line_no), "time");
-      pu = resolve(hpu, options.pos_unit, PosUnit::kNormalized, where_line(where, line_no),
-                   "positions");
-      for (const Column* c : {&ct, &cx, &cy, &cconf, &cvalid, &clat}) {
-        needed = std::max(needed, static_cast<size_t>(c->index + 1));
-      }
-      b.with_latency = clat.index >= 0;
-      b.trace.format = pupil ? "pupil-csv" : "csv";
+    if (!header) {
+      if (!split_ok) throw Error(where_line(where, line_no) + ": unterminated quoted field");
+      header = read_header(fields, line_no, t, where, options);
+      b.with_latency = header->latency.index >= 0;
+      b.trace.format = header->pupil ? "pupil-csv" : "csv";
       continue;
     }
     try {
-      if (!split_ok) throw RowProblem{"unterminated quoted field"};
-      if (fields.size() < needed) {
-        throw RowProblem{"expected " + std::to_string(header.size()) +
-                         " fields as in the header (line " + std::to_string(header_line) +
-                         "), got " + std::to_string(fields.size())};
-      }
-      auto number = [&](const Column& c, double fallback) {
-        if (c.index < 0) return fallback;
-        const std::string& f = fields[c.index];
-        double v = 0;
-        if (!parse_number(f, v)) throw RowProblem{c.name + ": '" + f + "' is not a number"};
-        return v;
-      };
-      GazeSample s;
-      s.time_s = number(ct, kNaN);
-      if (tu == TimeUnit::kMilliseconds) s.time_s *= 1e-3;
-      s.pos = {number(cx, kNaN), number(cy, kNaN)};
-      if (pupil) s.pos.y = 1.0 - s.pos.y;  // Pupil: origin bottom-left
-      if (pu == PosUnit::kPixels) s.pos = {s.pos.x / width, s.pos.y / height};
-      s.confidence = number(cconf, 1.0);
-      if (cconf.index >= 0 && fields[cconf.index].empty()) s.confidence = 1.0;
-      if (cvalid.index >= 0 && !parse_bool(fields[cvalid.index], s.valid)) {
-        throw RowProblem{"valid: expected 1/0 or true/false, got '" + fields[cvalid.index] + "'"};
-      }
-      b.add(s, number(clat, kNaN));
+      read_row(fields, split_ok, *header, width, height, b);
     } catch (const RowProblem& p) {
-      std::string what = where_line(where, line_no) + ": " + p.what;
-      if (cut_off) what += " (the last line is cut off: no newline at its end)";
-      if (options.strict) throw Error(what + "; rejected by --strict");
-      ++b.trace.skipped_rows;
-      if (b.trace.warnings.size() < kMaxRowWarnings) {
-        b.trace.warnings.push_back(what + "; row skipped");
-      }
+      skip_row(b, where_line(where, line_no) + ": " + p.what, cut_off, options);
     }
   }
   if (b.trace.skipped_rows > kMaxRowWarnings) {
@@ -253,8 +270,8 @@ Trace parse_trace_csv(const std::string& text, const std::string& where,
                                std::to_string(b.trace.skipped_rows - kMaxRowWarnings) +
                                " more rows skipped");
   }
-  if (header.empty()) throw Error(where + ": empty file: expected a header line and samples");
-  return b.finish(where, pu);
+  if (!header) throw Error(where + ": empty file: expected a header line and samples");
+  return b.finish(where, header->pos_unit);
 }
 
 }  // namespace foveate::gaze

@@ -49,7 +49,7 @@ struct Builder {
   std::vector<double> latency;
   bool with_latency = false;
 
-  explicit Builder(double margin) : validator(margin) {}
+  explicit Builder(double off_screen_limit) : validator(off_screen_limit) {}
 
   void add(GazeSample s, double latency_ms = kNaN) {
     if (!validator.accept(s)) return;

@@ -52,6 +52,23 @@ void RenderTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
+PassState PassState::stencil_mark(GLint ref, GLenum func, GLenum op) {
+  PassState s;
+  s.stencil_func = func;
+  s.stencil_ref = ref;
+  s.stencil_pass_op = op;
+  s.stencil_write = true;
+  s.color_off = true;
+  return s;
+}
+
+PassState PassState::stencil_equal(GLint ref) {
+  PassState s;
+  s.stencil_func = GL_EQUAL;
+  s.stencil_ref = ref;
+  return s;
+}
+
 void RenderTarget::clear(float r, float g, float b, float a) const {
   open_write_masks();
   const float rgba[4] = {r, g, b, a};

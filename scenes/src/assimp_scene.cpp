@@ -29,7 +29,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/image.hpp"
-#include "mesh_common.hpp"
+#include "mesh_scene_base.hpp"
 #include "model_files.hpp"
 #include "model_geometry.hpp"
 
@@ -129,6 +129,116 @@ CameraPath orbit(glm::dvec3 centre, double distance, OrbitStart start, double fo
   return p;
 }
 
+// The file read and repaired (assimp's validation refuses what some
+// importers leave behind), then post-processed; `box` says which materials
+// are box-projected (seen before UV generation rewrites the mappings), and
+// `dropped` counts the vertices dropped as inf or NaN.
+const aiScene* read_model(Assimp::Importer& importer, const std::string& path,
+                          std::vector<char>& box, size_t& dropped) {
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* s = importer.ReadFile(path, 0);
+  if (!s || !s->mRootNode) import_failed(path, importer);
+  const SceneRepair repair = repair_scene(const_cast<aiScene*>(s));
+  dropped = repair.non_finite_vertices;
+  if (dropped > 0 && repair.faces_left == 0) {
+    throw Error(path + ": the model has no finite vertices to render (all " +
+                std::to_string(dropped) + " vertices of its faces are inf or NaN)");
+  }
+  if (repair.meshes_left == 0) {
+    throw Error(path + ": the model has no triangles to render (" +
+                (repair.empty_meshes == 0 ? std::string("the file holds no meshes")
+                 : repair.bad_faces == 0
+                     ? "its meshes have no faces: points only"
+                     : "none of its faces has valid vertex indices (" +
+                           std::to_string(repair.bad_faces) + " out of range or missing)") +
+                ")");
+  }
+  if (repair.bad_faces > 0) {
+    warn(path + ": " + std::to_string(repair.bad_faces) +
+         " faces without vertex indices or with indices out of range dropped");
+  }
+  box.assign(s->mNumMaterials, 0);
+  for (unsigned i = 0; i < s->mNumMaterials; ++i) box[i] = box_mapped(s->mMaterials[i]);
+  s = importer.ApplyPostProcessing(
+      aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+      aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_GenUVCoords |
+      aiProcess_TransformUVCoords | aiProcess_ValidateDataStructure);
+  if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
+    import_failed(path, importer);
+  }
+  return s;
+}
+
+// One assimp mesh's triangles as MeshData (empty when none is left).
+MeshData mesh_data(const aiMesh* am, const std::vector<char>& box, UpAxis up, size_t& dropped) {
+  MeshData d;
+  d.vertices.resize(am->mNumVertices);
+  for (unsigned v = 0; v < am->mNumVertices; ++v) {
+    Vertex& x = d.vertices[v];
+    x.px = am->mVertices[v].x, x.py = am->mVertices[v].y, x.pz = am->mVertices[v].z;
+    if (am->mNormals)
+      x.nx = am->mNormals[v].x, x.ny = am->mNormals[v].y, x.nz = am->mNormals[v].z;
+    else
+      x.nx = x.ny = x.nz = 0;  // repaired below
+    if (am->mTextureCoords[0])
+      x.u = am->mTextureCoords[0][v].x, x.v = am->mTextureCoords[0][v].y;
+    else
+      x.u = x.v = 0;
+    if (!std::isfinite(x.u) || !std::isfinite(x.v)) x.u = x.v = 0;
+  }
+  for (unsigned f = 0; f < am->mNumFaces; ++f) {
+    if (am->mFaces[f].mNumIndices != 3) continue;
+    for (int k = 0; k < 3; ++k) d.indices.push_back(am->mFaces[f].mIndices[k]);
+  }
+  dropped += drop_non_finite(d);  // e.g. from a node transform with inf
+  if (d.indices.empty()) return d;
+  repair_normals(d);  // a file without normals is ordinary: no warning
+  if (am->mMaterialIndex < box.size() && box[am->mMaterialIndex] &&
+      std::all_of(d.vertices.begin(), d.vertices.end(),
+                  [](const Vertex& x) { return x.u == 0.0f && x.v == 0.0f; })) {
+    box_uvs(d);  // assimp leaves them zero
+  }
+  make_y_up(d, up);
+  return d;
+}
+
+// Every mesh's triangles with its material index; refuses a model with
+// nothing left to render.
+std::vector<std::pair<MeshData, unsigned>> mesh_parts(const aiScene* s, const std::string& path,
+                                                      const std::vector<char>& box, UpAxis up,
+                                                      size_t& dropped, ShapeStats& shape) {
+  std::vector<std::pair<MeshData, unsigned>> parts;
+  for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
+    const aiMesh* am = s->mMeshes[mi];
+    if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || am->mNumFaces == 0) continue;
+    MeshData d = mesh_data(am, box, up, dropped);
+    if (d.indices.empty()) continue;
+    shape.add(d);
+    parts.emplace_back(std::move(d), am->mMaterialIndex);
+  }
+  if (parts.empty()) {
+    throw Error(path + (dropped > 0 ? ": the model has no triangles left without its " +
+                                          std::to_string(dropped) + " inf or NaN vertices"
+                                    : ": the model has no triangles"));
+  }
+  double area = 0.0;
+  size_t triangles = 0;
+  for (const auto& part : parts) {
+    area += surface_area(part.first);
+    triangles += part.first.indices.size() / 3;
+  }
+  if (!(area > 0.0)) {
+    throw Error(path + ": every one of its " + std::to_string(triangles) +
+                " triangles has zero area (collinear or coincident vertices): nothing to render");
+  }
+  if (dropped > 0) {
+    warn(path + ": " + std::to_string(dropped) +
+         " vertices with an inf or NaN coordinate dropped, with the triangles that use them");
+  }
+  return parts;
+}
+
 class AssimpScene final : public MeshSceneBase {
  public:
   AssimpScene(const std::string& path, const SceneOptions& o)
@@ -139,125 +249,17 @@ class AssimpScene final : public MeshSceneBase {
     check_model_file(path);
     check_model_memory(path, o.model_memory_limit);
     Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
-                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // Read first, so that the scene can be repaired (assimp's validation
-    // refuses what some importers leave behind) and the materials' projection
-    // mappings seen before UV generation rewrites them; then post-process.
-    const aiScene* s = importer.ReadFile(path, 0);
-    if (!s || !s->mRootNode) import_failed(path, importer);
-    const SceneRepair repair = repair_scene(const_cast<aiScene*>(s));
-    size_t dropped = repair.non_finite_vertices;
-    if (dropped > 0 && repair.faces_left == 0) {
-      throw Error(path + ": the model has no finite vertices to render (all " +
-                  std::to_string(dropped) + " vertices of its faces are inf or NaN)");
-    }
-    if (repair.meshes_left == 0) {
-      throw Error(path + ": the model has no triangles to render (" +
-                  (repair.empty_meshes == 0 ? std::string("the file holds no meshes")
-                   : repair.bad_faces == 0
-                       ? "its meshes have no faces: points only"
-                       : "none of its faces has valid vertex indices (" +
-                             std::to_string(repair.bad_faces) + " out of range or missing)") +
-                  ")");
-    }
-    if (repair.bad_faces > 0) {
-      warn(path + ": " + std::to_string(repair.bad_faces) +
-           " faces without vertex indices or with indices out of range dropped");
-    }
-    std::vector<char> box(s->mNumMaterials, 0);
-    for (unsigned i = 0; i < s->mNumMaterials; ++i) box[i] = box_mapped(s->mMaterials[i]);
-    s = importer.ApplyPostProcessing(
-        aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-        aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_GenUVCoords |
-        aiProcess_TransformUVCoords | aiProcess_ValidateDataStructure);
-    if (!s || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !s->mRootNode) {
-      import_failed(path, importer);
-    }
-    const UpAxis up = up_axis_of(s, o.up);
-    size_t repaired = 0;
+    std::vector<char> box;
+    size_t dropped = 0;
+    const aiScene* s = read_model(importer, path, box, dropped);
     ShapeStats shape;
-    std::vector<std::pair<MeshData, unsigned>> parts;
-    for (unsigned mi = 0; mi < s->mNumMeshes; ++mi) {
-      const aiMesh* am = s->mMeshes[mi];
-      if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || am->mNumFaces == 0) continue;
-      MeshData d;
-      d.vertices.resize(am->mNumVertices);
-      for (unsigned v = 0; v < am->mNumVertices; ++v) {
-        Vertex& x = d.vertices[v];
-        x.px = am->mVertices[v].x, x.py = am->mVertices[v].y, x.pz = am->mVertices[v].z;
-        if (am->mNormals)
-          x.nx = am->mNormals[v].x, x.ny = am->mNormals[v].y, x.nz = am->mNormals[v].z;
-        else
-          x.nx = x.ny = x.nz = 0;  // repaired below
-        if (am->mTextureCoords[0])
-          x.u = am->mTextureCoords[0][v].x, x.v = am->mTextureCoords[0][v].y;
-        else
-          x.u = x.v = 0;
-        if (!std::isfinite(x.u) || !std::isfinite(x.v)) x.u = x.v = 0;
-      }
-      for (unsigned f = 0; f < am->mNumFaces; ++f) {
-        if (am->mFaces[f].mNumIndices != 3) continue;
-        for (int k = 0; k < 3; ++k) d.indices.push_back(am->mFaces[f].mIndices[k]);
-      }
-      dropped += drop_non_finite(d);  // e.g. from a node transform with inf
-      if (d.indices.empty()) continue;
-      repaired += repair_normals(d);
-      if (am->mMaterialIndex < box.size() && box[am->mMaterialIndex] &&
-          std::all_of(d.vertices.begin(), d.vertices.end(),
-                      [](const Vertex& x) { return x.u == 0.0f && x.v == 0.0f; })) {
-        box_uvs(d);  // assimp leaves them zero
-      }
-      make_y_up(d, up);
-      shape.add(d);
-      parts.emplace_back(std::move(d), am->mMaterialIndex);
-    }
-    if (parts.empty()) {
-      throw Error(path + (dropped > 0 ? ": the model has no triangles left without its " +
-                                            std::to_string(dropped) + " inf or NaN vertices"
-                                      : ": the model has no triangles"));
-    }
-    double area = 0.0;
-    size_t triangles = 0;
-    for (const auto& part : parts) {
-      area += surface_area(part.first);
-      triangles += part.first.indices.size() / 3;
-    }
-    if (!(area > 0.0)) {
-      throw Error(path + ": every one of its " + std::to_string(triangles) +
-                  " triangles has zero area (collinear or coincident vertices): nothing to render");
-    }
-    if (dropped > 0) {
-      warn(path + ": " + std::to_string(dropped) +
-           " vertices with an inf or NaN coordinate dropped, with the triangles that use them");
-    }
+    auto parts = mesh_parts(s, path, box, up_axis_of(s, o.up), dropped, shape);
     for (auto& [d, material_index] : parts) {
       meshes_.push_back(upload_mesh(d, 3));
       materials_.push_back(material(s, material_index, path));
       full_triangles_ += d.indices.size() / 3;
     }
-    (void)repaired;  // a file without normals is ordinary: no warning
-    const glm::vec3 lo = shape.lo(), hi = shape.hi();
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    scene_radius_ = std::max(1e-4f, 0.5f * glm::length(hi - lo));
-    // Framed automatically: an orbit that keeps the bounding sphere in view,
-    // starting from above the model's dominant plane when it is flat.
-    const double fov = 45.0;
-    const double dist = scene_radius_ / std::sin(0.5 * fov * 3.14159265358979 / 180.0) * 1.1;
-    camera_ = o.camera_path.empty()
-                  ? orbit(glm::dvec3(centre), dist, default_orbit_start(shape.plane_normal()), fov)
-                  : CameraPath::load(o.camera_path);
-    for (int i = 0; i < 6; ++i) {
-      const float a = static_cast<float>(i) * 1.0472f;
-      lights_[i] =
-          glm::vec4(centre + scene_radius_ * glm::vec3(1.6f * std::cos(a),
-                                                       0.8f + 0.4f * static_cast<float>(i % 2),
-                                                       1.6f * std::sin(a)),
-                    scene_radius_ * 2.0f);
-      light_colors_[i] = 0.35f * glm::vec3(i % 3 == 0 ? 1.0f : 0.5f, i % 3 == 1 ? 1.0f : 0.5f,
-                                           i % 3 == 2 ? 1.0f : 0.5f);
-    }
-    centre_ = centre;
+    frame_and_light(shape, o.camera_path);
   }
 
   std::string shade_key() const override { return "builtin:mesh"; }
@@ -286,6 +288,31 @@ class AssimpScene final : public MeshSceneBase {
   }
 
  private:
+  // Framed automatically: an orbit that keeps the bounding sphere in view,
+  // starting from above the model's dominant plane when it is flat (or
+  // `camera_path`); six lights around it.
+  void frame_and_light(const ShapeStats& shape, const std::string& camera_path) {
+    const glm::vec3 lo = shape.lo(), hi = shape.hi();
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    scene_radius_ = std::max(1e-4f, 0.5f * glm::length(hi - lo));
+    const double fov = 45.0;
+    const double dist = scene_radius_ / std::sin(0.5 * fov * 3.14159265358979 / 180.0) * 1.1;
+    camera_ = camera_path.empty()
+                  ? orbit(glm::dvec3(centre), dist, default_orbit_start(shape.plane_normal()), fov)
+                  : CameraPath::load(camera_path);
+    for (int i = 0; i < 6; ++i) {
+      const float a = static_cast<float>(i) * 1.0472f;
+      lights_[i] =
+          glm::vec4(centre + scene_radius_ * glm::vec3(1.6f * std::cos(a),
+                                                       0.8f + 0.4f * static_cast<float>(i % 2),
+                                                       1.6f * std::sin(a)),
+                    scene_radius_ * 2.0f);
+      light_colors_[i] = 0.35f * glm::vec3(i % 3 == 0 ? 1.0f : 0.5f, i % 3 == 1 ? 1.0f : 0.5f,
+                                           i % 3 == 2 ? 1.0f : 0.5f);
+    }
+    centre_ = centre;
+  }
+
   Material material(const aiScene* s, unsigned index, const std::string& path) {
     Material m;
     if (index >= s->mNumMaterials) return m;

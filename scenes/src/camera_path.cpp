@@ -38,21 +38,22 @@ glm::dvec3 read_vec3(JsonReader& r, const char* key, glm::dvec3 fallback) {
 }
 }  // namespace
 
-CameraPose CameraPath::at(double t) const {
+CameraPose CameraPath::at(double time_s) const {
+  double t = time_s;
   if (keys.empty()) return {{0, 0, 5}, {0, 0, 0}, 50.0};
   if (keys.size() == 1) return {keys[0].position, keys[0].target, keys[0].fov_deg};
-  const double T = duration();
+  const double T = duration_s();
   if (loop && T > 0) {
     t = std::fmod(t, T);
     if (t < 0) t += T;
   }
-  t = std::clamp(t, keys.front().t, keys.back().t);
+  t = std::clamp(t, keys.front().time_s, keys.back().time_s);
   size_t i = 0;
-  while (i + 2 < keys.size() && keys[i + 1].t <= t) ++i;
+  while (i + 2 < keys.size() && keys[i + 1].time_s <= t) ++i;
   const CameraKey& a = keys[i];
   const CameraKey& b = keys[i + 1];
-  const double span = b.t - a.t;
-  const double u = span > 0 ? (t - a.t) / span : 0.0;
+  const double span = b.time_s - a.time_s;
+  const double u = span > 0 ? (t - a.time_s) / span : 0.0;
   const CameraKey& p = i > 0 ? keys[i - 1] : (loop ? keys[keys.size() - 2] : a);
   const CameraKey& q = i + 2 < keys.size() ? keys[i + 2] : (loop ? keys[1] : b);
   return {catmull_rom(p.position, a.position, b.position, q.position, u),
@@ -73,13 +74,13 @@ CameraPath CameraPath::from_json(const nlohmann::json& j, const std::string& whe
     const std::string w = where + ".keyframes[" + std::to_string(i) + "]";
     JsonReader k((*keys)[i], w);
     CameraKey key;
-    if (!k.number("t", key.t, 0.0, 1e6)) throw Error(w + ".t: required");
+    if (!k.number("t", key.time_s, 0.0, 1e6)) throw Error(w + ".t: required");
     key.position = read_vec3(k, "position", key.position);
     key.target = read_vec3(k, "target", key.target);
     k.number("fov_deg", key.fov_deg, 1.0, 170.0);
     k.finish();
     if (glm::length(key.position - key.target) < 1e-9) throw Error(w + ": position equals target");
-    if (!path.keys.empty() && key.t <= path.keys.back().t) {
+    if (!path.keys.empty() && key.time_s <= path.keys.back().time_s) {
       throw Error(w + ".t: keyframe times must increase");
     }
     path.keys.push_back(key);
@@ -91,14 +92,14 @@ CameraPath CameraPath::load(const std::string& file) {
   return from_json(read_json_file(file, "camera path"), file);
 }
 
-CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double period,
+CameraPath CameraPath::orbit(glm::dvec3 c, double radius, double height, double period_s,
                              double fov) {
   CameraPath p;
   p.loop = true;
   const int n = 8;
   for (int i = 0; i <= n; ++i) {
     const double a = 2.0 * std::numbers::pi * i / n;
-    p.keys.push_back({period * i / n,
+    p.keys.push_back({period_s * i / n,
                       c + glm::dvec3(radius * std::sin(a), height, radius * std::cos(a)), c, fov});
   }
   return p;

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "factories.hpp"
-#include "mesh_common.hpp"
+#include "mesh_scene_base.hpp"
 
 namespace foveate::detail {
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "mesh_common.hpp"
+#include "gpu_mesh.hpp"
 
 namespace foveate::detail {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "foveate/scenes/camera_path.hpp"
-#include "shadertoy_common.hpp"
+#include "shadertoy_pass.hpp"
 
 namespace foveate::detail {
 

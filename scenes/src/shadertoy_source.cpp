@@ -1,7 +1,7 @@
 // One linear pass over a Shadertoy shader's text: a tokenizer that skips
 // comments and strings, and a few token-window checks on top of it. No
-// regular expressions and no recursion, by design (std::regex overflowed the
-// stack on long inputs).
+// regular expressions and no recursion, by design: std::regex recurses per
+// character and overflows the stack on long inputs.
 #include "foveate/scenes/shadertoy_source.hpp"
 
 #include <algorithm>
@@ -164,6 +164,150 @@ bool ShadertoySource::uses_legacy(std::string_view name) const {
   return std::find(legacy_used.begin(), legacy_used.end(), name) != legacy_used.end();
 }
 
+namespace {
+
+// The state of one pass over a shader: a small window of previous tokens
+// (code only, not directives) and the state of the few constructs looked for.
+class SourceAnalyser {
+ public:
+  explicit SourceAnalyser(ShadertoySource& r) : r_(r) {}
+
+  void token(const Token& t) {
+    const std::string_view w = t.text;
+    const bool ident = t.kind == Kind::identifier;
+    if (t.first_on_directive) {
+      dir_index_ = 0;
+      dir_define_ = false;
+    } else if (t.directive) {
+      ++dir_index_;
+      if (dir_index_ == 1) dir_define_ = w == "define";
+    }
+    const bool after_define = t.directive && dir_define_ && dir_index_ == 2;
+    if (after_define && ident) macro_set_.add(r_.macros, w);
+    if (ident) name(t, after_define);
+    if (t.directive) return;
+    main_functions(t);
+    if (depth_ == 0) uniform(w, ident);
+    if (w == "{") ++depth_;
+    if (w == "}" && depth_ > 0) --depth_;
+    prev2_ = prev1_;
+    prev1_ = w;
+  }
+
+  void finish() {
+    for (size_t k = 0; k < kShadertoyLegacyNames.size(); ++k) {
+      if (legacy_[k]) r_.legacy_used.emplace_back(kShadertoyLegacyNames[k]);
+    }
+  }
+
+ private:
+  // An identifier: channels, mainImage, animation inputs, legacy names.
+  void name(const Token& t, bool after_define) {
+    const std::string_view w = t.text;
+    if (w.size() == 9 && w.substr(0, 8) == "iChannel" && w[8] >= '0' && w[8] <= '3') {
+      r_.channels[static_cast<size_t>(w[8] - '0')] = true;
+    }
+    if (w == "mainImage") r_.mentions_main_image = true;
+    if (w == "iTime" || w == "iGlobalTime" || w == "iTimeDelta" || w == "iFrame" || w == "iDate" ||
+        w == "iChannelTime") {
+      r_.animated = true;
+    }
+    for (size_t k = 0; k < kShadertoyLegacyNames.size(); ++k) {
+      if (w == kShadertoyLegacyNames[k]) {
+        legacy_[k] = true;
+        const bool declared =
+            after_define || (!t.directive && prev1_.size() > 0 && ident_start(prev1_[0]) &&
+                             !is_statement_word(prev1_));
+        if (declared) add_once(r_.user_defined, w);
+      }
+    }
+  }
+
+  // `void mainImage(...)` (its parameter list kept and checked) and `void main(`.
+  void main_functions(const Token& t) {
+    const std::string_view w = t.text;
+    if (in_params_) {
+      if (w == "(") ++paren_depth_;
+      if (w == ")") {
+        if (paren_depth_ == 0) {
+          close_params();
+        } else {
+          --paren_depth_;
+        }
+      }
+      if (in_params_ && params_.size() < 64) params_.push_back(w);
+    } else if (depth_ == 0 && w == "(" && prev1_ == "mainImage" && prev2_ == "void" &&
+               !r_.has_main_image) {
+      in_params_ = true;
+      paren_depth_ = 0;
+      params_line_ = t.line;
+      params_.clear();
+    } else if (depth_ == 0 && w == "(" && prev1_ == "main" && prev2_ == "void" && !r_.has_main) {
+      r_.has_main = true;
+      r_.main_line = t.line;
+    }
+  }
+
+  void close_params() {
+    in_params_ = false;
+    r_.has_main_image = true;
+    r_.main_image_line = params_line_;
+    r_.main_image_params_ok = main_image_params_match(params_);
+    if (!r_.main_image_params_ok) {
+      std::string joined;
+      for (std::string_view p : params_) {
+        if (!joined.empty() && p != "," && joined.back() != ',') joined += ' ';
+        if (!joined.empty() && joined.back() == ',') joined += ' ';
+        if (joined.size() + p.size() > 200) {
+          joined += "...";
+          break;
+        }
+        joined += p;
+      }
+      r_.main_image_params = joined;
+    }
+    params_.clear();
+  }
+
+  // Top-level uniforms: `uniform [qualifiers] TYPE NAME (, NAME)* ;`
+  void uniform(std::string_view w, bool ident) {
+    if (w == "uniform") {
+      uniform_state_ = 1;
+    } else if (uniform_state_ == 1 && ident && !is_qualifier(w)) {
+      uniform_type_ = w;
+      uniform_state_ = 2;
+    } else if (uniform_state_ == 2 && ident) {
+      r_.uniforms.push_back({std::string(uniform_type_), std::string(w)});
+      uniform_state_ = 3;
+    } else if (uniform_state_ == 3 && w == ",") {
+      uniform_state_ = 2;
+    } else if (uniform_state_ != 1 || !ident) {
+      if (uniform_state_ == 3 && w == "[") {
+        // an array: keep the declaration's name, skip its size
+      } else if (w == ";" || uniform_state_ == 1 || uniform_state_ == 2) {
+        uniform_state_ = 0;
+      }
+    }
+  }
+
+  ShadertoySource& r_;
+  std::array<bool, kShadertoyLegacyNames.size()> legacy_{};
+  MacroSet macro_set_;
+  std::string_view prev1_, prev2_;  // the two code tokens before this one
+  int dir_index_ = 0;               // position of a token on its directive's line
+  bool dir_define_ = false;         // that directive is #define
+  int depth_ = 0;                   // braces
+  int paren_depth_ = 0;             // parentheses inside a mainImage parameter list
+  bool in_params_ = false;
+  int params_line_ = 0;
+  std::vector<std::string_view> params_;
+  // `uniform [precision] TYPE NAME`: 0 = none, 1 = after uniform, 2 = have type
+  int uniform_state_ = 0;
+  std::string_view uniform_type_;
+};
+
+}  // namespace
+
 ShadertoySource analyse_shadertoy_source(std::string_view text) {
   ShadertoySource r;
   if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
@@ -171,124 +315,11 @@ ShadertoySource analyse_shadertoy_source(std::string_view text) {
     r.bom = true;
     text.remove_prefix(3);
   }
-  std::array<bool, kShadertoyLegacyNames.size()> legacy{};
+  SourceAnalyser analyser(r);
   Lexer lex(text);
   Token t;
-  MacroSet macro_set;
-  // A small window of previous tokens (code only, not directives) and the
-  // state of the few constructs looked for.
-  std::string_view prev1, prev2;  // the two code tokens before this one
-  int dir_index = 0;              // position of a token on its directive's line
-  bool dir_define = false;        // that directive is #define
-  int depth = 0;                  // braces
-  int paren_depth = 0;            // parentheses inside a mainImage parameter list
-  bool in_params = false;
-  int params_line = 0;
-  std::vector<std::string_view> params;
-  // `uniform [precision] TYPE NAME`: 0 = none, 1 = after uniform, 2 = have type
-  int uniform_state = 0;
-  std::string_view uniform_type;
-
-  while (lex.next(t)) {
-    const std::string_view w = t.text;
-    const bool ident = t.kind == Kind::identifier;
-    if (t.first_on_directive) {
-      dir_index = 0;
-      dir_define = false;
-    } else if (t.directive) {
-      ++dir_index;
-      if (dir_index == 1) dir_define = w == "define";
-    }
-    const bool after_define = t.directive && dir_define && dir_index == 2;
-    if (after_define && ident) macro_set.add(r.macros, w);
-    if (ident) {
-      if (w.size() == 9 && w.substr(0, 8) == "iChannel" && w[8] >= '0' && w[8] <= '3') {
-        r.channels[static_cast<size_t>(w[8] - '0')] = true;
-      }
-      if (w == "mainImage") r.mentions_main_image = true;
-      if (w == "iTime" || w == "iGlobalTime" || w == "iTimeDelta" || w == "iFrame" ||
-          w == "iDate" || w == "iChannelTime") {
-        r.animated = true;
-      }
-      for (size_t k = 0; k < kShadertoyLegacyNames.size(); ++k) {
-        if (w == kShadertoyLegacyNames[k]) {
-          legacy[k] = true;
-          const bool declared =
-              after_define || (!t.directive && prev1.size() > 0 && ident_start(prev1[0]) &&
-                               !is_statement_word(prev1));
-          if (declared) add_once(r.user_defined, w);
-        }
-      }
-    }
-    if (t.directive) continue;
-
-    if (in_params) {
-      if (w == "(") ++paren_depth;
-      if (w == ")") {
-        if (paren_depth == 0) {
-          in_params = false;
-          r.has_main_image = true;
-          r.main_image_line = params_line;
-          r.main_image_params_ok = main_image_params_match(params);
-          if (!r.main_image_params_ok) {
-            std::string joined;
-            for (std::string_view p : params) {
-              if (!joined.empty() && p != "," && joined.back() != ',') joined += ' ';
-              if (!joined.empty() && joined.back() == ',') joined += ' ';
-              if (joined.size() + p.size() > 200) {
-                joined += "...";
-                break;
-              }
-              joined += p;
-            }
-            r.main_image_params = joined;
-          }
-          params.clear();
-        } else {
-          --paren_depth;
-        }
-      }
-      if (in_params && params.size() < 64) params.push_back(w);
-    } else if (depth == 0 && w == "(" && prev1 == "mainImage" && prev2 == "void" &&
-               !r.has_main_image) {
-      in_params = true;
-      paren_depth = 0;
-      params_line = t.line;
-      params.clear();
-    } else if (depth == 0 && w == "(" && prev1 == "main" && prev2 == "void" && !r.has_main) {
-      r.has_main = true;
-      r.main_line = t.line;
-    }
-
-    // Top-level uniforms: `uniform [qualifiers] TYPE NAME (, NAME)* ;`
-    if (depth == 0) {
-      if (w == "uniform") {
-        uniform_state = 1;
-      } else if (uniform_state == 1 && ident && !is_qualifier(w)) {
-        uniform_type = w;
-        uniform_state = 2;
-      } else if (uniform_state == 2 && ident) {
-        r.uniforms.push_back({std::string(uniform_type), std::string(w)});
-        uniform_state = 3;
-      } else if (uniform_state == 3 && w == ",") {
-        uniform_state = 2;
-      } else if (uniform_state != 1 || !ident) {
-        if (uniform_state == 3 && w == "[") {
-          // an array: keep the declaration's name, skip its size
-        } else if (w == ";" || uniform_state == 1 || uniform_state == 2) {
-          uniform_state = 0;
-        }
-      }
-    }
-
-    if (w == "{") ++depth;
-    if (w == "}" && depth > 0) --depth;
-    prev2 = prev1;
-    prev1 = w;
-  }
-  for (size_t k = 0; k < kShadertoyLegacyNames.size(); ++k) {
-    if (legacy[k]) r.legacy_used.emplace_back(kShadertoyLegacyNames[k]);
-  }
+  while (lex.next(t)) analyser.token(t);
+  analyser.finish();
   return r;
 }
 

@@ -2,9 +2,9 @@
 // Rendering" (2022), after Wei's MBFR. Pixels form n x n quads in 2 x 2 tiles;
 // four regions around the gaze drop 0, 1, 2 and 3 quads of every tile. Dropped
 // quads are rejected by the stencil test before shading, so their cost is
-// really saved. One shading pass covers every kept pixel (four, one per
-// region, cost 11 % more shading time on guenter); the split by region is
-// counted on the CPU from the same pattern.
+// really saved. One shading pass covers every kept pixel (cheaper than one
+// per region: docs/performance.md); the split by region is counted on the CPU
+// from the same pattern.
 //
 // Where each region may begin follows from the block size: a region's
 // effective sampling is set by the largest gap its pattern leaves between
@@ -26,15 +26,15 @@
 // fovea and the first dropped quads a band is shaded in full and fades from
 // native to the filtered image, so that no border shows. The band is as wide
 // as a fraction of r1's eccentricity (`blend`, 0.2 as layered's): the MAR
-// grows in proportion to eccentricity, and a band of 1 degree at 13 degrees
-// showed as a step from sharp to soft in a 3x crop.
+// grows in proportion to eccentricity, so a band of fixed width would show as
+// a step from sharp to soft where the fovea is large (docs/fidelity.md).
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
@@ -79,7 +79,7 @@ class Checkerboard final : public Technique {
 
   std::array<double, 3> thresholds(const GazeState& g) const {
     std::array<double, 3> t = thresholds_px_;
-    const double extra = latency_margin_deg(g);
+    const double extra = latency_travel_deg(g);
     for (double& x : t) {
       const double e =
           std::atan(x / display_.eye_distance_px()) * 180.0 / 3.14159265358979 * g.fovea_scale +
@@ -115,57 +115,78 @@ class Checkerboard final : public Technique {
     // The pattern is defined in top-left pixel coordinates (CheckerboardPattern);
     // the shaders flip gl_FragCoord to match.
     const Borders b = borders(gaze);
-    const auto& t = b.pattern;
     const View view = View::full(W, H);
     scene.prepass(view);
     frame_.ensure(W, H, GL_SRGB8_ALPHA8, true);
     frame_.clear(0, 0, 0, 0);  // alpha 0 = not covered; stencil 0 = dropped
     // 1. Stencil mask: 1 where the pattern keeps a pixel, 0 where it drops it.
-    gpu::PassState mask_state;
-    mask_state.stencil_func = GL_ALWAYS;
-    mask_state.stencil_pass_op = GL_REPLACE;
-    mask_state.stencil_ref = 1;
-    mask_state.stencil_write = true;
-    mask_state.color_off = true;
-    const auto set_pattern = [&](const gpu::Program& p, gpu::Samplers&) {
-      p.set("u_block", block_);
-      p.set("u_gaze_top_left", float(gaze.gaze_px.x), float(gaze.gaze_px.y));
-      p.set("u_thresholds", float(t[0]), float(t[1]), float(t[2]));
-      p.set("u_height", float(H));
-    };
-    kit_.pass(kit_.fullscreen("checkerboard/mask.frag"), frame_, mask_state, set_pattern);
+    kit_.pass(kit_.fullscreen("checkerboard/mask.frag"), frame_, gpu::PassState::stencil_mark(),
+              pattern_uniforms(gaze, b, H));
     // 2. Shading where the stencil says so: dropped quads never reach the
     //    shader. The plain shading variant: it has no discard and writes no
     //    depth, so the stencil test runs before it (llvmpipe rejects whole
-    //    4x4 blocks); the variant that declares early tests costs 15 % more
-    //    on guenter.
+    //    4x4 blocks) without the early-tests variant, which costs more
+    //    (docs/performance.md).
     FrameStats stats;
     stats.native_pixels = double(W) * H;
-    gpu::PassState kept;
-    kept.stencil_func = GL_EQUAL;
-    kept.stencil_ref = 1;
     stats.shaded_pixels = kit_.shade(
         scene, view, kMapRect, frame_,
-        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, kept);
+        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); },
+        gpu::PassState::stencil_equal());
     CheckerboardPattern pat;
     pat.block = block_;
-    pat.thresholds_px = t;
+    pat.thresholds_px = b.pattern;
     const auto by_region = pat.kept_by_region(W, H, gaze.gaze_px);
     for (int k = 0; k < 4; ++k) {
       stats.parts.push_back(
           {"region " + std::to_string(k) + " (drops " + std::to_string(k) + " of 4)",
            by_region[static_cast<size_t>(k)]});
     }
-    // 3. Reconstruction into the target (filter.glsl): the f x f block
-    //    average, the horizontal and the vertical Gaussian at 1/f resolution,
-    //    then the division by coverage at full resolution. Outside the screen
-    //    there are no samples (a transparent border).
+    reconstruct(gaze, b, target);
+    return stats;
+  }
+
+  std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
+    // The native fovea, then where regions 1-3 begin.
+    const Borders b = borders(gaze);
+    const double radii[4] = {b.fovea, b.pattern[0], b.pattern[1], b.pattern[2]};
+    static const char* const kLabels[4] = {
+        "native fovea: every pixel shaded inside", "region 1 begins: drops 1 of every 4 quads",
+        "region 2 begins: drops 2 of every 4 quads", "region 3 begins: drops 3 of every 4 quads"};
+    std::vector<OverlayShape> out;
+    for (int k = 0; k < 4; ++k) {
+      const auto* c = kRingColours[k];
+      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, radii[k], 0, c[0],
+                     c[1], c[2], kLabels[k]});
+    }
+    out.push_back(gaze_dot(gaze));
+    return out;
+  }
+
+ private:
+  // The uniforms of the stencil pattern at this gaze (mask and filters).
+  SetUniforms pattern_uniforms(const GazeState& gaze, const Borders& b, int H) const {
+    return [this, gaze, t = b.pattern, H](const gpu::Program& p, gpu::Samplers&) {
+      p.set("u_block", block_);
+      p.set("u_gaze_top_left", float(gaze.gaze_px.x), float(gaze.gaze_px.y));
+      p.set("u_thresholds", float(t[0]), float(t[1]), float(t[2]));
+      p.set("u_height", float(H));
+    };
+  }
+
+  // 3. Reconstruction into the target (filter.glsl): the f x f block
+  //    average, the horizontal and the vertical Gaussian at 1/f resolution,
+  //    then the division by coverage at full resolution. Outside the screen
+  //    there are no samples (a transparent border).
+  void reconstruct(const GazeState& gaze, const Borders& b, const gpu::RenderTarget& target) {
+    const int W = target.width(), H = target.height();
     const int f = scale_;
     frame_.color().set_wrap(GL_CLAMP_TO_BORDER);
     for (gpu::RenderTarget& r : reduced_) {
       r.ensure((W + f - 1) / f, (H + f - 1) / f, GL_RGBA16F);  // weighted sums: over 8 bits
       r.color().set_wrap(GL_CLAMP_TO_BORDER);
     }
+    const SetUniforms set_pattern = pattern_uniforms(gaze, b, H);
     const auto set_filter = [&](const gpu::Program& p, gpu::Samplers& s) {
       p.allow_missing({"u_block", "u_thresholds", "u_sigmas", "u_blend", "u_gaze_top_left",
                        "u_height", "u_frame", "u_filtered", "u_scale"});
@@ -210,27 +231,8 @@ class Checkerboard final : public Technique {
     kit_.pass_around_disc(target, to_gl(gaze.gaze_px, H), b.fovea, b.fovea + b.band + 1.0,
                           "checkerboard/reconstruct_fovea.frag", "checkerboard/reconstruct.frag",
                           "checkerboard/reconstruct_outer.frag", set_last);
-    return stats;
   }
 
-  std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
-    // The native fovea, then where regions 1-3 begin.
-    const Borders b = borders(gaze);
-    const double radii[4] = {b.fovea, b.pattern[0], b.pattern[1], b.pattern[2]};
-    static const char* const kLabels[4] = {
-        "native fovea: every pixel shaded inside", "region 1 begins: drops 1 of every 4 quads",
-        "region 2 begins: drops 2 of every 4 quads", "region 3 begins: drops 3 of every 4 quads"};
-    std::vector<OverlayShape> out;
-    for (int k = 0; k < 4; ++k) {
-      const auto* c = kRingColours[k];
-      out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, radii[k], 0, c[0],
-                     c[1], c[2], kLabels[k]});
-    }
-    out.push_back(gaze_dot(gaze));
-    return out;
-  }
-
- private:
   Display display_;
   int block_;
   double blend_;
@@ -278,22 +280,29 @@ TechniqueInfo checkerboard_info() {
        "radius where region 3 (drop 3 of 4) may begin" + rule +
            " ((n + 1) sqrt 2 across its dropped corner quads)",
        "px", ParamType::Real, 0, 1e6, 0, radius(2)},
-      param("filter",
-            "width of the reconstruction Gaussian (sigma) as a fraction of the region's largest "
-            "gap between kept pixels",
-            "", ParamType::Real, 0.3, 2.0, 0.55),
+      tuned(
+          param(
+              "filter",
+              "width of the reconstruction Gaussian (sigma) as a fraction of the region's largest "
+              "gap between kept pixels",
+              "", ParamType::Real, 0.3, 2.0, 0.55),
+          {0.45, 0.55, 0.7}),
       param("scale",
             "pixels per texel at which the reconstruction Gaussian is computed (then read back "
             "bilinearly); 0 = the coarsest, up to 4, at which the narrowest Gaussian keeps 0.75 "
             "texel of its own beyond the block average and the read-back (3 with the default "
             "filter), so that the scale's own period does not show",
             "px", ParamType::Integer, 0, 4, 0),
-      param("blend",
-            "width of the band beyond r1, shaded in full, over which the image fades from native "
-            "to the reconstruction filter (and the filter widens towards each next region), as a "
-            "fraction of r1's eccentricity (layered's blend band is 0.2 of e_i); regions 1-3 begin "
-            "after it",
-            "", ParamType::Real, 0.0, 1.0, 0.2),
+      tuned(
+          param(
+              "blend",
+              "width of the band beyond r1, shaded in full, over which the image fades from native "
+              "to the reconstruction filter (and the filter widens towards each next region), as a "
+              "fraction of r1's eccentricity (layered's blend band is 0.2 of e_i); regions 1-3 "
+              "begin "
+              "after it",
+              "", ParamType::Real, 0.0, 1.0, 0.2),
+          {0.1, 0.2, 0.4}),
   };
   t.resolve_passes = {"reconstruct_down", "reconstruct_h", "reconstruct", "reconstruct_fovea",
                       "reconstruct_outer"};

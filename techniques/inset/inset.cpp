@@ -6,7 +6,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {
@@ -144,8 +144,9 @@ TechniqueInfo inset_info() {
   t.source = "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015";
   t.params = {
       plan_margin_param(1.0),
-      param("scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", "",
-            ParamType::Real, 0.05, 1.0, 0.5),
+      tuned(param("scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", "",
+                  ParamType::Real, 0.05, 1.0, 0.5),
+            {0.35, 0.5, 0.65}),
       // The fovea the inset must cover: where the acuity model first accepts
       // the periphery's sampling factor 1/scale (w(e) = w* / scale), both sides.
       {"fovea_deg", "angle the fovea subtends (alpha of eq. 1); default from the acuity model",
@@ -155,15 +156,17 @@ TechniqueInfo inset_info() {
              c.acuity.eccentricity_for_mar(c.display.sharpness_deg() / v.real("scale"));
          return std::clamp(2.0 * e, 1.0, 60.0);
        }},
-      param("border", "vignette blend border as a fraction of the foveal radius", "",
-            ParamType::Real, 0.0, 1.0, 0.2),
+      tuned(param("border", "vignette blend border as a fraction of the foveal radius", "",
+                  ParamType::Real, 0.0, 1.0, 0.2),
+            {0.1, 0.2, 0.4}),
       param("latency_ms",
             "worst-case total latency L_tot (the measured gaze latency is used if larger)", "ms",
             ParamType::Real, 0.0, 1000.0, 0.0),
       param("max_saccade_deg_per_s", "maximal saccade speed S_max of eq. 1", "deg/s",
             ParamType::Real, 0.0, 1000.0, 200.0),
-      param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
-            ParamType::Real, 0.0, 4.0, 1.0),
+      tuned(param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
+                  ParamType::Real, 0.0, 4.0, 1.0),
+            {0, 0.5, 1}),
   };
   t.resolve_passes = {"blur", "upscale", "composite"};
   t.make = construct<Inset>();

@@ -7,22 +7,21 @@
 //
 // The stencil marks every pixel's LOD before any is drawn and each LOD writes
 // only its own pixels, so that inside the full-detail circle the image is
-// native's, background included. (The masks used to let finer LODs overwrite
-// a coarse G-buffer after resetting depth only, which left a coarser surface
-// wherever the full-detail mesh has none.)
+// native's, background included: a finer LOD drawn over a coarser one's
+// G-buffer would leave the coarser surface wherever the finer mesh has none.
 //
 // Against popping at the LOD borders the circles are held still: their centre
 // moves only when the gaze leaves a small disc around it (hold_deg, larger
 // than fixational drift and microsaccades), and they are grown by that disc
 // so the full-detail circle around the gaze is always covered. A border then
 // moves only with a saccade, when saccadic suppression hides the change. (A
-// band where the two LODs are dithered was the alternative; without temporal
-// accumulation the dither is a visible pattern of its own, and it flickers.)
+// band where the two LODs are dithered would need temporal accumulation:
+// without it the dither is a visible pattern of its own, and it flickers.)
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
@@ -55,9 +54,9 @@ class LodMask final : public Technique {
   void reset() override { held_ = false; }
 
   // Radii of the two circles around their centre: the LOD radii at this
-  // gaze (fovea scale, latency margin) grown by the hold distance.
+  // gaze (fovea scale, latency travel) grown by the hold distance.
   std::pair<double, double> radii(const GazeState& g) const {
-    const double extra = latency_margin_deg(g);
+    const double extra = latency_travel_deg(g);
     return {display_.radius_px_at(inner_deg_ * g.fovea_scale + extra) + hold_px_,
             display_.radius_px_at(outer_deg_ * g.fovea_scale + extra) + hold_px_};
   }
@@ -95,8 +94,7 @@ class LodMask final : public Technique {
     scene.prepass_begin(view);
     mask(g, r_in, W, H, GL_ALWAYS, 2, GL_REPLACE);
     if (!outer_covers) mask(g, r_out, W, H, GL_EQUAL, 0, GL_INCR);  // the ring: 0 -> 1
-    gpu::PassState draw;
-    draw.stencil_func = GL_EQUAL;
+    gpu::PassState draw = gpu::PassState::stencil_equal();
     for (int lod = 0; lod < (outer_covers ? 2 : 3); ++lod) {
       View part = lod == 2 ? view : bounds(view, g, lod == 0 ? r_in : r_out);
       // Objects wholly inside the square inscribed in the next finer circle
@@ -150,13 +148,8 @@ class LodMask final : public Technique {
     const gpu::Program& p = kit_.over_rects("lodmask/mask.frag");
     p.set("u_centre", float(g.x), float(g.y));
     p.set("u_radius", float(radius));
-    gpu::PassState s;
-    s.stencil_func = func;
-    s.stencil_ref = ref;
-    s.stencil_pass_op = op;
-    s.stencil_write = true;
-    s.color_off = true;
-    kit_.rect_pass_in_bound(p, disc_rects(g.x, g.y, radius, W, H), W, H, s);
+    kit_.rect_pass_in_bound(p, disc_rects(g.x, g.y, radius, W, H), W, H,
+                            gpu::PassState::stencil_mark(ref, func, op));
   }
 
   // The part of `full` that the disc of `radius` around `g` (GL pixels)

@@ -43,14 +43,15 @@
 #include <optional>
 #include <tuple>
 
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
+#include "kernel_plan.hpp"
 
 namespace foveate::tech {
 
-namespace {
+namespace logpolar {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
+namespace {
 
 // Radical inverse in base b: the jitter sequence.
 double halton(int i, int b) {
@@ -60,97 +61,6 @@ double halton(int i, int b) {
     r += f * (k % b);
   }
   return r;
-}
-
-// The largest gap (screen pixels) between the samples of a W x H screen's
-// log-polar buffer at distance r from the gaze: the diagonal of its cell,
-// which spans r L alpha t^(1 - 1/alpha) / w radially (t = log r / L) and
-// 2 pi r / h around; the diameter of the largest disc holding no sample, as
-// for the checkerboard's holes (checkerboard_gap_px).
-double buffer_gap(double r, double L, double alpha, double w, double h) {
-  const double t = std::clamp(std::log(std::max(r, 1.0)) / L, 1e-9, 1.0);
-  return std::hypot(r * L * alpha * std::pow(t, 1.0 - 1.0 / alpha) / w,
-                    2.0 * std::numbers::pi * r / h);
-}
-
-// Native pixels' own largest gap, the diagonal of a pixel.
-const double kNativeGap = std::sqrt(2.0);
-
-// The gap the acuity model allows at distance r from a gaze at the display
-// centre: half the MAR in pixels (two samples per cycle), and never less than
-// native's.
-double allowed_gap(const Display& d, const AcuityModel& a, double r) {
-  return std::max(kNativeGap, 0.5 * mar_px_at(d, a, std::atan(r / d.eye_distance_px()) * kDeg));
-}
-
-// Radius (pixels) of the native disc: at least `min_px`, and out to where the
-// buffer's samples are no longer closer together than native pixels.
-double native_radius(double min_px, double L, double alpha, double w, double h) {
-  double r = 2.0;
-  while (r < 1e5 && buffer_gap(r, L, alpha, w, h) < kNativeGap) r *= 1.005;
-  return std::max(min_px, r);
-}
-
-// What a kernel exponent gives on a display, for a gaze at the centre.
-struct KernelPlan {
-  double accepted_sigma = 0;  ///< the largest sigma within the MAR outside the disc (unclamped)
-  double sigma = 1;           ///< accepted_sigma clamped into [1, 16]
-  double native_px = 0;       ///< radius of the native disc
-  double shaded = 0;          ///< pixels shaded per frame: buffer texels and the disc's square
-};
-
-constexpr double kBandFraction = 0.15;  // blend band beyond the disc, of its radius
-constexpr double kSkipFraction = 0.85;  // texels within this much of the radius are not shaded
-
-KernelPlan plan_kernel(const Display& d, const AcuityModel& a, double fovea_deg, double alpha,
-                       double sigma = 0.0) {
-  const double W = d.width_px, H = d.height_px;
-  const double L = std::log(std::hypot(W, H));
-  const double min_px = d.radius_px_at(fovea_deg);
-  KernelPlan p;
-  // The MAR criterion outside the disc, for every distance a gaze anywhere can give.
-  double best = 1e9;
-  for (double r = min_px; r <= std::hypot(W, H); r *= 1.01) {
-    best = std::min(best, allowed_gap(d, a, r) / buffer_gap(r, L, alpha, W, H));
-  }
-  p.accepted_sigma = best;
-  p.sigma = sigma > 0.0 ? sigma : std::clamp(best, 1.0, 16.0);
-  const double w = std::max(1.0, std::round(W / p.sigma)),
-               h = std::max(1.0, std::round(H / p.sigma));
-  p.native_px = native_radius(min_px, L, alpha, w, h);
-  // Shaded texels for a gaze at the centre: per row (angle), the columns from
-  // the skipped disc out to the screen's edge plus the filtering margin.
-  const double skip = kSkipFraction * p.native_px, margin = 0.02 * std::hypot(W, H);
-  const auto u = [&](double r) {
-    return std::pow(std::clamp(std::log(std::max(r, 1.0)) / L, 0.0, 1.0), 1.0 / alpha) * w;
-  };
-  for (int j = 0; j < static_cast<int>(h); ++j) {
-    const double th = (j + 0.5) / h * 2.0 * std::numbers::pi;
-    const double c = std::abs(std::cos(th)), s = std::abs(std::sin(th));
-    const double edge = std::min(c > 1e-9 ? 0.5 * W / c : 1e9, s > 1e-9 ? 0.5 * H / s : 1e9);
-    p.shaded += std::max(0.0, u(edge + margin) - u(skip));
-  }
-  const double side = 2.0 * p.native_px * (1.0 + kBandFraction);
-  p.shaded += side * side;
-  return p;
-}
-
-// The kernel exponent in the user study's range [1, 4] (steps of 1/8) whose
-// buffer, at the largest sigma the acuity model accepts outside the native
-// disc, shades the fewest pixels. Where no buffer is fine enough (sigma would
-// be below 1), the most compliant exponents are compared.
-double acuity_kernel(const Display& d, const AcuityModel& a, double fovea_deg) {
-  double best_alpha = 1.0, best_compliance = -1.0, best_shaded = 0.0;
-  for (int i = 0; i <= 24; ++i) {
-    const double alpha = 1.0 + i / 8.0;
-    const KernelPlan p = plan_kernel(d, a, fovea_deg, alpha);
-    const double compliance = std::min(p.accepted_sigma, 1.0);
-    if (compliance > best_compliance + 1e-9 ||
-        (compliance > best_compliance - 1e-9 && p.shaded < best_shaded)) {
-      best_alpha = alpha, best_compliance = compliance, best_shaded = p.shaded;
-    }
-  }
-  return best_alpha;
 }
 
 class LogPolar final : public Technique {
@@ -174,191 +84,41 @@ class LogPolar final : public Technique {
   [[nodiscard]] int settle_frames() const override { return 3; }
 
   // Radius (pixels) of the native disc at this gaze: the planned one, grown
-  // by a tracker fallback and the latency margin.
+  // by a tracker fallback and the latency travel.
   double native_px(const GazeState& g) const {
-    const double e = fovea_deg_ * g.fovea_scale + latency_margin_deg(g);
+    const double e = fovea_deg_ * g.fovea_scale + latency_travel_deg(g);
     return std::max(plan_.native_px, display_.radius_px_at(e));
   }
 
   FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
                     const gpu::RenderTarget& target) override {
     const int W = target.width(), H = target.height();
-    const int bw = std::max(1, static_cast<int>(std::lround(W / sigma_)));
-    const int bh = std::max(1, static_cast<int>(std::lround(H / sigma_)));
-    // The log-polar centre must lie on the screen for the buffer to cover it:
-    // a gaze off screen is moved to the nearest screen point.
-    Vec2d g = to_gl(gaze.gaze_px, H);
-    g.x = std::clamp(g.x, 0.0, double(W));
-    g.y = std::clamp(g.y, 0.0, double(H));
-    // L spans the screen from the gaze: log of the diagonal (Meng et al.), or
-    // of the farthest corner when the gaze is off screen.
-    double far = std::hypot(double(W), double(H));
-    for (double cx : {0.0, double(W)}) {
-      for (double cy : {0.0, double(H)}) far = std::max(far, std::hypot(cx - g.x, cy - g.y));
-    }
-    const float L = static_cast<float>(std::log(far));
-    const double r_native = native_px(gaze);
-    const double band = kBandFraction * r_native;
+    const Mapping m = mapping(gaze, W, H);
+    const NativeDisc d = native_disc(m, native_px(gaze), W, H);
     // Deferred: a mesh scene's G-buffer at native resolution.
     const View native = View::full(W, H);
     scene.prepass(native);
     FrameStats stats;
     stats.native_pixels = double(W) * H;
-
-    // 1. The buffer, jittered by a sub-texel offset per frame (temporal
-    //    antialiasing); alpha 0 where nothing is shaded.
-    if (buffer_.width() != bw || buffer_.height() != bh) valid_ = false;
-    buffer_.ensure(bw, bh);
-    buffer_.clear(0, 0, 0, 0);
     // Temporal antialiasing needs history that lines up: reprojected through
     // the scene's camera and depth, or an image that holds still. A moving
     // image with neither (Shadertoy scenes) would only get jitter noise and
-    // lag (acuity error 3.56 -> 2.29 codes on raymarch without it): its
-    // buffer is shown as shaded, with no temporal pass.
+    // lag (docs/fidelity.md): its buffer is shown as shaded, with no temporal
+    // pass.
+    if (buffer_.width() != m.buffer_w || buffer_.height() != m.buffer_h) valid_ = false;
     const auto vp = scene.view_projection();
     const std::optional<std::uint64_t> key = scene.image_key();
     const bool still = key && key == last_key_;
     const bool temporal = history_ > 0.0 && (vp.has_value() || still);
     last_key_ = key;
-    const bool jitter = temporal;
-    const double jx = jitter ? halton(frame.frame, 2) - 0.5 : 0.0;
-    const double jy = jitter ? halton(frame.frame, 3) - 0.5 : 0.0;
-    const auto set_mapping = [&](const gpu::Program& p) {
-      p.set("u_lp_gaze", float(g.x), float(g.y));
-      p.set("u_lp_L", L);
-      p.set("u_lp_alpha", float(alpha_));
-      p.set("u_lp_buffer", float(bw), float(bh));
-    };
-    // Texels beyond the screen by up to one buffer cell are shaded too (at the
-    // nearest pixel), so that a bilinear read at the screen's edge has both of
-    // its neighbours: on a tiny or very flat screen (16x2) a cell of the angle
-    // axis is wider than the screen, and leaving those texels out showed black.
-    const double angle_cell = 2.0 * std::numbers::pi * far / bh;
-    const double margin = std::max(0.02 * std::hypot(W, H), angle_cell);
-    // The pass is drawn only over the texels that can land outside the
-    // skipped disc and inside the kept rectangle (log_polar_cover): at the
-    // default plan the others are 70 % of the buffer. The mapping has no
-    // discard (on llvmpipe a shader that can discard is slower everywhere,
-    // and a discarded fragment costs the whole shader), so the few texels
-    // the cover's bands take in besides are shaded, at clamped positions.
-    const double skip = kSkipFraction * r_native;
-    const std::vector<PixelRect> cover =
-        log_polar_cover(g, L, alpha_, bw, bh, skip, {-margin, -margin, W + margin, H + margin});
-    const double shaded = kit_.shade(
-        scene, native, "logpolar/map_logpolar.glsl", buffer_,
-        [&](const gpu::Program& p, gpu::Samplers&) {
-          set_mapping(p);
-          p.set("u_lp_jitter", float(jx), float(jy));
-          p.set("u_lp_screen", float(W), float(H));
-        },
-        {}, false, &cover);
+    const double shaded = shade_buffer(scene, native, m, d, temporal, frame.frame);
     stats.parts.push_back({"log-polar buffer", shaded});
-
-    // 2. The native disc and its blend band, clipped to the screen, shaded
-    //    from the same prepass at the screen's own pixel centres.
-    const double reach = r_native + band + 1.0;
-    const double x0 = std::max(0.0, std::floor(g.x - reach)),
-                 y0 = std::max(0.0, std::floor(g.y - reach));
-    const double x1 = std::min(double(W), std::ceil(g.x + reach)),
-                 y1 = std::min(double(H), std::ceil(g.y + reach));
-    const bool has_fovea = x1 > x0 && y1 > y0;
-    double disc = 0.0;
-    if (has_fovea) {
-      const int fw = static_cast<int>(x1 - x0), fh = static_cast<int>(y1 - y0);
-      fovea_.ensure(fw, fh);
-      // Only the disc is read (the square's corners would be 21 % more).
-      const std::vector<PixelRect> disc_cover = disc_rects(g.x - x0, g.y - y0, reach + 1.0, fw, fh);
-      disc = kit_.shade(
-          scene, native, kMapRect, fovea_,
-          [&](const gpu::Program& p, gpu::Samplers&) {
-            p.set("u_map_rect", float(x0), float(y0), float(fw), float(fh));
-            p.set("u_map_target", float(fw), float(fh));
-          },
-          {}, false, &disc_cover);
-    }
+    const double disc = shade_native_disc(scene, native, d);
     stats.parts.push_back({"native disc", disc});
     stats.shaded_pixels = shaded + disc;
-
-    // 3. First level of the antialiasing: temporal, in the buffer.
-    const int next = 1 - latest_;
-    gpu::RenderTarget& out = history_targets_[static_cast<size_t>(next)];
-    out.ensure(bw, bh, GL_RGBA16F);
-    const bool blend = temporal && valid_;
-    const bool reproject = blend && vp && has_view_proj_;
-    const auto set_temporal = [&](const gpu::Program& p, gpu::Samplers& samplers) {
-      samplers.bind(p, "u_current", buffer_.color());
-      const gpu::Texture& h =
-          blend ? history_targets_[static_cast<size_t>(latest_)].color() : buffer_.color();
-      samplers.bind(p, "u_history", h);
-      set_mapping(p);
-      p.set("u_lp_screen", float(W), float(H));
-      p.set("u_prev_mapping", float(prev_gaze_.x), float(prev_gaze_.y), prev_L_);
-      p.set("u_history_weight", blend ? float(history_) : 0.0f);
-      if (reproject) {
-        glProgramUniformMatrix4fv(p.id(), p.uniform("u_prev_view_proj"), 1, GL_FALSE,
-                                  prev_view_proj_.data());
-      }
-    };
-    for (gpu::RenderTarget* t : {&buffer_, &history_targets_[0], &history_targets_[1]}) {
-      if (t->width() == bw && t->height() == bh) {
-        t->color().set_wrap(GL_CLAMP_TO_EDGE);
-        glTextureParameteri(t->color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);  // the angle wraps
-      }
-    }
-    if (reproject) {
-      kit_.scene_pass(scene, native, kit_.scene_program(scene, "logpolar/temporal_reproject.frag"),
-                      out, {}, set_temporal);
-    } else if (temporal) {
-      kit_.pass(kit_.fullscreen("logpolar/temporal.frag"), out, {}, set_temporal);
-    }
-    if (temporal) latest_ = next;
-    const gpu::RenderTarget& shown = temporal ? out : buffer_;
-    // Without a temporal pass this frame leaves no history: the next one that
-    // has a still image (or a camera to reproject by) starts afresh.
-    valid_ = temporal;
-    prev_gaze_ = g;
-    prev_L_ = L;
-    has_view_proj_ = vp.has_value();
-    if (vp) prev_view_proj_ = *vp;
-
-    // 4. Second level: the growing Gaussian, in the buffer (blur.frag), where
-    //    it is wider than the inverse mapping's bilinear read already is.
-    const gpu::RenderTarget& read = blur_pass_ ? blurred_ : shown;
-    if (blur_pass_) {
-      blurred_.ensure(bw, bh, GL_RGBA16F);
-      blurred_.color().set_wrap(GL_CLAMP_TO_EDGE);
-      glTextureParameteri(blurred_.color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-      kit_.pass(kit_.fullscreen("logpolar/blur.frag"), blurred_, {},
-                [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                  samplers.bind(p, "u_buffer", shown.color());
-                  p.allow_missing({"u_lp_gaze"});
-                  set_mapping(p);
-                  p.set("u_disc", float(r_native), float(band), float(r_native));
-                  p.set("u_blur", float(blur_));
-                });
-    }
-
-    // 5. Inverse mapping, and the native disc.
-    const auto set_inverse = [&](const gpu::Program& p, gpu::Samplers& samplers) {
-      p.allow_missing({"u_buffer", "u_fovea", "u_fovea_rect", "u_has_fovea", "u_disc", "u_lp_gaze",
-                       "u_lp_L", "u_lp_alpha", "u_lp_buffer"});
-      samplers.bind(p, "u_buffer", read.color());
-      // Without a disc on the screen the buffer stands in (never read).
-      samplers.bind(p, "u_fovea", has_fovea ? fovea_.color() : read.color());
-      p.set("u_has_fovea", has_fovea ? 1 : 0);
-      p.set("u_fovea_rect", float(x0), float(y0), float(x1 - x0), float(y1 - y0));
-      p.set("u_disc", float(r_native), float(band));
-      set_mapping(p);
-    };
-    if (!has_fovea) {
-      kit_.pass(kit_.fullscreen("logpolar/inverse.frag"), target, {}, set_inverse);
-      return stats;
-    }
-    // Each pixel runs only what it needs: inside the disc one read of native
-    // pixels, in the band both, beyond it one read of the buffer (on llvmpipe
-    // a shader pays for every fetch it contains, on both sides of a branch).
-    kit_.pass_around_disc(target, g, r_native, r_native + band + 1.0, "logpolar/inverse_fovea.frag",
-                          "logpolar/inverse.frag", "logpolar/inverse_outer.frag", set_inverse);
+    const gpu::RenderTarget& shown = resolve_temporal(scene, native, m, temporal, vp);
+    const gpu::RenderTarget& read = blur(shown, m, d);
+    inverse(target, m, d, read);
     return stats;
   }
 
@@ -382,7 +142,7 @@ class LogPolar final : public Technique {
     const double L = model_.log_extent();
     int k = 1;
     for (double r = 2.0; r < 4000 && k < 4; r *= 1.01) {
-      if (buffer_gap(r, L, alpha_, model_.buffer_w(), model_.buffer_h()) >= std::pow(2.0, k)) {
+      if (buffer_gap_px(r, L, alpha_, model_.buffer_w(), model_.buffer_h()) >= std::pow(2.0, k)) {
         const auto* c = kRingColours[k];
         out.push_back({OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, r, 0, c[0], c[1],
                        c[2],
@@ -403,6 +163,215 @@ class LogPolar final : public Technique {
   }
 
  private:
+  /// This frame's log-polar mapping: its centre (GL pixels), L, and the
+  /// buffer's size.
+  struct Mapping {
+    Vec2d gaze;
+    float L = 1.0f;
+    double far_px = 1.0;  ///< the farthest screen corner from the centre
+    int buffer_w = 1, buffer_h = 1;
+  };
+  /// The native disc and its blend band, and the square of screen pixels
+  /// (clipped to the screen) they are shaded into.
+  struct NativeDisc {
+    Vec2d centre;  ///< GL pixels
+    double radius_px = 0, band_px = 0;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    [[nodiscard]] bool on_screen() const { return x1 > x0 && y1 > y0; }
+  };
+
+  Mapping mapping(const GazeState& gaze, int W, int H) const {
+    Mapping m;
+    m.buffer_w = std::max(1, static_cast<int>(std::lround(W / sigma_)));
+    m.buffer_h = std::max(1, static_cast<int>(std::lround(H / sigma_)));
+    // The log-polar centre must lie on the screen for the buffer to cover it:
+    // a gaze off screen is moved to the nearest screen point.
+    Vec2d g = to_gl(gaze.gaze_px, H);
+    g.x = std::clamp(g.x, 0.0, double(W));
+    g.y = std::clamp(g.y, 0.0, double(H));
+    m.gaze = g;
+    // L spans the screen from the gaze: log of the diagonal (Meng et al.), or
+    // of the farthest corner when the gaze is off screen.
+    double far = std::hypot(double(W), double(H));
+    for (double cx : {0.0, double(W)}) {
+      for (double cy : {0.0, double(H)}) far = std::max(far, std::hypot(cx - g.x, cy - g.y));
+    }
+    m.far_px = far;
+    m.L = static_cast<float>(std::log(far));
+    return m;
+  }
+
+  static NativeDisc native_disc(const Mapping& m, double radius_px, int W, int H) {
+    NativeDisc d;
+    d.centre = m.gaze;
+    d.radius_px = radius_px;
+    d.band_px = kBandFraction * radius_px;
+    const double reach = radius_px + d.band_px + 1.0;
+    d.x0 = std::max(0.0, std::floor(m.gaze.x - reach));
+    d.y0 = std::max(0.0, std::floor(m.gaze.y - reach));
+    d.x1 = std::min(double(W), std::ceil(m.gaze.x + reach));
+    d.y1 = std::min(double(H), std::ceil(m.gaze.y + reach));
+    return d;
+  }
+
+  void set_mapping(const gpu::Program& p, const Mapping& m) const {
+    p.set("u_lp_gaze", float(m.gaze.x), float(m.gaze.y));
+    p.set("u_lp_L", m.L);
+    p.set("u_lp_alpha", float(alpha_));
+    p.set("u_lp_buffer", float(m.buffer_w), float(m.buffer_h));
+  }
+
+  // 1. The buffer, jittered by a sub-texel offset per frame (temporal
+  //    antialiasing, when `jitter`); alpha 0 where nothing is shaded.
+  //    Returns the texels shaded.
+  double shade_buffer(Scene& scene, const View& native, const Mapping& m, const NativeDisc& d,
+                      bool jitter, int frame) {
+    const int W = native.target_width, H = native.target_height;
+    const int bw = m.buffer_w, bh = m.buffer_h;
+    buffer_.ensure(bw, bh);
+    buffer_.clear(0, 0, 0, 0);
+    const double jx = jitter ? halton(frame, 2) - 0.5 : 0.0;
+    const double jy = jitter ? halton(frame, 3) - 0.5 : 0.0;
+    // Texels beyond the screen by up to one buffer cell are shaded too (at the
+    // nearest pixel), so that a bilinear read at the screen's edge has both of
+    // its neighbours: on a tiny or very flat screen (16x2) a cell of the angle
+    // axis is wider than the screen, and leaving those texels out showed black.
+    const double angle_cell_px = 2.0 * std::numbers::pi * m.far_px / bh;
+    const double past_edge_px = std::max(0.02 * std::hypot(W, H), angle_cell_px);
+    // The pass is drawn only over the texels that can land outside the
+    // skipped disc and inside the kept rectangle (log_polar_cover), most of
+    // the buffer at the default plan (docs/performance.md). The mapping has
+    // no discard (on llvmpipe a shader that can discard is slower everywhere,
+    // and a discarded fragment costs the whole shader), so the few texels the
+    // cover's bands take in besides are shaded, at clamped positions.
+    const double skip = kSkipFraction * d.radius_px;
+    const std::vector<PixelRect> cover =
+        log_polar_cover(m.gaze, m.L, alpha_, bw, bh, skip,
+                        {-past_edge_px, -past_edge_px, W + past_edge_px, H + past_edge_px});
+    return kit_.shade(
+        scene, native, "logpolar/map_logpolar.glsl", buffer_,
+        [&](const gpu::Program& p, gpu::Samplers&) {
+          set_mapping(p, m);
+          p.set("u_lp_jitter", float(jx), float(jy));
+          p.set("u_lp_screen", float(W), float(H));
+        },
+        {}, false, &cover);
+  }
+
+  // 2. The native disc and its blend band, clipped to the screen, shaded
+  //    from the same prepass at the screen's own pixel centres.
+  double shade_native_disc(Scene& scene, const View& native, const NativeDisc& d) {
+    if (!d.on_screen()) return 0.0;
+    const int fw = static_cast<int>(d.x1 - d.x0), fh = static_cast<int>(d.y1 - d.y0);
+    fovea_.ensure(fw, fh);
+    // Only the disc is read (the square's corners would be 21 % more).
+    const double reach = d.radius_px + d.band_px + 1.0;
+    const std::vector<PixelRect> disc_cover =
+        disc_rects(d.centre.x - d.x0, d.centre.y - d.y0, reach + 1.0, fw, fh);
+    return kit_.shade(
+        scene, native, kMapRect, fovea_,
+        [&](const gpu::Program& p, gpu::Samplers&) {
+          p.set("u_map_rect", float(d.x0), float(d.y0), float(fw), float(fh));
+          p.set("u_map_target", float(fw), float(fh));
+        },
+        {}, false, &disc_cover);
+  }
+
+  // 3. First level of the antialiasing: temporal, in the buffer. Returns
+  //    what the next levels read.
+  const gpu::RenderTarget& resolve_temporal(Scene& scene, const View& native, const Mapping& m,
+                                            bool temporal,
+                                            const std::optional<std::array<float, 16>>& vp) {
+    const int bw = m.buffer_w, bh = m.buffer_h;
+    const int next = 1 - latest_;
+    gpu::RenderTarget& out = history_targets_[static_cast<size_t>(next)];
+    out.ensure(bw, bh, GL_RGBA16F);
+    const bool blend = temporal && valid_;
+    const bool reproject = blend && vp && has_view_proj_;
+    const auto set_temporal = [&](const gpu::Program& p, gpu::Samplers& samplers) {
+      samplers.bind(p, "u_current", buffer_.color());
+      const gpu::Texture& h =
+          blend ? history_targets_[static_cast<size_t>(latest_)].color() : buffer_.color();
+      samplers.bind(p, "u_history", h);
+      set_mapping(p, m);
+      p.set("u_lp_screen", float(native.target_width), float(native.target_height));
+      p.set("u_prev_mapping", float(prev_gaze_.x), float(prev_gaze_.y), prev_L_);
+      p.set("u_history_weight", blend ? float(history_) : 0.0f);
+      if (reproject) {
+        glProgramUniformMatrix4fv(p.id(), p.uniform("u_prev_view_proj"), 1, GL_FALSE,
+                                  prev_view_proj_.data());
+      }
+    };
+    for (gpu::RenderTarget* t : {&buffer_, &history_targets_[0], &history_targets_[1]}) {
+      if (t->width() == bw && t->height() == bh) {
+        t->color().set_wrap(GL_CLAMP_TO_EDGE);
+        glTextureParameteri(t->color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);  // the angle wraps
+      }
+    }
+    if (reproject) {
+      kit_.scene_pass(scene, native, kit_.scene_program(scene, "logpolar/temporal_reproject.frag"),
+                      out, {}, set_temporal);
+    } else if (temporal) {
+      kit_.pass(kit_.fullscreen("logpolar/temporal.frag"), out, {}, set_temporal);
+    }
+    if (temporal) latest_ = next;
+    // Without a temporal pass this frame leaves no history: the next one that
+    // has a still image (or a camera to reproject by) starts afresh.
+    valid_ = temporal;
+    prev_gaze_ = m.gaze;
+    prev_L_ = m.L;
+    has_view_proj_ = vp.has_value();
+    if (vp) prev_view_proj_ = *vp;
+    return temporal ? out : buffer_;
+  }
+
+  // 4. Second level: the growing Gaussian, in the buffer (blur.frag), where
+  //    it is wider than the inverse mapping's bilinear read already is.
+  //    Returns what the inverse mapping reads.
+  const gpu::RenderTarget& blur(const gpu::RenderTarget& shown, const Mapping& m,
+                                const NativeDisc& d) {
+    if (!blur_pass_) return shown;
+    blurred_.ensure(m.buffer_w, m.buffer_h, GL_RGBA16F);
+    blurred_.color().set_wrap(GL_CLAMP_TO_EDGE);
+    glTextureParameteri(blurred_.color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    kit_.pass(kit_.fullscreen("logpolar/blur.frag"), blurred_, {},
+              [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                samplers.bind(p, "u_buffer", shown.color());
+                p.allow_missing({"u_lp_gaze"});
+                set_mapping(p, m);
+                p.set("u_disc", float(d.radius_px), float(d.band_px), float(d.radius_px));
+                p.set("u_blur", float(blur_));
+              });
+    return blurred_;
+  }
+
+  // 5. Inverse mapping, and the native disc.
+  void inverse(const gpu::RenderTarget& target, const Mapping& m, const NativeDisc& d,
+               const gpu::RenderTarget& read) {
+    const bool has_fovea = d.on_screen();
+    const auto set_inverse = [&](const gpu::Program& p, gpu::Samplers& samplers) {
+      p.allow_missing({"u_buffer", "u_fovea", "u_fovea_rect", "u_has_fovea", "u_disc", "u_lp_gaze",
+                       "u_lp_L", "u_lp_alpha", "u_lp_buffer"});
+      samplers.bind(p, "u_buffer", read.color());
+      // Without a disc on the screen the buffer stands in (never read).
+      samplers.bind(p, "u_fovea", has_fovea ? fovea_.color() : read.color());
+      p.set("u_has_fovea", has_fovea ? 1 : 0);
+      p.set("u_fovea_rect", float(d.x0), float(d.y0), float(d.x1 - d.x0), float(d.y1 - d.y0));
+      p.set("u_disc", float(d.radius_px), float(d.band_px));
+      set_mapping(p, m);
+    };
+    if (!has_fovea) {
+      kit_.pass(kit_.fullscreen("logpolar/inverse.frag"), target, {}, set_inverse);
+      return;
+    }
+    // Each pixel runs only what it needs: inside the disc one read of native
+    // pixels, in the band both, beyond it one read of the buffer (on llvmpipe
+    // a shader pays for every fetch it contains, on both sides of a branch).
+    kit_.pass_around_disc(target, m.gaze, d.radius_px, d.radius_px + d.band_px + 1.0,
+                          "logpolar/inverse_fovea.frag", "logpolar/inverse.frag",
+                          "logpolar/inverse_outer.frag", set_inverse);
+  }
+
   Display display_;
   double sigma_, alpha_, blur_;
   bool blur_pass_;  // the second level's Gaussian is wider than the bilinear read (blur.frag)
@@ -424,6 +393,8 @@ class LogPolar final : public Technique {
 
 }  // namespace
 
+}  // namespace logpolar
+
 TechniqueInfo logpolar_info() {
   TechniqueInfo t;
   t.name = "logpolar";
@@ -444,29 +415,36 @@ TechniqueInfo logpolar_info() {
        "disc, shades the fewest pixels",
        "", ParamType::Real, 0.25, 8.0, 1.0,
        [](const TechniqueConfig& c, const ParamValues& v) {
-         return acuity_kernel(c.display, c.acuity, v.real("fovea_deg"));
+         return logpolar::acuity_kernel(c.display, c.acuity, v.real("fovea_deg"));
        }},
       {"sigma",
        "buffer parameter W / w (1 = native size); default the largest whose largest gap between "
        "samples (a cell's diagonal) stays within half the MAR outside the native disc",
        "", ParamType::Real, 1.0, 16.0, 1.8,
        [](const TechniqueConfig& c, const ParamValues& v) {
-         return plan_kernel(c.display, c.acuity, v.real("fovea_deg"), v.real("alpha")).sigma;
+         return logpolar::plan_kernel(c.display, c.acuity, v.real("fovea_deg"), v.real("alpha"))
+             .sigma;
        }},
-      param("blur",
-            "antialiasing Gaussian sigma in buffer texels, reached one disc radius beyond the "
-            "native disc (it grows from 0 there); the inverse mapping's bilinear read blurs by "
-            "0.41 by itself, so up to that it costs nothing and adds nothing (0 = the read alone)",
-            "texels", ParamType::Real, 0.0, 3.0, 0.4),
-      param("temporal",
-            "weight of the reprojected history in the buffer's temporal antialiasing (the "
-            "paper's first level), with sub-texel jitter; 0 = off, the default: against the 4x4 "
-            "supersampled reference it adds more acuity error than it removes (docs/fidelity.md)",
-            "", ParamType::Real, 0.0, 0.95, 0.0),
+      tuned(
+          param("blur",
+                "antialiasing Gaussian sigma in buffer texels, reached one disc radius beyond the "
+                "native disc (it grows from 0 there); the inverse mapping's bilinear read blurs by "
+                "0.41 by itself, so up to that it costs nothing and adds nothing (0 = the read "
+                "alone)",
+                "texels", ParamType::Real, 0.0, 3.0, 0.4),
+          {0, 0.4, 0.8}),
+      tuned(
+          param(
+              "temporal",
+              "weight of the reprojected history in the buffer's temporal antialiasing (the "
+              "paper's first level), with sub-texel jitter; 0 = off, the default: against the 4x4 "
+              "supersampled reference it adds more acuity error than it removes (docs/fidelity.md)",
+              "", ParamType::Real, 0.0, 0.95, 0.0),
+          {0, 0.5}),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "blur",
                       "inverse",  "inverse_fovea",      "inverse_outer"};
-  t.make = construct<LogPolar>();
+  t.make = construct<logpolar::LogPolar>();
   return t;
 }
 

@@ -1,5 +1,5 @@
 // native: the reference. Every pixel shaded once, at the display's sampling.
-#include "../common/registry.hpp"
+#include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
 namespace foveate::tech {

@@ -1,4 +1,4 @@
 // The stencil mask of a rate class: drawn over the class's rectangles only
-// (common/rects.vert); the pass state marks every fragment, colour is off.
+// (pass_kit/rects.vert); the pass state marks every fragment, colour is off.
 out vec4 o_color;
 void main() { o_color = vec4(0.0); }

@@ -15,7 +15,9 @@
 #include "bars_technique.hpp"
 #include "errors.hpp"
 #include "foveate/bench/bench.hpp"
+#include "foveate/bench/merge.hpp"
 #include "foveate/bench/report.hpp"
+#include "foveate/bench/tune.hpp"
 #include "foveate/gpu/gl.hpp"
 #include "native_copy.hpp"
 
@@ -153,14 +155,14 @@ TEST(Bench, MarginSweepsTheTechniquesPlanNotTheYardstick) {
   };
   TechniqueConfig c;
   c.display = Display::load("desktop-1080p").resized(640, 360);
-  c.acuity = AcuityModel::quality("A");
+  c.acuity = AcuityModel::preset("A");
   c.margin = 2.0;
   const ParamValues finer = resolve_parameters(technique_info("checkerboard"), c);
   EXPECT_EQ(r1(r.results[2]), finer.real("r1"));
   EXPECT_GT(r1(r.results[2]), r1(r.results[1]));
   write_bench_report(r, out);
   const nlohmann::json j = read_json(out + "/results.json");
-  EXPECT_EQ(j["acuity"]["slope"], kSlopeQualityA);
+  EXPECT_EQ(j["acuity"]["slope"], kSlopePresetA);
   EXPECT_TRUE(j["margin"].is_null());
   std::filesystem::remove_all(out);
 }
@@ -317,4 +319,151 @@ TEST(Bench, FovVideoVdpJudgesEveryRunAgainstTheReference) {
   EXPECT_NE(page.find("id=\"chart-jod\""), std::string::npos);
   EXPECT_NE(page.find("Where the difference is visible"), std::string::npos);
   std::filesystem::remove_all(out);
+}
+
+// A benchmark split into shards, merged, measures the same runs in the same
+// order with the same pixels and JOD as one unsharded run (timings aside);
+// merging refuses shards of other settings, repeated or missing shards.
+TEST(Bench, ShardsMergedEqualOneRun) {
+  BenchOptions o = tiny();
+  o.session.size = {96, 54};
+  o.reference = 2;
+  o.techniques = std::vector<std::string>{"native", "layered", "inset", "checkerboard"};
+  const BenchResult whole = run(o);
+  std::vector<BenchResult> shards;
+  std::vector<std::string> names;
+  for (int k : {1, 0}) {  // the order given does not matter
+    BenchOptions s = o;
+    s.shard = {k, 2};
+    const std::string dir = fresh_dir("foveate-bench-shard-" + std::to_string(k));
+    write_bench_report(run(s), dir);
+    shards.push_back(read_bench_results(read_json(dir + "/results.json"), dir));
+    names.push_back(dir);
+    std::filesystem::remove_all(dir);
+  }
+  EXPECT_EQ(shards[0].results.size(), 2u);  // native and checkerboard (run 3 of 3)
+  const BenchResult merged = merge_shards(shards, names);
+  ASSERT_EQ(merged.results.size(), whole.results.size());
+  for (size_t i = 0; i < whole.results.size(); ++i) {
+    const TechniqueResult &a = whole.results[i], &b = merged.results[i];
+    EXPECT_EQ(a.technique, b.technique);
+    EXPECT_EQ(a.run_index, b.run_index);
+    EXPECT_EQ(a.shaded_pixels, b.shaded_pixels);
+    ASSERT_TRUE(a.metrics && b.metrics && a.metrics->fvvdp && b.metrics->fvvdp);
+    EXPECT_DOUBLE_EQ(a.metrics->fvvdp->jod, b.metrics->fvvdp->jod) << a.technique;
+  }
+  const std::string out = fresh_dir("foveate-bench-merged");
+  write_bench_report(merged, out);
+  EXPECT_EQ(read_json(out + "/results.json")["shard"]["merged"].get<int>(), 2);
+  std::filesystem::remove_all(out);
+  // Refusals.
+  EXPECT_NE(error_of([&] { (void)merge_shards({shards[0]}, {names[0]}); }).find("missing"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              (void)merge_shards({shards[0], shards[0]}, {"a", "b"});
+            }).find("given twice"),
+            std::string::npos);
+  BenchOptions fewer = o;
+  fewer.frames = 1;
+  fewer.shard = {0, 2};
+  const std::string dir = fresh_dir("foveate-bench-shard-other");
+  write_bench_report(run(fewer), dir);
+  const BenchResult other = read_bench_results(read_json(dir + "/results.json"), dir);
+  std::filesystem::remove_all(dir);
+  EXPECT_NE(error_of([&] {
+              (void)merge_shards({other, shards[0]}, {"a", "b"});
+            }).find("other settings"),
+            std::string::npos);
+}
+
+// tune: every margin evaluated beside native; the choice is the fastest
+// setting within the bound, its parameters a file that a benchmark takes.
+TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
+  TuneOptions o;
+  o.bench = tiny();
+  o.bench.session.size = {96, 54};
+  o.bench.reference = 2;
+  o.bench.diagnostics = false;
+  o.scenes = {"cheap"};
+  o.techniques = std::vector<std::string>{"layered", "inset"};
+  o.bound_jod = 0.5;
+  const TuneResult r = run_tune(o);
+  EXPECT_TRUE(r.native_jod.count("cheap"));
+  for (const std::string t : {"layered", "inset"}) {
+    int margins = 0;
+    for (const TunePoint& p : r.points) {
+      if (p.technique == t && p.stage == 1) ++margins;
+      EXPECT_EQ(p.within_bound, p.below_native <= 0.5);
+    }
+    EXPECT_EQ(margins, 6) << t;
+    ASSERT_TRUE(r.chosen.count(t)) << t;
+    // No evaluated setting within the bound is faster than the chosen one.
+    const TunePoint* chosen = nullptr;
+    for (const TunePoint& p : r.points) {
+      if (p.technique == t && p.params == r.chosen.at(t)) chosen = &p;
+    }
+    ASSERT_NE(chosen, nullptr);
+    if (chosen->within_bound) {
+      for (const TunePoint& p : r.points) {
+        if (p.technique == t && p.within_bound) {
+          EXPECT_LE(p.speedup, chosen->speedup);
+        }
+      }
+    }
+  }
+  const std::string out = fresh_dir("foveate-tune");
+  write_tune_report(r, out);
+  const ParamOverrides params = read_params_file(out + "/params.json");
+  EXPECT_EQ(params.per_technique.at("layered"), r.chosen.at("layered"));
+  const nlohmann::json j = read_json(out + "/tune.json");
+  EXPECT_EQ(j["schema"], kTuneSchema);
+  EXPECT_EQ(read_tune_results(j, out).points.size(), r.points.size());
+  // A benchmark with the chosen parameters.
+  BenchOptions b = tiny();
+  b.params = params;
+  b.techniques = std::vector<std::string>{"native", "layered"};
+  const BenchResult with_params = run(b);
+  for (const auto& [key, value] : r.chosen.at("layered")) {
+    const auto& ps = with_params.results[1].parameters;
+    const auto it =
+        std::find_if(ps.begin(), ps.end(), [&](const auto& kv) { return kv.first == key; });
+    ASSERT_NE(it, ps.end());
+    EXPECT_EQ(it->second, value);
+  }
+  std::filesystem::remove_all(out);
+}
+
+// A tune grid split into shards and merged evaluates the same candidates
+// with the same JOD as the grid in one run.
+TEST(Tune, ShardsMergedEqualTheGrid) {
+  TuneOptions o;
+  o.bench = tiny();
+  o.bench.session.size = {96, 54};
+  o.bench.reference = 2;
+  o.scenes = {"cheap"};
+  o.techniques = std::vector<std::string>{"inset"};
+  o.grid = true;
+  const TuneResult whole = run_tune(o);
+  std::vector<TuneResult> shards;
+  for (int k = 0; k < 3; ++k) {
+    TuneOptions s = o;
+    s.shard = {k, 3};
+    const std::string dir = fresh_dir("foveate-tune-shard-" + std::to_string(k));
+    write_tune_report(run_tune(s), dir);
+    shards.push_back(read_tune_results(read_json(dir + "/tune.json"), dir));
+    std::filesystem::remove_all(dir);
+  }
+  const TuneResult merged = merge_tune_shards(shards, {"a", "b", "c"});
+  ASSERT_EQ(merged.points.size(), whole.points.size());
+  for (const TunePoint& p : whole.points) {
+    const auto it = std::find_if(
+        merged.points.begin(), merged.points.end(),
+        [&](const TunePoint& q) { return q.technique == p.technique && q.params == p.params; });
+    ASSERT_NE(it, merged.points.end());
+    EXPECT_DOUBLE_EQ(it->jod, p.jod);
+  }
+  EXPECT_NE(error_of([&] {
+              (void)merge_tune_shards({shards[0], shards[1]}, {"a", "b"});
+            }).find("missing"),
+            std::string::npos);
 }

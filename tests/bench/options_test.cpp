@@ -4,13 +4,16 @@
 // anything to save.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <set>
 
 #include "errors.hpp"
 #include "foveate/bench/bench.hpp"
 #include "foveate/bench/frame_order.hpp"
+#include "foveate/bench/params_file.hpp"
 #include "foveate/bench/savings.hpp"
 #include "foveate/bench/statistics.hpp"
+#include "foveate/bench/tune.hpp"
 
 using namespace foveate;
 using namespace foveate::bench;
@@ -76,7 +79,10 @@ TEST(Options, ErrorsNameTheField) {
   o = {};
   o.params.set("nope", 1);
   EXPECT_EQ(field_of([&] { validate(o); }), "params");
-  EXPECT_EQ(error_of([] { acuity_from("A", 0.02); }), "quality and slope: give one, not both");
+  EXPECT_EQ(error_of([] { acuity_from("A", 0.02); }),
+            "acuity_preset and slope: give one, not both");
+  EXPECT_EQ(field_of([] { acuity_from("Z", std::nullopt); }), "acuity_preset");
+  EXPECT_EQ(acuity_from("b", std::nullopt).slope, kSlopePresetB);
 }
 
 TEST(Options, ParameterOverridesGoWhereTheyAreDeclared) {
@@ -158,7 +164,7 @@ TEST(Statistics, PassTimesAddUpToTheFrame) {
 
 TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
   const Display d = Display::load("desktop-1080p");
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   const SavingsCheck small = check_savings(d.resized(320, 180), a);
   EXPECT_TRUE(small.nothing_to_save);
   EXPECT_LT(small.pixel_bound, 1.2);
@@ -174,5 +180,51 @@ TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
 
 TEST(Savings, AWideFieldSavesEvenAtModestSizes) {
   const Display quest = Display::load("hmd-quest3").resized(640, 684);
-  EXPECT_FALSE(check_savings(quest, AcuityModel::quality("A")).nothing_to_save);
+  EXPECT_FALSE(check_savings(quest, AcuityModel::preset("A")).nothing_to_save);
+}
+
+// A parameters file: checked against the declarations, errors that name the
+// file and the entry; explicit runs and shards checked like other options.
+TEST(ParamsFile, ReadBackAndErrorsNameTheEntry) {
+  const std::string dir = testing::TempDir();
+  const std::string path = dir + "/foveate-params-test.json";
+  write_params_file(path, {{"layered", {{"margin", 1.25}, {"half_rate", 0}}}}, "test");
+  const ParamOverrides p = read_params_file(path);
+  EXPECT_EQ(p.per_technique.at("layered").at("margin"), 1.25);
+  EXPECT_EQ(p.per_technique.at("layered").at("half_rate"), 0.0);
+  const auto with = [&](const std::string& text) {
+    const std::string f = dir + "/foveate-params-bad.json";
+    FILE* out = std::fopen(f.c_str(), "w");
+    std::fputs(text.c_str(), out);
+    std::fclose(out);
+    return error_of([&] { (void)read_params_file(f); });
+  };
+  const std::string head = R"({"schema": "foveate-params/1", "techniques": )";
+  EXPECT_NE(with(head + R"({"nope": {}}})").find("techniques.nope"), std::string::npos);
+  EXPECT_NE(with(head + R"({"layered": {"colour": 1}}})").find("techniques.layered.colour"),
+            std::string::npos);
+  EXPECT_NE(with(head + R"({"layered": {"margin": 9}}})").find("outside [1, 4]"),
+            std::string::npos);
+  EXPECT_NE(with(R"({"schema": "x", "techniques": {}})").find("schema"), std::string::npos);
+  EXPECT_NE(with("{").find("foveate-params-bad.json"), std::string::npos);
+}
+
+TEST(Options, RunsAndShardsAreChecked) {
+  BenchOptions o;
+  o.runs = {{"layered", {{"colour", 1.0}}, ""}};
+  EXPECT_EQ(field_of([&] { validate(o); }), "runs");
+  o.runs = {{"layered", {{"margin", 1.5}}, ""}};
+  EXPECT_EQ(field_of([&] { validate(o); }), "no error");
+  EXPECT_EQ(run_spec_label(o.runs[0]), "layered {margin=1.5}");
+  o.techniques = std::vector<std::string>{"layered"};
+  EXPECT_EQ(field_of([&] { validate(o); }), "runs");  // runs or techniques, not both
+  o = {};
+  o.shard = {2, 2};
+  EXPECT_EQ(field_of([&] { validate(o); }), "shard");
+  TuneOptions t;
+  t.bound_jod = 0;
+  EXPECT_EQ(field_of([&] { validate(t); }), "bound_jod");
+  t = {};
+  t.techniques = std::vector<std::string>{"native"};
+  EXPECT_EQ(field_of([&] { validate(t); }), "techniques");
 }

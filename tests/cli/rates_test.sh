@@ -53,6 +53,10 @@ ratio() { "$FOVEATE" rates --out "$tmp/x.bin" "$@" | sed -n "s/.*native pixels =
 a=$(ratio); b=$(ratio --latency-ms 30); q=$(ratio --quality B)
 check "latency margin shades more ($a < $b)" 'python3 -c "import sys; assert float(sys.argv[1]) < float(sys.argv[2])" $a $b'
 check "quality B shades more than A ($a < $q)" 'python3 -c "import sys; assert float(sys.argv[1]) < float(sys.argv[2])" $a $q'
+p=$(ratio --acuity B)
+check "--acuity B is --quality B ($p = $q)" '[[ -n "$p" && "$p" == "$q" ]]'
+err=$("$FOVEATE" rates --out "$tmp/x.bin" --acuity B --slope 0.02 2>&1); rc=$?
+check "--acuity and --slope together: exit 1, both named" '[[ $rc -ne 0 && "$err" == *"--acuity and --slope"* ]]'
 # Unless --margin says otherwise, the vrs technique's own planning margin
 # (foveate techniques: vrs margin = 1.5), finer than the model itself.
 one=$(ratio --margin 1); own=$(ratio --margin 1.5)

@@ -11,19 +11,19 @@
 using namespace foveate;
 
 TEST(Acuity, LinearMarModel) {
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   EXPECT_DOUBLE_EQ(a.slope, 0.0275);
   EXPECT_DOUBLE_EQ(a.mar_deg(0.0), 1.0 / 48.0);
   EXPECT_DOUBLE_EQ(a.mar_deg(10.0), 0.275 + 1.0 / 48.0);
   EXPECT_NEAR(a.eccentricity_for_mar(a.mar_deg(7.3)), 7.3, 1e-12);
-  EXPECT_DOUBLE_EQ(AcuityModel::quality("b").slope, 0.0220);
+  EXPECT_DOUBLE_EQ(AcuityModel::preset("b").slope, 0.0220);
   // 1.65 and 1.32 arc minutes per degree (section 5).
-  EXPECT_NEAR(kSlopeQualityA * 60.0, 1.65, 1e-12);
-  EXPECT_NEAR(kSlopeQualityB * 60.0, 1.32, 1e-12);
+  EXPECT_NEAR(kSlopePresetA * 60.0, 1.65, 1e-12);
+  EXPECT_NEAR(kSlopePresetB * 60.0, 1.32, 1e-12);
 }
 
 TEST(Acuity, RejectsBadQualityAndSlope) {
-  EXPECT_THROW(AcuityModel::quality("C"), Error);
+  EXPECT_THROW(AcuityModel::preset("C"), Error);
   EXPECT_THROW(AcuityModel::with_slope(0.0), Error);
   EXPECT_THROW(AcuityModel::with_slope(-0.01), Error);
   EXPECT_THROW(AcuityModel::with_slope(NAN), Error);
@@ -33,7 +33,7 @@ TEST(Acuity, RejectsBadQualityAndSlope) {
 TEST(Acuity, FinerDividesTheWholeModel) {
   // A margin k: the MAR is k times smaller at every eccentricity, so the
   // eccentricity where it reaches a given MAR lies further out.
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   const AcuityModel f = a.finer(2.0);
   EXPECT_DOUBLE_EQ(f.slope, 0.0275 / 2.0);
   EXPECT_DOUBLE_EQ(f.w0_deg, 1.0 / 96.0);

@@ -95,19 +95,19 @@ TEST(Planner, GridIsBoundedWithAnErrorNamingTheLimit) {
   PlannerOptions o;
   o.grid_step_deg = 1e-9;
   const Display d = Display::load("desktop-1080p");
-  const std::string e = error_of([&] { plan_layers(d, AcuityModel::quality("A"), o); });
+  const std::string e = error_of([&] { plan_layers(d, AcuityModel::preset("A"), o); });
   EXPECT_NE(e.find("over the limit of 10000"), std::string::npos) << e;
   EXPECT_NE(e.find("use a step of at least 0.0024 deg"), std::string::npos) << e;
   // With a smaller limit (a fast test): the step it suggests is accepted, and
   // raising the limit accepts the finer one.
   o.max_grid_points = 1000;
   o.grid_step_deg = 0.02;
-  const std::string small = error_of([&] { plan_layers(d, AcuityModel::quality("A"), o); });
+  const std::string small = error_of([&] { plan_layers(d, AcuityModel::preset("A"), o); });
   EXPECT_NE(small.find("1168 candidate radii"), std::string::npos) << small;
   EXPECT_NE(small.find("use a step of at least 0.024 deg"), std::string::npos) << small;
   o.grid_step_deg = 0.024;
-  EXPECT_NO_THROW(plan_layers(d, AcuityModel::quality("A"), o));
+  EXPECT_NO_THROW(plan_layers(d, AcuityModel::preset("A"), o));
   o.grid_step_deg = 0.02;
   o.max_grid_points = 2000;
-  EXPECT_NO_THROW(plan_layers(d, AcuityModel::quality("A"), o));
+  EXPECT_NO_THROW(plan_layers(d, AcuityModel::preset("A"), o));
 }

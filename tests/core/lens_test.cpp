@@ -124,7 +124,7 @@ TEST(Lens, RightEyeMirrorsTheLensCentre) {
 }
 
 ShadingRateImage rates(const Display& d, Vec2d gaze) {
-  return shading_rate_image(d, AcuityModel::quality("A"), gaze);
+  return shading_rate_image(d, AcuityModel::preset("A"), gaze);
 }
 
 // Gaze 0.95 across the DK1's buffer: x = 1042, 410 px right of the axis,
@@ -181,7 +181,7 @@ TEST(Lens, RatesOnAxisUnchangedWhereTheBufferIsNotOversampled) {
 // is sampled coarser than native and the plan is smaller.
 TEST(Lens, PlanCoarserOffAxisIdenticalOnAxis) {
   const Display d = Display::load("hmd-rift-dk1");
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   PlannerOptions o;
   o.gaze = d.principal_point();
   const LayerPlan on = plan_layers(d, a, o), free = plan_layers(without_lens(d), a, o);
@@ -217,7 +217,7 @@ TEST(Lens, OversamplingUnderFivePercentKeepsTheFoveaNative) {
   ASSERT_LT(t.least_beyond(0.0).least(), 1.05);
   PlannerOptions o;
   o.gaze = d.principal_point();
-  EXPECT_EQ(plan_layers(d, AcuityModel::quality("A"), o).layers[0].sampling_factor, 1.0);
+  EXPECT_EQ(plan_layers(d, AcuityModel::preset("A"), o).layers[0].sampling_factor, 1.0);
 }
 
 TEST(Lens, JsonRoundTrip) {

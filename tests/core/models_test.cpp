@@ -285,7 +285,7 @@ TEST(Checkerboard, ThresholdsFromFractionsAndAcuity) {
   EXPECT_DOUBLE_EQ(f.thresholds_px[2], 0.40 * diag);
 
   const Display d = Display::load("desktop-1080p");
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   // Region k starts where the MAR in pixels, w(e) f / cos e per radian (f the
   // eye distance in pixels), is twice the region's largest gap.
   const auto mar_px = [&](double e) {

@@ -14,7 +14,7 @@ const Display kDesk = Display::load("desktop-1080p");
 }
 
 TEST(Planner, SamplingFactorsFollowEq2) {
-  const LayerPlan p = plan_layers(kDesk, AcuityModel::quality("A"));
+  const LayerPlan p = plan_layers(kDesk, AcuityModel::preset("A"));
   ASSERT_EQ(p.layers.size(), 3u);
   EXPECT_DOUBLE_EQ(p.layers[0].sampling_factor, 1.0);
   for (size_t i = 1; i < 3; ++i) {
@@ -32,8 +32,8 @@ TEST(Planner, SamplingFactorsFollowEq2) {
 TEST(Planner, ReproducesMeasuredPixelSavings) {
   // Section 6: 13.3x (quality A) and 9.8x (quality B) fewer pixels, counting the
   // middle and outer layers at half rate.
-  const LayerPlan a = plan_layers(kDesk, AcuityModel::quality("A"));
-  const LayerPlan b = plan_layers(kDesk, AcuityModel::quality("B"));
+  const LayerPlan a = plan_layers(kDesk, AcuityModel::preset("A"));
+  const LayerPlan b = plan_layers(kDesk, AcuityModel::preset("B"));
   EXPECT_NEAR(a.pixel_ratio_half_rate(), 13.3, 13.3 * 0.05);
   EXPECT_NEAR(b.pixel_ratio_half_rate(), 9.8, 9.8 * 0.05);
   // Unweighted, quality A saves more than B, and both less than with half rate.
@@ -45,7 +45,7 @@ TEST(Planner, OptimumIsAMinimum) {
   // Brute force over a coarse grid never beats the planner on the same grid.
   PlannerOptions o;
   o.grid_step_deg = 0.5;
-  const AcuityModel acu = AcuityModel::quality("A");
+  const AcuityModel acu = AcuityModel::preset("A");
   const LayerPlan p = plan_layers(kDesk, acu, o);
   const double f = kDesk.eye_distance_px();
   double best = 1e300;
@@ -75,7 +75,7 @@ TEST(Planner, MoreLayersNeverCostMore) {
     PlannerOptions o;
     o.layers = n;
     o.grid_step_deg = 0.1;
-    const LayerPlan p = plan_layers(kDesk, AcuityModel::quality("A"), o);
+    const LayerPlan p = plan_layers(kDesk, AcuityModel::preset("A"), o);
     ASSERT_EQ(static_cast<int>(p.layers.size()), n);
     for (int i = 1; i < n - 1; ++i) EXPECT_GT(p.layers[i].radius_deg, p.layers[i - 1].radius_deg);
     EXPECT_LE(p.total_pixels, last * 1.001);  // integer rounding of target sizes
@@ -86,7 +86,7 @@ TEST(Planner, MoreLayersNeverCostMore) {
 TEST(Planner, OneLayerIsNative) {
   PlannerOptions o;
   o.layers = 1;
-  const LayerPlan p = plan_layers(kDesk, AcuityModel::quality("A"), o);
+  const LayerPlan p = plan_layers(kDesk, AcuityModel::preset("A"), o);
   ASSERT_EQ(p.layers.size(), 1u);
   EXPECT_EQ(p.layers[0].width_px, 1920);
   EXPECT_DOUBLE_EQ(p.pixel_ratio(), 1.0);
@@ -95,7 +95,7 @@ TEST(Planner, OneLayerIsNative) {
 TEST(Planner, FixedS2) {
   PlannerOptions o;
   o.fixed_s2 = 2.0;
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   const LayerPlan p = plan_layers(kDesk, a, o);
   EXPECT_NEAR(p.layers[1].sampling_factor, 2.0, 1e-9);
   EXPECT_NEAR(p.layers[0].radius_deg, (2 * kDesk.sharpness_deg() - a.w0_deg) / a.slope, 1e-9);
@@ -106,8 +106,8 @@ TEST(Planner, FixedS2) {
 TEST(Planner, WeightsShiftTheOptimum) {
   PlannerOptions o;
   o.weights = {1.0, 0.5, 0.5};
-  const LayerPlan w = plan_layers(kDesk, AcuityModel::quality("A"), o);
-  const LayerPlan u = plan_layers(kDesk, AcuityModel::quality("A"));
+  const LayerPlan w = plan_layers(kDesk, AcuityModel::preset("A"), o);
+  const LayerPlan u = plan_layers(kDesk, AcuityModel::preset("A"));
   EXPECT_GE(w.pixel_ratio_half_rate(), u.pixel_ratio_half_rate() - 1e-9);
 }
 
@@ -129,7 +129,7 @@ TEST(Planner, RejectsBadOptions) {
 }
 
 TEST(Planner, JsonHasDocumentedFields) {
-  const nlohmann::json j = plan_layers(kDesk, AcuityModel::quality("A"));
+  const nlohmann::json j = plan_layers(kDesk, AcuityModel::preset("A"));
   EXPECT_NEAR(j["display"]["half_fov_deg"].get<double>(), 23.4, 0.05);
   EXPECT_NEAR(j["display"]["sharpness_deg"].get<double>(), 0.0516, 0.0001);
   ASSERT_EQ(j["layers"].size(), 3u);

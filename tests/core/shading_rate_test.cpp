@@ -1,6 +1,6 @@
 // Shading-rate images: hand-worked tiles on the paper's display and on the
 // headset preset, monotonicity, supported sets, encodings against the API
-// specifications, the latency margin, the grid origin and bad input.
+// specifications, the latency travel, the grid origin and bad input.
 #include "foveate/core/shading_rate.hpp"
 
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@ const Display& preset(const std::string& name) {
 }
 
 ShadingRate tile(const Display& d, Vec2d gaze, int tx, int ty, ShadingRateOptions o = {}) {
-  return shading_rate_image(d, AcuityModel::quality("A"), gaze, o).at(tx, ty);
+  return shading_rate_image(d, AcuityModel::preset("A"), gaze, o).at(tx, ty);
 }
 
 // Guenter et al.'s display: 1920 px over 510 mm viewed from 590 mm, so the eye
@@ -55,10 +55,10 @@ TEST(ShadingRate, DesktopHandWorkedTiles) {
   ShadingRateOptions o;
   o.supported = {{1, 1}, {2, 2}};
   EXPECT_EQ(tile(d, g, 110, 33, o), (ShadingRate{2, 2}));
-  // The same tile with a 16-degree latency margin: e = 3.81 deg, w = 0.1255,
+  // The same tile with a 16-degree latency travel: e = 3.81 deg, w = 0.1255,
   // half 0.0628 deg: 2.75 (x) and 2.59 (y) pixels per sample: 2x2.
   o = {};
-  o.latency_margin_deg = 16.0;
+  o.latency_travel_deg = 16.0;
   EXPECT_EQ(tile(d, g, 110, 33, o), (ShadingRate{2, 2}));
 }
 
@@ -99,7 +99,7 @@ TEST(ShadingRate, MonotoneInEccentricity) {
     std::vector<Vec2d> gazes = {{0.5 * d.width_px, 0.5 * d.height_px}};
     if (!d.head_mounted()) gazes.insert(gazes.end(), {{300, 200}, {d.width_px - 100.0, 540}});
     for (Vec2d g : gazes) {
-      const ShadingRateImage img = shading_rate_image(d, AcuityModel::quality("A"), g);
+      const ShadingRateImage img = shading_rate_image(d, AcuityModel::preset("A"), g);
       const auto gt = img.tile_of(int(g.x), int(g.y));
       const auto ct = img.tile_of(d.width_px / 2, d.height_px / 2);
       int checked = 0;
@@ -132,7 +132,7 @@ TEST(ShadingRate, OnlySupportedRatesAndFractions) {
   ShadingRateOptions o;
   o.tile_px = 8;
   o.supported = {{1, 1}, {2, 1}, {4, 2}};
-  const ShadingRateImage img = shading_rate_image(d, AcuityModel::quality("B"), {960, 540}, o);
+  const ShadingRateImage img = shading_rate_image(d, AcuityModel::preset("B"), {960, 540}, o);
   EXPECT_EQ(img.tiles_x, 240);
   EXPECT_EQ(img.tiles_y, 135);
   double sum = 0.0;
@@ -206,9 +206,9 @@ TEST(ShadingRate, EncodingsMatchTheSpecifications) {
 TEST(ShadingRate, LatencyMarginShrinksTheCoarseArea) {
   const Display& d = preset("desktop-1080p");
   ShadingRateOptions o;
-  const auto a = shading_rate_image(d, AcuityModel::quality("A"), {960, 540}, o);
-  o.latency_margin_deg = 5.0;  // e.g. 25 ms at 200 deg/s
-  const auto b = shading_rate_image(d, AcuityModel::quality("A"), {960, 540}, o);
+  const auto a = shading_rate_image(d, AcuityModel::preset("A"), {960, 540}, o);
+  o.latency_travel_deg = 5.0;  // e.g. 25 ms at 200 deg/s
+  const auto b = shading_rate_image(d, AcuityModel::preset("A"), {960, 540}, o);
   EXPECT_LT(b.fraction({4, 4}), a.fraction({4, 4}) - 0.05);
   EXPECT_GT(b.fraction({1, 1}), a.fraction({1, 1}));
   EXPECT_GT(b.pixel_ratio(), a.pixel_ratio());
@@ -228,9 +228,9 @@ TEST(ShadingRate, BottomLeftOriginFlipsTheRows) {
   // 320 x 160 (10 tile rows of 16): the OpenGL grid is the Vulkan one upside down.
   const Display d = preset("desktop-1080p").resized(320, 160);
   ShadingRateOptions o;
-  const auto top = shading_rate_image(d, AcuityModel::quality("A"), {100, 30}, o);
+  const auto top = shading_rate_image(d, AcuityModel::preset("A"), {100, 30}, o);
   o.origin_bottom_left = true;
-  const auto bottom = shading_rate_image(d, AcuityModel::quality("A"), {100, 30}, o);
+  const auto bottom = shading_rate_image(d, AcuityModel::preset("A"), {100, 30}, o);
   ASSERT_EQ(top.tiles_y, 10);
   bool differs = false;
   for (int ty = 0; ty < 10; ++ty) {
@@ -252,11 +252,11 @@ TEST(ShadingRate, BottomLeftOriginFlipsTheRows) {
 }
 
 TEST(ShadingRate, PlannerReusedAcrossGazesMatchesEachTileWorkedAlone) {
-  // One planner, many gazes, margins and scales: every tile's rate is the one
+  // One planner, many gazes, latency travels and scales: every tile's rate is the one
   // tile_shading_rate works out for that tile from scratch (a planner that
   // kept anything of an earlier gaze would differ), on a desktop, a headset
   // and a headset seen through its lens; and shading_rate_image agrees.
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   for (const char* name : {"desktop-1080p", "hmd-quest3", "hmd-quest2-lens"}) {
     SCOPED_TRACE(name);
     const Display d = Display::load(name).resized(480, 270);
@@ -265,12 +265,12 @@ TEST(ShadingRate, PlannerReusedAcrossGazesMatchesEachTileWorkedAlone) {
     const ShadingRatePlanner p(d, a, o);
     int coarse = 0;
     for (const Vec2d g : {Vec2d{240, 135}, Vec2d{10, 260}, Vec2d{479, 0}, Vec2d{-200, 135}}) {
-      for (const auto& [margin, scale] :
+      for (const auto& [travel, scale] :
            {std::pair{0.0, 1.0}, std::pair{3.0, 1.0}, std::pair{0.0, 2.5}}) {
         ShadingRateOptions q = o;
-        q.latency_margin_deg = margin;
+        q.latency_travel_deg = travel;
         q.fovea_scale = scale;
-        const ShadingRateImage img = p.image(g, margin, scale);
+        const ShadingRateImage img = p.image(g, travel, scale);
         ASSERT_EQ(img.rates.size(), size_t(img.tiles_x * img.tiles_y));
         for (int ty = 0; ty < img.tiles_y; ++ty) {
           for (int tx = 0; tx < img.tiles_x; ++tx) {
@@ -304,10 +304,10 @@ TEST(ShadingRate, BadInputIsRefused) {
   o.tile_px = 12;
   fails(o, "tile");
   o = {};
-  o.latency_margin_deg = -1.0;
-  fails(o, "latency margin");
-  o.latency_margin_deg = std::nan("");
-  fails(o, "latency margin");
+  o.latency_travel_deg = -1.0;
+  fails(o, "latency travel");
+  o.latency_travel_deg = std::nan("");
+  fails(o, "latency travel");
   o = {};
   o.fovea_scale = 0.5;
   fails(o, "fovea scale");

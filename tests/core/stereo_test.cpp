@@ -148,7 +148,7 @@ TEST(Stereo, ShadingRatesFollowEachEyesAxis) {
   // The right eye's rates for a mirrored gaze are the left eye's mirrored:
   // the tile rates take their angles from each eye's own principal point.
   const StereoDisplay s = StereoDisplay::from(Display::load("hmd-quest2").resized(512, 512));
-  const AcuityModel a = AcuityModel::quality("A");
+  const AcuityModel a = AcuityModel::preset("A");
   const Vec2d gl{300.0, 200.0}, gr{512.0 - 300.0, 200.0};
   const ShadingRateImage l = shading_rate_image(s.left, a, gl, {});
   const ShadingRateImage r = shading_rate_image(s.right, a, gr, {});

@@ -136,7 +136,7 @@ TEST(SampleValidator, DropsAndCountsEachKindOfBadSample) {
   EXPECT_EQ(v.check({2.0, {0.5, 0.5}, 1.01, true}), DropReason::kOutOfRange);
   EXPECT_EQ(v.check({0.5, {0.5, 0.5}, 1.0, true}), DropReason::kBackwards);
   EXPECT_EQ(v.check({1.0, {0.6, 0.5}, 1.0, true}), DropReason::kDuplicate);
-  // Slightly off screen is allowed (within the margin); drops never advance the clock.
+  // Slightly off screen is allowed (within the off-screen limit); drops never advance the clock.
   EXPECT_TRUE(v.accept({1.5, {1.2, -0.2}, 0.0, false}));
   EXPECT_EQ(v.accepted(), 2u);
   const DropCounts& c = v.counts();

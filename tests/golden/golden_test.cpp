@@ -10,7 +10,7 @@
 #include "bars_technique.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 
@@ -45,13 +45,13 @@ class Golden : public test::GlTest {
   Image render(Scene& scene, const std::string& technique, int w, int h, Vec2d gaze,
                Vec2d mouse_px = {}, bool mouse_down = false,
                std::map<std::string, double> params = {}) {
-    RendererOptions o;
+    FrameRunnerOptions o;
     o.width = w;
     o.height = h;
     o.start_time_s = 2.0;
     o.mouse_px = mouse_px;
     o.mouse_down = mouse_down;
-    Renderer r(scene, o);
+    FrameRunner r(scene, o);
     TechniqueConfig c;
     c.display = Display::load("desktop-1080p").resized(w, h);
     // The papers' plans: at these sizes the fidelity margins plan layers,
@@ -120,11 +120,14 @@ TEST_F(Golden, AnAlteredImageFailsTheComparison) {
       p[0] = 255, p[1] = 0, p[2] = 255;
     }
   }
+  // It fails, and writes its difference image where failures go (a file
+  // left by an earlier run does not count).
+  const std::filesystem::path diff = test::golden_failure_dir() / "altered-cheap.diff.png";
+  std::filesystem::remove(diff);
   const std::string msg = check_golden(img, kGolden + "/scene-cheap.png", "altered-cheap");
   EXPECT_NE(msg.find("max error"), std::string::npos) << msg;
-  EXPECT_TRUE(std::filesystem::exists(std::filesystem::current_path() / "golden-failures" /
-                                      "altered-cheap.diff.png") ||
-              std::getenv("FOVEATE_TEST_OUTPUT"));
+  EXPECT_TRUE(std::filesystem::exists(diff)) << diff;
+  EXPECT_NE(msg.find(diff.string()), std::string::npos) << msg;
   // A uniformly brightened image fails on the mean.
   Image bright = render(*scene, "native", 128, 72, {64, 36});
   for (size_t i = 0; i < bright.rgba.size(); i += 4)

@@ -1,7 +1,7 @@
 // The camera's look-at for any viewing direction (issue 13): looking straight
 // down or up, where the world's up vector is parallel to the view, the view
 // matrix is still a rotation that puts the target in front of the camera
-// (it used to be NaN: an empty frame).
+// (not NaN, which renders an empty frame).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -8,7 +8,7 @@
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
-#include "mesh_common.hpp"
+#include "mesh_scene_base.hpp"
 #include "mesh_fixture.hpp"
 
 using namespace foveate;

@@ -270,7 +270,7 @@ TEST(Acuity, CutoffFollowsTheMarModel) {
   // f_c = 1 / (w(e) ppd) cycles per pixel, w in degrees per cycle (Guenter et al. eq. 1).
   const Display d = small_desktop(480, 270);
   const Vec2d gaze{240, 135};
-  const AcuityModel m = AcuityModel::quality("A");
+  const AcuityModel m = AcuityModel::preset("A");
   const Map c = acuity_cutoff_map(d, gaze, m);
   for (Vec2d p : {Vec2d{240.5, 135.5}, Vec2d{100.5, 135.5}, Vec2d{5.5, 260.5}, Vec2d{470.5, 3.5}}) {
     const double e = d.eccentricity_deg(p, gaze);

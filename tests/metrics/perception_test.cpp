@@ -167,7 +167,7 @@ TEST_P(Gratings, BelowTheCutoffKeptAboveRemoved) {
   const int w = 960, h = 540;
   const Display d = Display{}.resized(w, h);
   const Vec2d gaze{300.0, 270.0};  // room for 22 degrees to the right
-  const AcuityModel m = AcuityModel::quality("A");
+  const AcuityModel m = AcuityModel::preset("A");
   // The point at c.ecc_deg on the gaze row, right of the gaze.
   double px = gaze.x;
   while (d.eccentricity_deg({px + 1.0, gaze.y}, gaze) < c.ecc_deg) px += 1.0;

@@ -97,7 +97,7 @@ TEST(Series, MeansOverFramesOfEveryField) {
   const Frames f;
   const Display d = display();
   QualityOptions o;
-  o.acuity = AcuityModel::quality("A");
+  o.acuity = AcuityModel::preset("A");
   QualitySeries series(d, o);
   std::vector<QualityReport> single;
   FlickerTracker flicker(d, 10.0, o.band_edges_deg);

@@ -66,6 +66,12 @@ def test_bad_bench_input_raises(fv, tmp_path):
         tiny(fv, size=(0, 36))
     with pytest.raises(fv.Error, match="margin: expected a factor from 1 to 4"):
         tiny(fv, margin=0.5)
+    with pytest.raises(fv.Error, match="acuity_preset and slope: give one"):
+        tiny(fv, acuity_preset="B", slope=0.02)
+    with pytest.raises(fv.Error, match="acuity_preset and quality are one option"):
+        tiny(fv, acuity_preset="B", quality="B")
+    with pytest.raises(fv.Error, match="acuity_preset: expected A or B .*, got 'C'"):
+        tiny(fv, quality="C")
     with pytest.raises(fv.Error, match="not a built-in scene"):
         tiny(fv, scene="nosuch")
     with pytest.raises(fv.Error, match="no such parameter|belongs to none"):

@@ -7,13 +7,16 @@ import pytest
 
 
 def test_mar_is_the_linear_model_of_guenter(fv):
-    a = fv.AcuityModel.quality("A")
+    a = fv.AcuityModel.preset("A")
     assert a.slope == pytest.approx(0.0275)
     assert a.w0_deg == pytest.approx(1 / 48)
     assert a.mar_deg(10.0) == pytest.approx(0.0275 * 10 + 1 / 48)
-    b = fv.AcuityModel.quality("b")
+    b = fv.AcuityModel.preset("b")
     assert b.mar_deg(20.0) == pytest.approx(0.0220 * 20 + 1 / 48)
-    assert fv.SLOPE_QUALITY_A == 0.0275 and fv.SLOPE_QUALITY_B == 0.0220
+    assert fv.SLOPE_PRESET_A == 0.0275 and fv.SLOPE_PRESET_B == 0.0220
+    # The presets' former names stay.
+    assert fv.AcuityModel.quality("B").slope == b.slope
+    assert (fv.SLOPE_QUALITY_A, fv.SLOPE_QUALITY_B) == (fv.SLOPE_PRESET_A, fv.SLOPE_PRESET_B)
     # Vectorised over numpy arrays, and the inverse.
     e = np.array([0.0, 5.0, 30.0])
     np.testing.assert_allclose(a.mar_deg(e), 0.0275 * e + 1 / 48)
@@ -24,7 +27,7 @@ def test_mar_is_the_linear_model_of_guenter(fv):
 
 def test_bad_acuity_input_raises(fv):
     with pytest.raises(fv.Error, match="expected A or B, got 'C'"):
-        fv.AcuityModel.quality("C")
+        fv.AcuityModel.preset("C")
     with pytest.raises(ValueError):  # foveate.Error is a ValueError
         fv.AcuityModel.with_slope(-1.0)
 
@@ -84,7 +87,7 @@ def test_displays_from_dicts_and_errors(fv):
 
 
 def test_planner_reproduces_the_paper(fv):
-    a = fv.AcuityModel.quality("A")
+    a = fv.AcuityModel.preset("A")
     plan = fv.plan_layers("desktop-1080p", a, layers=3)
     assert len(plan.layers) == 3
     d = plan.display
@@ -96,7 +99,7 @@ def test_planner_reproduces_the_paper(fv):
         assert plan.layers[i].sampling_factor == pytest.approx((0.0275 * e + 1 / 48) / d.sharpness_deg())
     # The measured pixel savings: 13.3x for quality A, 9.8x for B (within 5 %).
     assert plan.pixel_ratio_half_rate() == pytest.approx(13.3, rel=0.05)
-    b = fv.plan_layers(fv.Display.load("desktop-1080p"), fv.AcuityModel.quality("B"))
+    b = fv.plan_layers(fv.Display.load("desktop-1080p"), fv.AcuityModel.preset("B"))
     assert b.pixel_ratio_half_rate() == pytest.approx(9.8, rel=0.05)
     assert plan.to_dict()["layers"][0]["sampling_factor"] == 1.0
     assert len(fv.plan_layers(layers=1).layers) == 1
@@ -141,7 +144,7 @@ def test_meng_kernel_log_polar(fv):
 
 def test_silvera_checkerboard(fv):
     d = fv.Display.load("desktop-1080p")
-    p = fv.CheckerboardPattern.from_acuity(4, d, fv.AcuityModel.quality("A"))
+    p = fv.CheckerboardPattern.from_acuity(4, d, fv.AcuityModel.preset("A"))
     deg = [math.degrees(math.atan(t / d.eye_distance_px())) for t in p.thresholds_px]
     assert deg[0] == pytest.approx(8.5, abs=0.05) and deg[2] == pytest.approx(12.2, abs=0.05)
     assert fv.checkerboard_sampling_factor(1) == pytest.approx(math.sqrt(4 / 3))

@@ -1,5 +1,5 @@
 // Multipass Shadertoy projects under a debug GL context (any GL error fails
-// the test): feedback buffers counted frame by frame through the Renderer,
+// the test): feedback buffers counted frame by frame through the FrameRunner,
 // with a foveated technique on the Image pass and the buffers advancing once
 // per distinct frame.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 
 #include "foveate/core/display.hpp"
 #include "foveate/core/error.hpp"
-#include "foveate/techniques/renderer.hpp"
+#include "foveate/techniques/frame_runner.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 
@@ -25,8 +25,8 @@ class Multipass : public test::GlTest {
     c.display = Display::load("desktop-1080p").resized(kW, kH);
     return make_technique(name, c);
   }
-  static RendererOptions options() {
-    RendererOptions o;
+  static FrameRunnerOptions options() {
+    FrameRunnerOptions o;
     o.width = kW;
     o.height = kH;
     return o;
@@ -35,7 +35,7 @@ class Multipass : public test::GlTest {
 
 TEST_F(Multipass, FeedbackCountsFramesAndRepeatsNothing) {
   auto scene = load_scene(kData + "/shadertoy/multipass/counter.json");
-  Renderer r(*scene, options());
+  FrameRunner r(*scene, options());
   auto native = technique("native");
   auto inset = technique("inset");
   for (int k = 0; k < 4; ++k) {
@@ -59,7 +59,7 @@ TEST_F(Multipass, FeedbackCountsFramesAndRepeatsNothing) {
 
 TEST_F(Multipass, EveryImageChannelAndBufferIsBound) {
   auto scene = load_scene(kData + "/shadertoy/multipass/counter.json");
-  Renderer r(*scene, options());
+  FrameRunner r(*scene, options());
   auto native = technique("native");
   r.render(*native, 0, GazeState{});
   // The left eighth shows quadrants.png (top-left red).

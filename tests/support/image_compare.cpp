@@ -45,6 +45,12 @@ Image difference_image(const Image& a, const Image& b) {
   return d;
 }
 
+std::filesystem::path golden_failure_dir() {
+  const char* dir_env = std::getenv("FOVEATE_TEST_OUTPUT");
+  return dir_env ? std::filesystem::path(dir_env)
+                 : std::filesystem::current_path() / "golden-failures";
+}
+
 std::string check_golden(const Image& actual, const std::string& reference_path,
                          const std::string& name, const Tolerance& t) {
   namespace fs = std::filesystem;
@@ -62,8 +68,7 @@ std::string check_golden(const Image& actual, const std::string& reference_path,
   }
   const Comparison c = compare_images(expected, actual, t.pixel_threshold);
   if (c.within(t)) return "";
-  const char* dir_env = std::getenv("FOVEATE_TEST_OUTPUT");
-  const fs::path dir = dir_env ? fs::path(dir_env) : fs::current_path() / "golden-failures";
+  const fs::path dir = golden_failure_dir();
   fs::create_directories(dir);
   const std::string actual_path = (dir / (name + ".actual.png")).string();
   const std::string diff_path = (dir / (name + ".diff.png")).string();

@@ -4,6 +4,7 @@
 // threshold. On failure the actual image and a difference image are written
 // next to the test binary (FOVEATE_TEST_OUTPUT overrides the folder), and with
 // FOVEATE_UPDATE_GOLDEN=1 the reference is rewritten instead.
+#include <filesystem>
 #include <string>
 
 #include "foveate/core/display.hpp"  // Vec2d
@@ -37,6 +38,10 @@ Comparison compare_disc(const Image& a, const Image& b, Vec2d centre, double rad
                         int pixel_threshold = Tolerance{}.pixel_threshold);
 /// Absolute difference, amplified 4x, for inspection.
 Image difference_image(const Image& expected, const Image& actual);
+
+/// Where check_golden writes the actual and difference images of a failure:
+/// FOVEATE_TEST_OUTPUT, else golden-failures/ in the working directory.
+std::filesystem::path golden_failure_dir();
 
 /// Compares `actual` with the PNG at `reference_path`; returns "" when within
 /// tolerance, else a message naming the numbers and the files written.

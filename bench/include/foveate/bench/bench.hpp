@@ -64,7 +64,7 @@ struct BenchOptions {
   int frames = 12;  ///< measured frames per technique
   int warmup = 2;   ///< at least; each technique warms up as long as it needs
   /// What the image metrics judge against: 1 = native itself, N > 1 = native
-  /// with N x N supersampling (SupersampledReference), which native is then
+  /// with N x N supersampling (SupersampledNative), which native is then
   /// judged against too.
   int reference = 1;
   bool image_metrics = true;  ///< compare every frame with the reference (PSNR, SSIM, ...)
@@ -148,6 +148,9 @@ struct BenchResult {
   std::array<Vec2d, 2> sample_eye_gaze_px{};  ///< each eye's gaze at the last frame
   /// A result merged from this many shards (merge_shards); 0 for one run.
   int merged_shards = 0;
+  /// What shards of one benchmark share (results.json's "settings", as text;
+  /// set by read_bench_results, empty for a result in memory).
+  std::string settings_key;
 };
 
 /// What a benchmark tells its front end while it runs.

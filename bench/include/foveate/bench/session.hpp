@@ -18,9 +18,9 @@
 #include "foveate/core/stereo.hpp"
 #include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
-#include "foveate/techniques/reference.hpp"
-#include "foveate/techniques/renderer.hpp"
-#include "foveate/techniques/stereo_renderer.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
+#include "foveate/techniques/frame_runner.hpp"
+#include "foveate/techniques/stereo_frame_runner.hpp"
 
 namespace foveate::bench {
 
@@ -48,16 +48,16 @@ struct SessionFrame {
 
 /// Native with N x N supersampling for a session's scene: its own copy of
 /// the scene (so neither reallocates per frame) and the resolve.
-struct ReferenceScene {
+struct SupersampledScene {
   std::unique_ptr<Scene> scene;
-  std::unique_ptr<SupersampledReference> supersampled;
+  std::unique_ptr<SupersampledNative> supersampled;
   /// The reference image of frame `input`.
   Image render(const FrameInput& input);
 };
 
 class Session {
  public:
-  /// Creates the context, loads the scene, the renderer and the gaze tracker.
+  /// Creates the context, loads the scene, the frame runner and the gaze tracker.
   /// Throws an OptionError naming the field of a bad value.
   explicit Session(const SessionOptions& options, SessionCallbacks callbacks = {});
   ~Session();
@@ -68,9 +68,9 @@ class Session {
   [[nodiscard]] const Display& display() const { return display_; }
   [[nodiscard]] const SessionOptions& options() const { return options_; }
   /// The frame runner; in stereo the left eye's (its clock is both eyes').
-  [[nodiscard]] Renderer& renderer() { return stereo_ ? stereo_->eye(Eye::Left) : *renderer_; }
-  /// Stereo sessions: both eyes and the renderer that puts them side by side; null otherwise.
-  [[nodiscard]] StereoRenderer* stereo() { return stereo_.get(); }
+  [[nodiscard]] FrameRunner& frame_runner() { return stereo_ ? stereo_->eye(Eye::Left) : *frame_runner_; }
+  /// Stereo sessions: both eyes and the frame runner that puts them side by side; null otherwise.
+  [[nodiscard]] StereoFrameRunner* stereo() { return stereo_.get(); }
   [[nodiscard]] const StereoDisplay& stereo_display() const { return stereo_display_; }
   /// Each eye's gaze for the tracker's combined gaze (stereo sessions).
   [[nodiscard]] std::array<GazeState, 2> eye_gazes(const GazeState& combined) const;
@@ -104,7 +104,7 @@ class Session {
   void set_overlay(bool on);
 
   /// The supersampled reference (`factor` > 1; refused in stereo).
-  [[nodiscard]] std::unique_ptr<ReferenceScene> make_reference(int factor) const;
+  [[nodiscard]] std::unique_ptr<SupersampledScene> make_reference(int factor) const;
   /// The window, when SessionOptions::window was set.
   [[nodiscard]] gpu::Window* window() const { return window_; }
   /// Copies the output to the window and swaps.
@@ -119,7 +119,7 @@ class Session {
   /// "photometry.KEY" for a bad value.
   void apply_photometry(Display& display) const;
   void make_context();
-  void make_renderers();
+  void make_frame_runners();
   void make_tracker();
   void announce() const;
 
@@ -131,8 +131,8 @@ class Session {
   std::unique_ptr<Scene> right_scene_;  ///< stereo: the right eye's own instance
   Display display_;
   StereoDisplay stereo_display_;
-  std::unique_ptr<Renderer> renderer_;
-  std::unique_ptr<StereoRenderer> stereo_;
+  std::unique_ptr<FrameRunner> frame_runner_;
+  std::unique_ptr<StereoFrameRunner> stereo_;
   std::unique_ptr<gaze::GazeTracker> gaze_;
   std::unique_ptr<FrameWatchdog> watchdog_;
 };

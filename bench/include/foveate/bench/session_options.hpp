@@ -52,9 +52,10 @@ struct SessionOptions {
 /// Throws an OptionError naming the field of the first bad value.
 void validate(const SessionOptions& options);
 
-/// The acuity model of a quality preset ("A", "B") or a slope, at most one
-/// of them given; quality A when neither is.
-AcuityModel acuity_from(const std::string& quality, std::optional<double> slope);
+/// The acuity model of an acuity preset ("A", "B": AcuityModel::preset) or a
+/// slope, at most one of them given (fields "acuity_preset" and "slope");
+/// preset A when neither is.
+AcuityModel acuity_from(const std::string& preset, std::optional<double> slope);
 /// Throws an OptionError of "margin" unless 1 <= margin <= 4.
 void check_margin(double margin);
 

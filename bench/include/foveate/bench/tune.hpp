@@ -37,6 +37,9 @@ struct TuneOptions {
   /// Unset: every registered technique but native that a scene can run.
   std::optional<std::vector<std::string>> techniques;
   double bound_jod = 0.25;  ///< allowed distance below native's JOD
+  /// Evaluate the fixed grid (every margin crossed with one other parameter
+  /// changed at a time) instead of the staged search; shards always do.
+  bool grid = false;
   Shard shard;
 
   static BenchOptions default_bench();

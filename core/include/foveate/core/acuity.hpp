@@ -6,14 +6,15 @@
 
 namespace foveate {
 
-/// MAR slopes from the user study of Guenter et al. (section 5).
-inline constexpr double kSlopeQualityA = 0.0275;  ///< 1.65 arc minutes per degree
-inline constexpr double kSlopeQualityB = 0.0220;  ///< 1.32 arc minutes per degree
+/// MAR slopes of the acuity presets A and B, from the user study of Guenter
+/// et al. (section 5).
+inline constexpr double kSlopePresetA = 0.0275;  ///< 1.65 arc minutes per degree
+inline constexpr double kSlopePresetB = 0.0220;  ///< 1.32 arc minutes per degree
 /// Average foveal acuity of adults: 48 cycles per degree.
 inline constexpr double kFovealMarDeg = 1.0 / 48.0;
 
 struct AcuityModel {
-  double slope = kSlopeQualityA;  ///< m
+  double slope = kSlopePresetA;   ///< m
   double w0_deg = kFovealMarDeg;  ///< w0, MAR at the fovea
 
   /// MAR in degrees per cycle at eccentricity e (degrees).
@@ -21,8 +22,9 @@ struct AcuityModel {
   /// Inverse of mar_deg: the eccentricity at which the MAR reaches w (0 when w <= w0).
   [[nodiscard]] double eccentricity_for_mar(double mar_deg) const;
 
-  /// Quality preset by name: "A" or "B" (case-insensitive). Throws foveate::Error otherwise.
-  static AcuityModel quality(const std::string& name);
+  /// Acuity preset by name: "A" or "B" (case-insensitive), the slopes of
+  /// Guenter et al.'s user study. Throws foveate::Error otherwise.
+  static AcuityModel preset(const std::string& name);
   /// A model with a custom slope; throws foveate::Error unless 0 < m <= 1.
   static AcuityModel with_slope(double m);
   /// The model `margin` times finer (slope and w0 divided by it): what a

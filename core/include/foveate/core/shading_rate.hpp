@@ -15,7 +15,7 @@
 // where w(e) = m e + w0 is the MAR (degrees per cycle) at the eccentricity e
 // of the tile's point nearest the gaze (the smallest angle from the gaze of
 // any point of the tile: on a flat panel the point nearest in pixels, on a
-// wide head-mounted field of view not always), less the latency margin (not below 0),
+// wide head-mounted field of view not always), less the latency travel (not below 0),
 // and alpha_x, alpha_y are the exact angles one pixel step along x and along y
 // subtends at the eye, taken at the tile's point where they are largest. On a
 // flat image plane a pixel subtends less off the display centre, and less
@@ -84,7 +84,7 @@ const std::array<unsigned, 7>& gl_nv_palette();
 
 struct ShadingRateOptions {
   int tile_px = 16;                 ///< 8, 16 or 32
-  double latency_margin_deg = 0.0;  ///< subtracted from every tile's eccentricity
+  double latency_travel_deg = 0.0;  ///< subtracted from every tile's eccentricity
   /// >= 1: every tile's eccentricity is divided by it first (a gaze tracker's
   /// fallback widens every fovea by this factor).
   double fovea_scale = 1.0;
@@ -149,15 +149,15 @@ struct TileBounds {
 /// The same images for one display, acuity and set of options, for a gaze
 /// that moves every frame: what each tile's rate owes to the display alone
 /// (its pixel step angles, the panel through a lens) is worked out once, so
-/// a new gaze costs one eccentricity per tile (about 0.85 ms at 1080p on one
-/// core, against 1.2 for shading_rate_image). The latency margin and fovea
+/// a new gaze costs one eccentricity per tile (far less than
+/// shading_rate_image: docs/performance.md). The latency travel and fovea
 /// scale are the gaze tracker's and are given per image. Throws
 /// foveate::Error for invalid options, display or gaze.
 class ShadingRatePlanner {
  public:
   ShadingRatePlanner(const Display& display, const AcuityModel& acuity,
                      const ShadingRateOptions& options = {});
-  [[nodiscard]] ShadingRateImage image(Vec2d gaze, double latency_margin_deg = 0.0,
+  [[nodiscard]] ShadingRateImage image(Vec2d gaze, double latency_travel_deg = 0.0,
                                        double fovea_scale = 1.0) const;
   [[nodiscard]] const Display& display() const { return display_; }
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "foveate/gaze/gaze.hpp"
-#include "foveate/gaze/synthetic.hpp"
+#include "foveate/gaze/main_sequence.hpp"
 
 namespace foveate::gaze {
 
@@ -21,9 +21,9 @@ struct FilterOptions {
   double fallback_fovea_scale = 2.0;  ///< how much wider the fovea is in fallback
   double deadband_deg = 0.3;          ///< moves smaller than this (outside saccades) are ignored
   double saccade_threshold_deg_per_s = 100.0;  ///< I-VT velocity threshold
-  bool predict_landing = false;  ///< during saccades, report the predicted landing point
-  MainSequence main_sequence;    ///< for the landing prediction
-  double margin = 0.25;          ///< SampleValidator margin
+  bool predict_landing = false;    ///< during saccades, report the predicted landing point
+  MainSequence main_sequence;      ///< for the landing prediction
+  double off_screen_limit = 0.25;  ///< SampleValidator's
 };
 
 struct FilteredGaze {

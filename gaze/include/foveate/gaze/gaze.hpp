@@ -76,10 +76,11 @@ enum class DropReason { kNonFinite, kOutOfRange, kBackwards, kDuplicate };
 const char* to_string(DropReason reason);
 
 struct DropCounts {
-  std::uint64_t non_finite = 0;    ///< NaN or infinite time, position or confidence
-  std::uint64_t out_of_range = 0;  ///< position beyond the margin, confidence outside 0..1
-  std::uint64_t backwards = 0;     ///< timestamp earlier than the previous sample's
-  std::uint64_t duplicate = 0;     ///< timestamp equal to the previous sample's
+  std::uint64_t non_finite = 0;  ///< NaN or infinite time, position or confidence
+  std::uint64_t out_of_range =
+      0;                        ///< position beyond the off-screen limit, confidence outside 0..1
+  std::uint64_t backwards = 0;  ///< timestamp earlier than the previous sample's
+  std::uint64_t duplicate = 0;  ///< timestamp equal to the previous sample's
 
   [[nodiscard]] std::uint64_t total() const {
     return non_finite + out_of_range + backwards + duplicate;
@@ -94,9 +95,10 @@ struct DropCounts {
 /// dropped sample never does.
 class SampleValidator {
  public:
-  /// Positions are allowed `margin` beyond the screen on each side (trackers
-  /// legitimately report gaze slightly off the display).
-  explicit SampleValidator(double margin = 0.25);
+  /// Positions are allowed `off_screen_limit` beyond the screen on each side
+  /// (normalized: 1 = a screen's width or height; trackers legitimately
+  /// report gaze slightly off the display).
+  explicit SampleValidator(double off_screen_limit = 0.25);
   /// The reason the sample must be dropped (and counts it), or nullopt.
   std::optional<DropReason> check(const GazeSample& s);
   bool accept(const GazeSample& s) { return !check(s).has_value(); }
@@ -104,10 +106,10 @@ class SampleValidator {
   void reset_clock() { have_last_ = false; }
   [[nodiscard]] const DropCounts& counts() const { return counts_; }
   [[nodiscard]] std::uint64_t accepted() const { return accepted_; }
-  [[nodiscard]] double margin() const { return margin_; }
+  [[nodiscard]] double off_screen_limit() const { return off_screen_limit_; }
 
  private:
-  double margin_;
+  double off_screen_limit_;
   bool have_last_ = false;
   double last_time_ = 0.0;
   DropCounts counts_;

@@ -31,8 +31,8 @@ struct PupilOptions {
   int receive_timeout_ms = 100;                ///< each SUB recv (the thread's tick)
   double silence_s = 1.0;                      ///< no message this long: ask SUB_PORT again
   std::int64_t max_message_bytes = 64 * 1024;  ///< ZMQ_MAXMSGSIZE (per frame)
-  std::size_t queue_limit = 0;  ///< samples kept for drain() (0: none, sample() only)
-  double margin = 0.25;         ///< SampleValidator margin
+  std::size_t queue_limit = 0;     ///< samples kept for drain() (0: none, sample() only)
+  double off_screen_limit = 0.25;  ///< SampleValidator's
 };
 
 struct PupilCounters {

@@ -1,19 +1,7 @@
 #pragma once
 // A synthetic viewer, seeded and deterministic: fixations with drift and
-// microsaccades, saccades on the main sequence, smooth pursuit of a moving
-// target, and blinks. And a viewer that looks at the nearest scene object.
-//
-// Main sequence (amplitude A in degrees):
-//   duration        D(A) = D0 + k * A            D0 = 21 ms, k = 2.2 ms/deg
-//                   (the linear duration-amplitude law, Carpenter,
-//                   "Movements of the Eyes", 1988)
-//   peak velocity   Vp(A) = Vmax * (1 - exp(-A / C))
-//                   (the exponential saturation form used for the main
-//                   sequence since Baloh et al. 1975; Vmax = 600 deg/s and
-//                   C = 10 deg are typical fitted values, kept as parameters)
-// The velocity profile over the saccade is v(u) ~ u^a (1 - u)^a (u = t / D),
-// with a chosen per saccade so that its peak equals Vp(A) and its integral
-// equals A: both laws hold exactly (a = 2 is the minimum-jerk profile).
+// microsaccades, saccades on the main sequence (main_sequence.hpp), smooth
+// pursuit of a moving target, and blinks.
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -21,30 +9,9 @@
 #include <vector>
 
 #include "foveate/gaze/gaze.hpp"
+#include "foveate/gaze/main_sequence.hpp"
 
 namespace foveate::gaze {
-
-struct MainSequence {
-  double d0_ms = 21.0;
-  double k_ms_per_deg = 2.2;
-  double vmax_deg_per_s = 600.0;
-  double c_deg = 10.0;
-
-  [[nodiscard]] double duration_s(double amplitude_deg) const;
-  [[nodiscard]] double peak_velocity_deg_per_s(double amplitude_deg) const;
-  /// Inverse of peak_velocity: the amplitude whose peak velocity is v (for
-  /// landing-point prediction); saturates just below Vmax.
-  [[nodiscard]] double amplitude_for_peak_deg(double peak_deg_per_s) const;
-};
-
-/// The shape exponent a of v(u) ~ u^a (1-u)^a whose peak/mean ratio is `ratio`
-/// (clamped to the family's range 1 < ratio <= 3).
-double profile_exponent_for_ratio(double ratio);
-/// Fraction of the amplitude covered at u in [0, 1] for exponent a (the
-/// regularized incomplete beta function I_u(a+1, a+1)).
-double profile_position(double u, double a);
-/// Normalized velocity v(u) / (A / D) for exponent a (mean 1 over [0, 1]).
-double profile_velocity(double u, double a);
 
 struct SyntheticOptions {
   std::uint64_t seed = 1;
@@ -64,10 +31,10 @@ struct SyntheticOptions {
   double blink_rate_hz = 0.25;  ///< blinks start inside fixations at this rate
   double blink_min_s = 0.1;
   double blink_max_s = 0.3;
-  double screen_margin = 0.05;  ///< targets stay this far inside the screen
-  double noise_deg = 0.0;       ///< Gaussian tracker noise per sample (0: none)
-  double rate_hz = 0.0;         ///< tracker rate; 0 = continuous (sample at t)
-  double latency_ms = 0.0;      ///< the tracker reports the eye as it was this long ago
+  double edge_inset = 0.05;  ///< targets stay this far inside the screen (normalized)
+  double noise_deg = 0.0;    ///< Gaussian tracker noise per sample (0: none)
+  double rate_hz = 0.0;      ///< tracker rate; 0 = continuous (sample at t)
+  double latency_ms = 0.0;   ///< the tracker reports the eye as it was this long ago
 };
 
 /// One piece of the viewer's behaviour, for tests and `gaze synth`.
@@ -101,28 +68,6 @@ class SyntheticViewer final : public GazeSource {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-};
-
-/// Looks at the nearest scene object (ctx.objects()[0]): a main-sequence
-/// saccade when it changes or escapes by more than `catch_up_deg`, smooth
-/// pursuit otherwise; the screen centre while there is no object.
-class NearestObjectViewer final : public GazeSource {
- public:
-  NearestObjectViewer(const Display& display, std::function<std::vector<Vec2d>(double)> objects,
-                      MainSequence main_sequence = {}, double catch_up_deg = 1.0);
-  GazeSample sample(double t_s) override;
-  [[nodiscard]] std::string describe() const override;
-
- private:
-  Display display_;
-  std::function<std::vector<Vec2d>(double)> objects_;
-  MainSequence ms_;
-  double catch_up_deg_;
-  Vec2d pos_{0.5, 0.5};
-  bool started_ = false;
-  bool in_saccade_ = false;
-  double sac_start_ = 0, sac_dur_ = 0, sac_a_ = 2;
-  Vec2d sac_from_{}, sac_to_{};
 };
 
 }  // namespace foveate::gaze

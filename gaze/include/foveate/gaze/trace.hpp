@@ -30,7 +30,7 @@ struct TraceOptions {
   /// Screen size for pixel units when the file does not give one (# screen_px: WxH).
   int width_px = 1920;
   int height_px = 1080;
-  double margin = 0.25;  ///< SampleValidator margin
+  double off_screen_limit = 0.25;  ///< SampleValidator's
   /// A row that cannot be read (too few fields, not a number, a last line cut
   /// off mid-write) is an error; otherwise it is skipped with a warning.
   bool strict = false;

@@ -65,9 +65,9 @@ class Buffer : public Handle<detail::delete_buffer> {
   static Buffer create_streamed();
   /// Replaces the whole store (glNamedBufferData, GL_STREAM_DRAW): a store
   /// that draws queued earlier may still read is orphaned and they keep it,
-  /// so each draw reads the data given just before it. (Rewriting one store
-  /// in place between draws with no wait in between left NVIDIA's driver 580
-  /// drawing earlier passes from later data.)
+  /// so each draw reads the data given just before it. (A store rewritten in
+  /// place between draws would need a wait: without one NVIDIA's driver draws
+  /// earlier passes from later data.)
   void stream(GLsizeiptr size, const void* data);
   [[nodiscard]] GLsizeiptr size() const { return size_; }
 

@@ -71,6 +71,13 @@ struct PassState {
   /// Only this rectangle is drawn (x, y, width, height; GL pixels, origin
   /// bottom-left); a zero width or height = the whole target.
   std::array<int, 4> scissor{};
+
+  /// A stencil-only pass (colour off): where it draws and the stencil test
+  /// `func` against `ref` passes, `op` is applied to the stencil (GL_REPLACE
+  /// writes `ref`). The default marks every pixel drawn with 1.
+  static PassState stencil_mark(GLint ref = 1, GLenum func = GL_ALWAYS, GLenum op = GL_REPLACE);
+  /// A pass drawn only where the stencil equals `ref`.
+  static PassState stencil_equal(GLint ref = 1);
 };
 
 /// Sets every piece of state PassState names, on or off.

@@ -12,7 +12,7 @@
 namespace foveate {
 
 struct CameraKey {
-  double t = 0.0;
+  double time_s = 0.0;  ///< the path's time of this key ("t" in the JSON)
   glm::dvec3 position{0.0, 0.0, 5.0};
   glm::dvec3 target{0.0, 0.0, 0.0};
   double fov_deg = 50.0;  ///< vertical field of view of the rendered image
@@ -28,13 +28,13 @@ struct CameraPath {
   std::vector<CameraKey> keys;
   bool loop = true;
 
-  [[nodiscard]] CameraPose at(double t) const;
-  [[nodiscard]] double duration() const { return keys.empty() ? 0.0 : keys.back().t; }
+  [[nodiscard]] CameraPose at(double time_s) const;
+  [[nodiscard]] double duration_s() const { return keys.empty() ? 0.0 : keys.back().time_s; }
   /// Throws foveate::Error naming the field (`where`.keyframes[i].t ...).
   static CameraPath from_json(const nlohmann::json& j, const std::string& where);
   static CameraPath load(const std::string& path);
-  /// An orbit around `centre` at `radius`, `height` above it, one turn per `period` s.
-  static CameraPath orbit(glm::dvec3 centre, double radius, double height, double period,
+  /// An orbit around `centre` at `radius`, `height` above it, one turn per `period_s`.
+  static CameraPath orbit(glm::dvec3 centre, double radius, double height, double period_s,
                           double fov_deg = 50.0);
 };
 

@@ -4,7 +4,7 @@
 // and both sides of every branch, on every pixel it runs; drawing a disc's
 // polygon first and the rest of the screen after, with an early depth test,
 // makes each pixel run one region's shader, and whole 4x4 blocks already
-// written are skipped. The programs are built from common/region.vert and a
+// written are skipped. The programs are built from pass_kit/region.vert and a
 // fragment shader that declares layout(early_fragment_tests).
 #include "foveate/core/display.hpp"
 #include "foveate/gpu/gl.hpp"
@@ -24,7 +24,7 @@ class DepthRegions {
   static bool usable(const gpu::RenderTarget& target) { return static_cast<bool>(target.color()); }
   /// The next region: the polygon around the disc (GL pixels), covering all of
   /// it (circumscribed) or only pixels inside it (inscribed).
-  void disc(const gpu::Program& program, Vec2d centre, double radius, bool inscribed);
+  void disc(const gpu::Program& program, Vec2d centre, double radius_px, bool inscribed);
   /// The next region: every pixel not yet drawn.
   void rest(const gpu::Program& program);
 

@@ -45,22 +45,22 @@ class PassKit {
   /// textures `set` asks for.
   void pass(const gpu::Program& program, const gpu::RenderTarget& target,
             const gpu::PassState& state = {}, const SetUniforms& set = {});
-  /// A program of common/rects.vert + `fragment`, cached: passes drawn over
+  /// A program of pass_kit/rects.vert + `fragment`, cached: passes drawn over
   /// rectangles only (rect_pass).
   const gpu::Program& over_rects(const std::string& fragment);
-  /// A program of common/region.vert + `fragment`, cached: one region of a
+  /// A program of pass_kit/region.vert + `fragment`, cached: one region of a
   /// pass split by DepthRegions (the fragment shader declares
   /// layout(early_fragment_tests)).
   const gpu::Program& over_regions(const std::string& fragment);
   /// One full-screen pass split around a disc (GL pixels of `target`), so
   /// that each pixel runs only the shader its region needs: `inside` over
-  /// the pixels within `inner`, `band` over the rest of the disc of `outer`,
+  /// the pixels within `inner_px`, `band` over the rest of the disc of `outer_px`,
   /// `outside` beyond (each an over_regions fragment shader); `set` sets up
   /// each program. Timed as `band`'s pass. Into a target without a colour
   /// texture (a window) one full-screen pass of `band`, which must then
   /// handle every region itself.
-  void pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner, double outer,
-                        const std::string& inside, const std::string& band,
+  void pass_around_disc(const gpu::RenderTarget& target, Vec2d centre, double inner_px,
+                        double outer_px, const std::string& inside, const std::string& band,
                         const std::string& outside, const SetUniforms& set);
   /// A pass of an over_rects program into `target` with `state`, covering
   /// only `rects` (GL pixels of the target).
@@ -116,14 +116,14 @@ class PassKit {
 inline Vec2d to_gl(Vec2d p, int height) { return {p.x, height - p.y}; }
 
 /// The rect mapping file and its uniforms for `view`.
-inline constexpr const char* kMapRect = "common/map_rect.glsl";
+inline constexpr const char* kMapRect = "pass_kit/map_rect.glsl";
 void set_rect_mapping(const gpu::Program& p, const View& view);
 
 /// Stats of a technique whose shading is one pass (`name`: what it shaded).
 FrameStats one_pass_stats(const char* name, double shaded, int width, int height);
 
 /// Extra eccentricity (degrees) that the eye can travel during the gaze latency.
-double latency_margin_deg(const GazeState& gaze);
+double latency_travel_deg(const GazeState& gaze);
 
 /// The gaze marker every overlay ends with.
 OverlayShape gaze_dot(const GazeState& gaze);

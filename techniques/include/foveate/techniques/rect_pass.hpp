@@ -3,7 +3,7 @@
 // llvmpipe a pass costs in proportion to the pixels it covers, so a pass that
 // only some tiles need (a stencil mask, a reconstruction that differs per
 // tile) is drawn over those tiles alone. The programs are built from
-// common/rects.vert and any fragment shader; the rectangles are one instanced
+// pass_kit/rects.vert and any fragment shader; the rectangles are one instanced
 // quad each, read from a storage buffer.
 #include <algorithm>
 #include <array>
@@ -49,21 +49,21 @@ std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const Pix
 /// takes in the one directly above it where their bounding box is no more
 /// than `waste` larger than what they cover, and the box meets no other
 /// rectangle of that band and no other box's columns. Passes drawn once per
-/// rectangle pay a fixed cost per draw (about 0.14 ms on llvmpipe).
+/// rectangle pay a fixed cost per draw (docs/performance.md).
 std::vector<PixelRect> coarsen_runs(const std::vector<PixelRect>& rects, double waste);
 
 /// Rectangles of `band` rows each that together cover every pixel of a
-/// width x height target whose centre lies within `radius` of `centre` (GL
-/// pixels): a disc's area plus a pixel's margin, for masks drawn over a disc.
-std::vector<PixelRect> disc_rects(double cx, double cy, double radius, int width, int height,
+/// width x height target whose centre lies within `radius_px` of (cx, cy) (GL
+/// pixels): a disc's area and one pixel around it, for masks drawn over a disc.
+std::vector<PixelRect> disc_rects(double cx, double cy, double radius_px, int width, int height,
                                   int band = 4);
 
 /// Rectangles of `band` rows each that together cover every pixel of a
-/// width x height target whose centre lies within `outer` of `centre` (GL
-/// pixels; infinite = the whole target) and not within `inner`: an annulus
-/// less only the pixels that lie inside `inner` for every row of their band
-/// (two rectangles per band where the hole cuts it).
-std::vector<PixelRect> annulus_rects(double cx, double cy, double inner, double outer, int width,
-                                     int height, int band = 4);
+/// width x height target whose centre lies within `outer_px` of (cx, cy) (GL
+/// pixels; infinite = the whole target) and not within `inner_px`: an annulus
+/// less only the pixels that lie inside `inner_px` for every row of their
+/// band (two rectangles per band where the hole cuts it).
+std::vector<PixelRect> annulus_rects(double cx, double cy, double inner_px, double outer_px,
+                                     int width, int height, int band = 4);
 
 }  // namespace foveate::tech

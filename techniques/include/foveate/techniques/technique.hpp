@@ -142,7 +142,7 @@ class Technique {
   [[nodiscard]] std::vector<std::pair<std::string, double>> parameters() const;
   /// Renders one frame of `scene` into `target` (display-sized; the
   /// technique binds it and sets its own state for every pass). Call
-  /// scene.update(frame) first (foveate::Renderer does both).
+  /// scene.update(frame) first (foveate::FrameRunner does both).
   virtual FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
                             const gpu::RenderTarget& target) = 0;
   /// Layer or region borders for the overlay at this gaze.
@@ -219,18 +219,5 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
 std::string scene_mismatch(const TechniqueInfo& info, const SceneInfo& scene);
 /// Throws foveate::Error with scene_mismatch's reason.
 void check_scene(const TechniqueInfo& info, const SceneInfo& scene);
-
-/// Draws overlay shapes over a display-sized framebuffer. Owns GL objects:
-/// create and destroy it while the context is current.
-class OverlayRenderer {
- public:
-  OverlayRenderer();
-  ~OverlayRenderer();
-  void draw(const std::vector<OverlayShape>& shapes, const gpu::RenderTarget& target);
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-};
 
 }  // namespace foveate

@@ -1,0 +1,163 @@
+#include "emulated_path.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace foveate::tech::vrs {
+
+namespace {
+
+// The part of a class's view that `texels` (of its grid) span.
+View bounds(const View& full, const std::vector<PixelRect>& texels, ShadingRate r) {
+  PixelRect box{full.target_width, full.target_height, 0, 0};
+  for (const PixelRect& q : texels)
+    box = {std::min(box[0], q[0]), std::min(box[1], q[1]), std::max(box[2], q[2]),
+           std::max(box[3], q[3])};
+  View v = full;
+  v.x0 = double(box[0] * r.width);
+  v.y0 = double(box[1] * r.height);
+  v.x1 = double(box[2] * r.width);
+  v.y1 = double(box[3] * r.height);
+  return v;
+}
+
+// A class's target size in texels for a width x height frame.
+std::array<int, 2> class_size(ShadingRate r, int width, int height) {
+  return {(width + r.width - 1) / r.width, (height + r.height - 1) / r.height};
+}
+
+}  // namespace
+
+FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx,
+                                int gy, const gpu::RenderTarget& target) {
+  const int W = target.width(), H = target.height();
+  std::array<bool, kClasses> present{};
+  for (int k = 0; k < kClasses; ++k) present[size_t(k)] = classes.count[size_t(k)] > 0;
+  // The classes around each tile: its finest neighbour, and which classes
+  // it borders.
+  const Grid grid{classes.of_tile, neighbourhood_classes(classes.of_tile, gx, gy), gx, gy};
+  upload_classes(classes_, grid_, gx, gy, classes.of_tile);
+  FrameStats s;
+  s.native_pixels = double(W) * H;
+  for (int k = 0; k < kClasses; ++k) {
+    if (!present[static_cast<size_t>(k)]) continue;
+    const double n = shade_class(kit, scene, grid, k, W, H);
+    s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), n});
+    s.shaded_pixels += n;
+  }
+  reconstruct(kit, grid, present, target);
+  return s;
+}
+
+double EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int W,
+                                 int H) {
+  const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
+  const auto [tw, th] = class_size(r, W, H);
+  // The texels the reconstruction may read from this class: over its own
+  // tiles and the coarser tiles that border it (they fade into it), each
+  // bilinear read reaching one texel beyond the tile's footprint.
+  std::vector<PixelRect> texels;
+  for (int ty = 0; ty < grid.gy; ++ty) {
+    for (int tx = 0; tx < grid.gx; ++tx) {
+      const int c = grid.at(tx, ty);
+      if (c != k && !(c > k && (grid.near_at(tx, ty) >> k & 1u))) continue;
+      const PixelRect p = tile_pixels(tx, ty, tile_, W, H);
+      texels.push_back({std::max(0, p[0] / r.width - 1), std::max(0, p[1] / r.height - 1),
+                        std::min(tw, (p[2] - 1) / r.width + 2),
+                        std::min(th, (p[3] - 1) / r.height + 2)});
+    }
+  }
+  texels = merge_runs(texels);
+  gpu::RenderTarget& t = targets_[static_cast<size_t>(k)];
+  t.ensure(tw, th, GL_SRGB8_ALPHA8, true);
+  t.color().set_filter(GL_LINEAR, GL_LINEAR);
+  t.color().set_wrap(GL_CLAMP_TO_EDGE);
+  // Only the stencil needs clearing: the reconstruction reads no texel that
+  // this frame's mask leaves unshaded.
+  gpu::open_write_masks();
+  glClearNamedFramebufferfi(t.framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  const gpu::Program& mask_program = kit.over_rects("vrs/mask.frag");
+  const gpu::PassState mark = gpu::PassState::stencil_mark();
+  kit.rect_pass(mask_program, texels, t, mark);
+  // The class's grid: texel i covers screen pixels [i rw, (i + 1) rw).
+  const View view{0,  0,  double(tw * r.width), double(th * r.height), tw,
+                  th, 1.0};  // native's geometric LOD, as hardware VRS keeps
+  const View box = bounds(view, texels, r);
+  gpu::PassState draw = gpu::PassState::stencil_equal();
+  draw.scissor = {int(box.x0) / r.width, int(box.y0) / r.height, int(box.x1 - box.x0) / r.width,
+                  int(box.y1 - box.y0) / r.height};
+  if (scene.info().has_meshes) {
+    // The G-buffer is filled only where this class shades: the same texels,
+    // marked in the G-buffer's stencil before the geometry, and the geometry
+    // is culled and scissored to their bounding box. (The box is not the
+    // view itself: a sub-frustum's projection rounds differently, and the
+    // 1x1 class must rasterise exactly as native.)
+    scene.prepass_begin(view);
+    kit.rect_pass_in_bound(mask_program, texels, tw, th, mark);
+    gpu::apply(draw);
+    scene.prepass_draw(box, -1);
+    gpu::apply({});
+    scene.prepass_end();
+  } else {
+    scene.prepass(view);
+  }
+  return kit.shade(
+      scene, view, kMapRect, t,
+      [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, draw, true);
+}
+
+void EmulatedPath::reconstruct(PassKit& kit, const Grid& grid,
+                               const std::array<bool, kClasses>& present,
+                               const gpu::RenderTarget& target) {
+  const int W = target.width(), H = target.height();
+  // A tile with no finer neighbour is one bilinear read of its class; a tile
+  // next to a finer class fades into it.
+  std::array<std::vector<PixelRect>, kClasses> plain;
+  std::vector<PixelRect> fading;
+  for (int ty = 0; ty < grid.gy; ++ty) {
+    for (int tx = 0; tx < grid.gx; ++tx) {
+      const int c = grid.at(tx, ty);
+      const PixelRect p = tile_pixels(tx, ty, tile_, W, H);
+      if (finest_of(grid.near_at(tx, ty)) < c)
+        fading.push_back(p);
+      else
+        plain[static_cast<size_t>(c)].push_back(p);
+    }
+  }
+  // A class target's size in screen pixels (its texels times its rate).
+  const auto set_extent = [&](const gpu::Program& p, const char* name, ShadingRate r) {
+    const auto [tw, th] = class_size(r, W, H);
+    p.set(name, float(tw * r.width), float(th * r.height));
+  };
+  const gpu::Program& copy = kit.over_rects("vrs/reconstruct_copy.frag");
+  for (int k = 0; k < kClasses; ++k) {
+    const size_t i = static_cast<size_t>(k);
+    if (plain[i].empty()) continue;
+    if (k == 0) {
+      copy_native_tiles(kit, merge_runs(plain[i]), targets_[i], target);
+      continue;
+    }
+    kit.rect_pass(copy, merge_runs(plain[i]), target, {},
+                  [&](const gpu::Program& p, gpu::Samplers& smp) {
+                    smp.bind(p, "u_src", targets_[i].color());
+                    set_extent(p, "u_extent", kShadingRates[i]);
+                  });
+  }
+  const size_t first =
+      static_cast<size_t>(std::find(present.begin(), present.end(), true) - present.begin());
+  kit.rect_pass(kit.over_rects("vrs/reconstruct.frag"), merge_runs(fading), target, {},
+                [&](const gpu::Program& p, gpu::Samplers& smp) {
+                  smp.bind(p, "u_classes", classes_);
+                  for (int k = 0; k < kClasses; ++k) {
+                    const size_t i = static_cast<size_t>(k);
+                    const gpu::RenderTarget& t = targets_[present[i] ? i : first];
+                    const std::string name = "u_class" + std::to_string(k);
+                    smp.bind(p, name.c_str(), t.color());
+                    const std::string e = "u_extent[" + std::to_string(k) + "]";
+                    set_extent(p, e.c_str(), kShadingRates[i]);
+                  }
+                  p.set("u_tile", tile_);
+                });
+}
+
+}  // namespace foveate::tech::vrs

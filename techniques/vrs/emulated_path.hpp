@@ -1,0 +1,52 @@
+#pragma once
+// vrs's emulation, for drivers without variable-rate shading (llvmpipe):
+// every rate class present is shaded into a target of its own reduced
+// resolution (W / rw x H / rh), limited by a stencil mask to its tiles and the
+// coarser tiles next to them, and on mesh scenes its G-buffer is filled only
+// there too. The masks are drawn over those tiles alone (RectPass), and
+// llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
+// nothing. Then the frame is put together in linear light: each pixel reads
+// its class bilinearly, and a tile next to a finer one fades into it over one
+// tile, so the 1x1 fovea is native and no tile edge shows. Every pass is
+// drawn over the tiles that need it, so each output pixel runs one shader
+// once.
+#include <array>
+
+#include "rate_classes.hpp"
+
+namespace foveate::tech::vrs {
+
+class EmulatedPath {
+ public:
+  explicit EmulatedPath(int tile) : tile_(tile) {}
+  /// Renders with `classes` (merged: merge_small_classes) of a gx x gy grid.
+  FrameStats render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx, int gy,
+                    const gpu::RenderTarget& target);
+
+ private:
+  /// The tiles' classes and what each frame's passes read of them.
+  struct Grid {
+    const std::vector<std::uint8_t>& classes;
+    std::vector<std::uint8_t> near;  ///< neighbourhood_classes
+    int gx, gy;
+    [[nodiscard]] int at(int tx, int ty) const {
+      return classes[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)];
+    }
+    [[nodiscard]] unsigned near_at(int tx, int ty) const {
+      return near[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)];
+    }
+  };
+  /// Shades class `k` into its own target over the texels the
+  /// reconstruction reads of it; returns the fragments shaded.
+  double shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int width, int height);
+  /// Puts the frame together from the class targets into `target`.
+  void reconstruct(PassKit& kit, const Grid& grid, const std::array<bool, kClasses>& present,
+                   const gpu::RenderTarget& target);
+
+  int tile_;
+  gpu::Texture classes_;
+  std::array<int, 2> grid_{};
+  std::array<gpu::RenderTarget, kClasses> targets_;
+};
+
+}  // namespace foveate::tech::vrs

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# `foveate tune`, `bench --shard`, `merge` and `--params-file` as a user runs
+# them: the files written, the parameters a later run takes, shards joined,
+# and clear errors with a non-zero exit on bad input.
+set -u
+fail=0
+check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+F="$FOVEATE"
+small=(--size 96x54 --frames 2 --warmup 1 --reference ssaa:2)
+
+"$F" tune --scenes cheap --techniques layered,inset --bound 0.5 "${small[@]}" --out "$tmp/t" --quiet > "$tmp/t.md"
+check "tune writes tune.json, tune.md, params.json and report.html" '[[ -s "$tmp/t/tune.json" && -s "$tmp/t/tune.md" && -s "$tmp/t/params.json" && -s "$tmp/t/report.html" ]]'
+check "tune prints each technique's choice" 'grep -q "^| layered |" "$tmp/t.md" && grep -q "^| inset |" "$tmp/t.md"'
+check "tune.json: points with speedup and JOD, native's JOD, a choice per technique" 'python3 -c "
+import json,sys; j=json.load(open(sys.argv[1]))
+assert j[\"schema\"] == \"foveate-tune/1\" and \"cheap\" in j[\"native_jod\"]
+assert len(j[\"points\"]) >= 12 and all(\"jod\" in p and \"speedup\" in p for p in j[\"points\"])
+assert set(j[\"chosen\"]) == {\"layered\", \"inset\"}
+" "$tmp/t/tune.json"'
+"$F" bench --scene cheap --size 64x36 --frames 1 --techniques native,layered --params-file "$tmp/t/params.json" --out "$tmp/b" --quiet > /dev/null
+check "bench takes the chosen parameters (--params-file)" 'python3 -c "
+import json,sys; t=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2]))
+chosen=t[\"chosen\"][\"layered\"]; got=[r for r in b[\"results\"] if r[\"technique\"]==\"layered\"][0][\"parameters\"]
+assert all(abs(got[k]-v) < 1e-9 for k,v in chosen.items()), (chosen, got)
+" "$tmp/t/tune.json" "$tmp/b/results.json"'
+"$F" bench --scene cheap --size 64x36 --frames 1 --techniques native,layered --params-file "$tmp/t/params.json" --param layered.margin=3 --out "$tmp/b2" --quiet > /dev/null
+check "--param overrides --params-file" 'python3 -c "
+import json,sys; b=json.load(open(sys.argv[1]))
+assert [r for r in b[\"results\"] if r[\"technique\"]==\"layered\"][0][\"parameters\"][\"margin\"] == 3
+" "$tmp/b2/results.json"'
+
+# Shards of a benchmark, merged: the runs of one run, native's JOD and each run's.
+"$F" bench --scene cheap "${small[@]}" --techniques native,layered,inset,checkerboard --out "$tmp/whole" --quiet > /dev/null
+for k in 1 2; do
+  "$F" bench --scene cheap "${small[@]}" --techniques native,layered,inset,checkerboard --shard $k/2 --out "$tmp/s$k" --quiet > /dev/null
+done
+"$F" merge "$tmp/s2" "$tmp/s1/results.json" --out "$tmp/m" --quiet > "$tmp/m.md"
+check "merge writes one result and report" '[[ -s "$tmp/m/results.json" && -s "$tmp/m/report.html" ]] && grep -q "^| checkerboard |" "$tmp/m.md"'
+check "merged shards: the same runs, pixels and JOD as one run" 'python3 -c "
+import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2]))
+assert b[\"shard\"] == {\"merged\": 2}
+ra=[(r[\"technique\"], r[\"shaded_pixels\"], r[\"quality\"][\"jod\"]) for r in a[\"results\"]]
+rb=[(r[\"technique\"], r[\"shaded_pixels\"], r[\"quality\"][\"jod\"]) for r in b[\"results\"]]
+assert ra == rb, (ra, rb)
+" "$tmp/whole/results.json" "$tmp/m/results.json"'
+err=$("$F" merge "$tmp/s1" --out "$tmp/m2" 2>&1); rc=$?
+check "merge of one shard of two: exit 1, says a shard is missing" '[[ $rc -eq 1 && "$err" == *"missing"* ]]'
+err=$("$F" merge "$tmp/s1" "$tmp/whole" --out "$tmp/m3" 2>&1); rc=$?
+check "merge of a shard and a whole run: exit 1, names the file" '[[ $rc -eq 1 && "$err" == *"whole"* ]]'
+err=$("$F" merge "$tmp/s1" "$tmp/t" --out "$tmp/m4" 2>&1); rc=$?
+check "merge of a bench and a tune result: exit 1" '[[ $rc -eq 1 && "$err" == *"tune"* ]]'
+
+for args in "--shard 3/2" "--shard 0/2" "--shard x" ; do
+  err=$("$F" bench --scene cheap --size 64x36 --frames 1 $args --out "$tmp/x" 2>&1); rc=$?
+  check "bench $args: exit 1, names --shard" '[[ $rc -eq 1 && "$err" == *"--shard"* ]]'
+done
+echo '{"schema": "foveate-params/1", "techniques": {"layered": {"margin": 9}}}' > "$tmp/bad.json"
+err=$("$F" bench --scene cheap --size 64x36 --frames 1 --params-file "$tmp/bad.json" --out "$tmp/x" 2>&1); rc=$?
+check "a parameter out of range in --params-file: exit 1, names the file and entry" '[[ $rc -eq 1 && "$err" == *"--params-file"*"bad.json"*"layered.margin"* ]]'
+err=$("$F" tune --scenes cheap --bound 0 --out "$tmp/x" 2>&1); rc=$?
+check "tune --bound 0: exit 1, names --bound" '[[ $rc -eq 1 && "$err" == *"--bound"* ]]'
+err=$("$F" tune --scenes cheap --techniques native --out "$tmp/x" 2>&1); rc=$?
+check "tune native: exit 1" '[[ $rc -eq 1 && "$err" == *"native"* ]]'
+"$F" tune --help | grep -q -- --bound && "$F" merge --help | grep -q -- --out
+check "help lists the options" '[[ $? -eq 0 ]]'
+exit $fail

@@ -1,0 +1,154 @@
+// vrs with a GL context (the fixture fails a test on any GL debug error).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "foveate/core/shading_rate.hpp"
+#include "foveate/gpu/frame.hpp"
+#include "foveate/techniques/pass_kit.hpp"
+#include "gl_fixture.hpp"
+
+namespace foveate::tech {
+namespace {
+
+class Vrs : public test::GlTest {};
+
+// vrs's hardware path (GL_NV_shading_rate_image) put together by
+// vrs/hardware_reconstruct.frag from a frame made here by hand as the driver
+// shades it (no VRS on llvmpipe): each rw x rh fragment one colour, that of
+// its centre. Tiles of 16 px, 6 x 3: column 0 is 1x1, the rest 4x4 by the
+// model; column 1 borders the 1x1 tiles, so it is shaded 1x1 and fades.
+struct HardwareVrsFrame {
+  static constexpr int kTile = 16, kGx = 6, kGy = 3, W = kGx * kTile, H = kGy * kTile;
+  std::vector<std::uint8_t> own, shade;
+  std::vector<float> rgba = std::vector<float>(size_t(W * H * 4), 1.0f);
+  HardwareVrsFrame() {
+    for (int ty = 0; ty < kGy; ++ty) {
+      for (int tx = 0; tx < kGx; ++tx) {
+        own.push_back(tx == 0 ? 0 : 6);    // kShadingRates: 1x1 ... 4x4
+        shade.push_back(tx <= 1 ? 0 : 6);  // the finest rate around each tile
+      }
+    }
+  }
+  [[nodiscard]] ShadingRate shaded_at(int x, int y) const {
+    return kShadingRates[shade[size_t((y / kTile) * kGx + x / kTile)]];
+  }
+  // Past the centre along each axis a fragment spans: 0.5 as a deferred
+  // scene shades (the G-buffer pixel at the centre), 0 as a procedural one.
+  float sample_offset = 0.0f;
+  // Every pixel the value of `f` where its fragment was shaded.
+  template <typename F>
+  void shade_with(F f) {
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x < W; ++x) {
+        const ShadingRate r = shaded_at(x, y);
+        const double ox = r.width > 1 ? sample_offset : 0.0,
+                     oy = r.height > 1 ? sample_offset : 0.0;
+        const float v =
+            float(f((x / r.width + 0.5) * r.width + ox, (y / r.height + 0.5) * r.height + oy));
+        for (int c = 0; c < 3; ++c) rgba[size_t((y * W + x) * 4 + c)] = v;
+      }
+    }
+  }
+  // The frame put together, read back (rows from the top).
+  Image reconstruct() const {
+    gpu::Texture src = gpu::Texture::create_2d(GL_RGBA32F, W, H);
+    src.set_filter(GL_LINEAR, GL_LINEAR);  // as vrs.cpp sets its frame
+    src.upload(W, H, GL_RGBA, GL_FLOAT, rgba.data());
+    const auto classes = [](const std::vector<std::uint8_t>& c) {
+      gpu::Texture t = gpu::Texture::create_2d(GL_R8UI, kGx, kGy);
+      t.set_filter(GL_NEAREST, GL_NEAREST);
+      t.upload(kGx, kGy, GL_RED_INTEGER, GL_UNSIGNED_BYTE, c.data());
+      return t;
+    };
+    const gpu::Texture shade_t = classes(shade), own_t = classes(own);
+    gpu::RenderTarget t;
+    t.ensure(W, H, GL_RGBA8);
+    t.clear(0, 0, 0, 1);
+    PassKit kit;
+    kit.rect_pass(kit.over_rects("vrs/hardware_reconstruct.frag"), {{kTile, 0, W, H}}, t, {},
+                  [&](const gpu::Program& p, gpu::Samplers& smp) {
+                    smp.bind(p, "u_frame", src);
+                    smp.bind(p, "u_shade", shade_t);
+                    smp.bind(p, "u_own", own_t);
+                    for (int k = 0; k < 7; ++k) {
+                      const std::string e = "u_rates[" + std::to_string(k) + "]";
+                      p.set(e.c_str(), float(kShadingRates[size_t(k)].width),
+                            float(kShadingRates[size_t(k)].height));
+                    }
+                    p.set("u_tile", kTile);
+                    p.set("u_sample_offset", sample_offset);
+                  });
+    return gpu::read_framebuffer(t.framebuffer(), W, H);
+  }
+};
+
+TEST_F(Vrs, HardwareReconstructionInterpolatesFragmentCentres) {
+  // On a linear ramp, interpolating between the points where fragments were
+  // shaded (and, in the fading column, between the means of 4x4 blocks)
+  // gives the ramp back within a code away from the screen's edge, where the
+  // driver's blocks are off by up to 5 codes; the 1x1 tiles are not drawn.
+  // Both for a procedural scene (shaded at the centre) and a deferred one.
+  for (const float offset : {0.0f, 0.5f}) {
+    SCOPED_TRACE(offset);
+    HardwareVrsFrame f;
+    using F = HardwareVrsFrame;
+    f.sample_offset = offset;
+    const auto ramp = [](double x, double y) { return 0.05 + 0.0075 * x + 0.003 * y; };
+    f.shade_with(ramp);
+    const Image img = f.reconstruct();
+    int checked = 0;
+    double worst_block = 0;
+    for (int y = 0; y < F::H; ++y) {
+      for (int x = 0; x < F::W; ++x) {
+        const int got = img.at(x, F::H - 1 - y)[0];
+        if (x < F::kTile) {
+          EXPECT_EQ(got, 0) << x << "," << y;  // not drawn
+          continue;
+        }
+        if (y < 2 || y >= F::H - 2 || x >= F::W - 2) continue;  // centres clamped at the edge
+        ++checked;
+        const double want = 255.0 * ramp(x + 0.5, y + 0.5);
+        EXPECT_NEAR(got, want, 1.0) << x << "," << y;
+        worst_block =
+            std::max(worst_block, std::abs(255.0 * f.rgba[size_t((y * F::W + x) * 4)] - want));
+      }
+    }
+    EXPECT_GT(checked, 3000);
+    EXPECT_GT(worst_block, 4.0);  // the blocks alone would fail
+  }
+}
+
+TEST_F(Vrs, HardwareReconstructionFadesIntoTheFinerTile) {
+  // A one-pixel checkerboard shaded 1x1 next to the 1x1 tiles, and flat
+  // beyond (4x4 fragments of it, prefiltered): across the fading column the
+  // contrast falls from the checkerboard's at the 1x1 border to nothing one
+  // tile away, where the flat 4x4 tiles begin, and the mean stays.
+  HardwareVrsFrame f;
+  using F = HardwareVrsFrame;
+  f.shade_with([](double x, double y) {
+    return x >= 2 * F::kTile ? 0.5 : (int(x) + int(y)) % 2 ? 0.8 : 0.2;
+  });
+  const Image img = f.reconstruct();
+  const auto contrast =
+      [&](int x) {  // mean |step| to the right neighbour over the middle row of tiles
+        double c = 0;
+        for (int y = F::kTile; y < 2 * F::kTile; ++y)
+          c += std::abs(int(img.at(x + 1, y)[0]) - int(img.at(x, y)[0])) / 255.0;
+        return c / F::kTile;
+      };
+  EXPECT_GT(contrast(F::kTile), 0.5);           // 0.6 for the checkerboard itself
+  EXPECT_LT(contrast(2 * F::kTile - 3), 0.08);  // nearly flat by the far side
+  EXPECT_GT(contrast(F::kTile), contrast(F::kTile + 6));
+  EXPECT_GT(contrast(F::kTile + 6), contrast(F::kTile + 11));
+  double mean = 0;
+  for (int y = F::kTile; y < 2 * F::kTile; ++y)
+    for (int x = F::kTile; x < 2 * F::kTile; ++x) mean += img.at(x, y)[0];
+  EXPECT_NEAR(mean / (F::kTile * F::kTile), 127.5, 3.0);
+}
+
+}  // namespace
+}  // namespace foveate::tech
