@@ -3,6 +3,7 @@
 // ring where the disc, its blend band and the G-buffer levels meet.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -87,7 +88,9 @@ TEST_F(Marwarp, FoveaIsNativeAndThePeripheryKeepsItsLuminance) {
       EXPECT_EQ(c.max_error, 0) << name;  // native's pixels exactly
       const double periphery = test::mean_linear_luminance(ref, gaze, fovea);
       EXPECT_NEAR(test::mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
-      EXPECT_LT(s.shaded_pixels, 0.25 * W * H) << name;
+      // (detail, the stress case, has edges everywhere: most of its texels
+      // are reshaded with four samples.)
+      EXPECT_LT(s.shaded_pixels, (name == std::string("detail") ? 0.6 : 0.25) * W * H) << name;
       ASSERT_EQ(s.parts.size(), 3u);
       EXPECT_GT(s.parts[0].pixels, 0.0);  // the buffer
       EXPECT_GT(s.parts[1].pixels, 0.0);  // the native disc
@@ -121,11 +124,11 @@ TEST_F(Marwarp, NoSeamWhereTheAngleWraps) {
 }
 
 TEST_F(Marwarp, NoRingInTheResolve) {
-  // Going out from the gaze, the error against native grows smoothly: no
-  // ring of 3 pixels is more than 1.5 times as far from native as the rings
-  // either side of it (4 pixels away), across the native disc's edge, its
-  // blend band, and the borders between G-buffer levels (guenter) where the
-  // buffer is shaded from coarser geometry.
+  // Going out from the gaze, the error against native grows without a
+  // ring: no ring of 3 pixels is more than 1.3 times as far from native as
+  // the farther of the rings either side of it (4 pixels away), across the
+  // native disc's edge, its blend band, and the borders between G-buffer
+  // levels (guenter) where the buffer is shaded from coarser geometry.
   const int W = 960, H = 540;
   for (const char* name : {"cheap", "guenter"}) {
     auto scene = load_scene(name);
@@ -137,12 +140,12 @@ TEST_F(Marwarp, NoRingInTheResolve) {
     double worst = 0, at = 0;
     for (double r = fovea + 4.0; r < 260.0; r += 1.0) {
       const double here = ring_error(img, ref, g, r, r + 3.0);
-      const double beside = 0.5 * (ring_error(img, ref, g, r - 7.0, r - 4.0) +
-                                   ring_error(img, ref, g, r + 4.0, r + 7.0));
+      const double beside = std::max(ring_error(img, ref, g, r - 7.0, r - 4.0),
+                                     ring_error(img, ref, g, r + 4.0, r + 7.0));
       const double ratio = (here + 0.25) / (beside + 0.25);
       if (ratio > worst) worst = ratio, at = r;
     }
-    EXPECT_LT(worst, 1.5) << name << ": at " << at << " px (disc " << fovea << " px)";
+    EXPECT_LT(worst, 1.3) << name << ": at " << at << " px (disc " << fovea << " px)";
   }
 }
 
