@@ -7,9 +7,11 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foveate/core/acuity_warp.hpp"
+#include "foveate/techniques/reference.hpp"
 #include "foveate/techniques/renderer.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
@@ -160,4 +162,48 @@ TEST_F(Marwarp, ShadesTheMappingsTexelsOnly) {
   run(*t, *scene, {960, 540}, &s);
   EXPECT_LT(s.shaded_pixels, W * H / 20.0);
   EXPECT_GT(s.shaded_pixels, W * H / 30.0);
+}
+
+TEST_F(Marwarp, ReshadedEdgesComeCloserToTheSupersampledScene) {
+  // One sample per texel aliases silhouettes and small objects; the texels
+  // that differ from a neighbour, reshaded with four samples, bring the
+  // periphery's edges (where the supersampled frame changes by more than 24
+  // codes to a neighbouring pixel) closer to a 4x4 supersampled frame
+  // (11.8 codes against 13.2 when this was written).
+  const int W = 640, H = 360;
+  auto scene = load_scene("guenter"), reference_scene = load_scene("guenter");
+  RendererOptions o;
+  o.width = W;
+  o.height = H;
+  o.start_time_s = 1.0;
+  SupersampledReference reference(config(W, H).display, 4);
+  reference.render(*reference_scene, Renderer(*scene, o).frame_input(0));
+  const Image truth = reference.read();
+  auto with = make_technique("marwarp", config(W, H));
+  auto without = make_technique("marwarp", config(W, H, {{"edge_contrast", 0.0}}));
+  const Vec2d g{320, 180};
+  const double disc = fovea_px(*with, g);
+  const auto edge_error = [&](const Image& img) {
+    double sum = 0;
+    int n = 0;
+    for (int y = 1; y + 1 < H; ++y) {
+      for (int x = 1; x + 1 < W; ++x) {
+        if (std::hypot(x + 0.5 - g.x, y + 0.5 - g.y) < disc) continue;
+        int step = 0;
+        for (const auto& [dx, dy] :
+             {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+          for (int c = 0; c < 3; ++c)
+            step =
+                std::max(step, std::abs(int(truth.at(x, y)[c]) - int(truth.at(x + dx, y + dy)[c])));
+        }
+        if (step <= 24) continue;
+        for (int c = 0; c < 3; ++c) sum += std::abs(int(img.at(x, y)[c]) - int(truth.at(x, y)[c]));
+        n += 3;
+      }
+    }
+    return sum / n;
+  };
+  const double e_with = edge_error(run(*with, *scene, g));
+  const double e_without = edge_error(run(*without, *scene, g));
+  EXPECT_LT(e_with, 0.93 * e_without) << e_with << " against " << e_without;
 }
