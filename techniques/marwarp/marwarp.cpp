@@ -147,8 +147,12 @@ class MarWarp final : public Technique {
               fh = std::max(1, static_cast<int>(y1 - y0));
     fovea_.ensure(fw, fh);
 
-    if (has_buffer && edge_ > 0.0) {
+    if (has_buffer) {
+      // Texels left unshaded this frame read as alpha 0 (the prefilter and
+      // the edge marks leave them out), never as an earlier frame's.
       gpu::open_write_masks();
+      const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      glClearNamedFramebufferfv(buffer_.framebuffer(), GL_COLOR, 0, clear);
       glClearNamedFramebufferfi(buffer_.framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     }
     double edges = 0.0;
@@ -271,6 +275,12 @@ class MarWarp final : public Technique {
   // returns how many were reshaded.
   double supersample_edges(Scene& scene, const View& view, const std::vector<PixelRect>& cover,
                            int first, int last, const SetUniforms& set_shade) {
+    // The marks go into the buffer's own stencil, so the pass renders into
+    // its framebuffer: it reads a copy of the colour (sampling a texture
+    // attached to the framebuffer drawn into is a feedback loop, which
+    // llvmpipe's threads resolve differently from run to run).
+    glCopyImageSubData(buffer_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, sharpened_.color().id(),
+                       GL_TEXTURE_2D, 0, 0, 0, 0, buffer_.width(), buffer_.height(), 1);
     gpu::PassState mark;
     mark.stencil_func = GL_ALWAYS;
     mark.stencil_ref = 1;
@@ -279,7 +289,7 @@ class MarWarp final : public Technique {
     mark.color_off = true;
     kit_.rect_pass(kit_.over_rects("marwarp/edges.frag"), cover, buffer_, mark,
                    [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                     samplers.bind(p, "u_buffer", buffer_.color());
+                     samplers.bind(p, "u_buffer", sharpened_.color());
                      p.set("u_edge", float(edge_));
                      p.set("u_columns", float(first), float(std::min(last, buffer_.width())));
                    });
@@ -361,7 +371,7 @@ TechniqueInfo marwarp_info() {
       "prefilter in the buffer and one bilinear read per pixel.";
   t.source = "the acuity model of Guenter et al. 2012, sampled continuously (issue 30)";
   t.params = {
-      plan_margin_param(1.05),
+      plan_margin_param(2.0),
       param("fovea_deg",
             "smallest radius of the native disc at the gaze; it always reaches out to where "
             "the buffer's spacing is a pixel",
