@@ -9,12 +9,15 @@
 //
 //  * Shading: the scene at each texel's screen position (clamped to the
 //    screen), over the texels that land on the screen (acuity_warp_cover).
-//    Mesh scenes are shaded deferred from G-buffers at 1, 1/2, 1/4 ...
-//    resolution (`gbuffer_levels`), each filled only over the box that its
-//    texels reach and read by the texels whose spacing is at least
-//    `gbuffer_ratio` of its pixel: the geometry is never sampled coarser
-//    than the buffer. The finest level has native's projection, so the
-//    native disc is native's pixels exactly.
+//    Mesh scenes are shaded deferred from native's G-buffer, or from
+//    G-buffers at 1, 1/2, 1/4 ... resolution (`gbuffer_levels`), each
+//    filled only over the box that its texels reach and read by the texels
+//    whose spacing is at least `gbuffer_ratio` of its pixel. The finest
+//    level has native's projection, so the native disc is native's pixels
+//    exactly.
+//  * Antialiasing in the buffer: texels that differ from a neighbour by
+//    more than `edge_contrast` are reshaded with four samples (edges.frag
+//    marks them in the stencil, shade_edges.frag reshades them).
 //  * Resolve, in linear light: a sharpening prefilter in the buffer
 //    (sharpen.frag) that undoes what the bilinear read of the inverse
 //    mapping attenuates below the cutoff, then one bilinear read per screen
@@ -393,8 +396,9 @@ TechniqueInfo marwarp_info() {
       param("gbuffer_levels",
             "mesh scenes: G-buffers at 1, 1/2, 1/4 ... of native resolution from which the "
             "buffer is shaded, each over the texels that sample at least gbuffer_ratio of its "
-            "pixel",
-            "", ParamType::Integer, 1.0, 5.0, 3.0),
+            "pixel; default 1 (native's): on llvmpipe each level redraws the geometry, which "
+            "costs more than the fill it saves (docs/continuous.md)",
+            "", ParamType::Integer, 1.0, 5.0, 1.0),
       param("gbuffer_ratio",
             "mesh scenes: the least ratio of the buffer's sample spacing to the pixel of the "
             "G-buffer it is shaded from",
