@@ -11,7 +11,8 @@
   X(checkerboard)                     \
   X(lodmask)                          \
   X(inset)                            \
-  X(vrs)
+  X(vrs)                              \
+  X(marwarp)
 
 namespace foveate::tech {
 

@@ -159,7 +159,8 @@ def test_silvera_checkerboard(fv):
 
 def test_techniques_and_their_derived_defaults(fv):
     ts = {t["name"]: t for t in fv.techniques()}
-    assert ["native", "layered", "logpolar", "checkerboard", "lodmask", "inset", "vrs"] == list(ts)
+    builtin = ["native", "layered", "logpolar", "checkerboard", "lodmask", "inset", "vrs"]
+    assert builtin + ["marwarp"] == list(ts)
     layers = next(p for p in ts["layered"]["params"] if p["key"] == "layers")
     assert (layers["min"], layers["max"], layers["default"], layers["type"]) == (1, 6, 3, "integer")
     assert ts["lodmask"]["needs_meshes"]

@@ -83,9 +83,9 @@ TEST(Parameters, ParametersResolveFromTheirDeclarations) {
 TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   // Declared first by every built-in technique but native, with the least
   // margin at which the technique meets the fidelity target (docs/fidelity.md).
-  const std::map<std::string, double> own = {{"layered", 2.0},      {"logpolar", 1.75},
-                                             {"checkerboard", 1.5}, {"vrs", 1.5},
-                                             {"inset", 1.0},        {"lodmask", 1.0}};
+  const std::map<std::string, double> own = {
+      {"layered", 2.0}, {"logpolar", 1.75}, {"checkerboard", 1.5}, {"vrs", 1.5},
+      {"inset", 1.0},   {"lodmask", 1.0},   {"marwarp", 2.0}};
   for (const auto& [name, margin] : own) {
     const TechniqueInfo& t = technique_info(name);
     ASSERT_FALSE(t.params.empty()) << name;

@@ -1,0 +1,26 @@
+// Marks for supersampling (stencil 1; everything else is discarded) the
+// texels whose linear luminance differs from their four neighbours' by more
+// than u_edge of the brighter (a silhouette, a small object, a sharp
+// highlight: where one sample per texel aliases). Neighbours are taken
+// within the columns this pass covers (u_columns); one not shaded this
+// frame (alpha 0: the buffer is cleared) counts as the texel itself.
+uniform sampler2D u_buffer;
+uniform float u_edge;
+uniform vec2 u_columns;  // the first column and one past the last
+const vec3 kLuma = vec3(0.2126, 0.7152, 0.0722);
+float luma(ivec2 p, float own) {
+  vec4 v = texelFetch(u_buffer, p, 0);
+  return v.a > 0.5 ? dot(v.rgb, kLuma) : own;
+}
+void main() {
+  ivec2 size = textureSize(u_buffer, 0);
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  float c = dot(texelFetch(u_buffer, p, 0).rgb, kLuma);
+  float l = luma(ivec2(max(p.x - 1, int(u_columns.x)), p.y), c);
+  float r = luma(ivec2(min(p.x + 1, int(u_columns.y) - 1), p.y), c);
+  float u = luma(ivec2(p.x, (p.y + 1) % size.y), c);
+  float d = luma(ivec2(p.x, (p.y + size.y - 1) % size.y), c);
+  float lo = min(c, min(min(l, r), min(u, d)));
+  float hi = max(c, max(max(l, r), max(u, d)));
+  if (hi - lo <= u_edge * (hi + 0.02)) discard;
+}
