@@ -29,6 +29,10 @@ void BenchRun::measure(int k) {
   const int frame = out_.warmup + k;
   const bool last = k + 1 == options_.frames;
   const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(frame).time_s);
+  // A gaze off the image or in the filter's fallback makes every technique
+  // run its fallback: the frame is reported, not silently averaged in.
+  if (session_.gaze().last().fallback || session_.gaze().last_off_image())
+    out_.fallback_frames.push_back(k);
   // The image every run is judged against: native, or the supersampled
   // reference (untimed, rendered from a scene of its own).
   Reference reference;
