@@ -147,6 +147,8 @@ class RenderRun {
     if (video && native_.view) {
       bench::mark_gaze(native_image, gaze.gaze_px);
       bench::mark_gaze(image, gaze.gaze_px);
+      bench::label_tile(native_image, "native");
+      bench::label_tile(image, a_.technique);
       video->write(bench::tile({&native_image, &image}));
     } else if (video) {
       video->write(image);

@@ -6,6 +6,7 @@
 
 #include "bench_run.hpp"
 #include "foveate/core/parse.hpp"
+#include "report_common.hpp"
 
 namespace foveate::bench {
 
@@ -93,6 +94,7 @@ void BenchRun::write_video_frame(const std::vector<std::pair<size_t, Images>>& i
     } else if (options_.side_by_side) {
       mark_gaze(tiles[s], g.gaze_px);
     }
+    label_tile(tiles[s], label(out_, runs_[shown_[s]].result));
     ptrs.push_back(&tiles[s]);
   }
   video_->write(tile(ptrs));
