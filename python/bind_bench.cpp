@@ -8,6 +8,7 @@
 
 #include "convert.hpp"
 #include "foveate/bench/report.hpp"
+#include "foveate/bench/session.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
@@ -62,6 +63,60 @@ bench::ParamOverrides params_from(const py::dict& params) {
   return out;
 }
 
+// The notes and warnings of a run (the savings note among them), kept to be
+// given to Python once the run is over and the GIL is held again: as
+// warnings.warn (UserWarning) and in the result's "notes".
+struct Notices {
+  std::vector<std::string> texts;
+  bench::NoticeFn collect() {
+    return [this](const bench::Notice& n) {
+      if (n.kind != bench::NoticeKind::Detail) texts.push_back(n.text.render(keyword_for));
+    };
+  }
+  py::list emit() const {
+    py::list out;
+    const py::object warn = py::module_::import("warnings").attr("warn");
+    for (const std::string& t : texts) {
+      warn(t, py::module_::import("builtins").attr("UserWarning"), 2);
+      out.append(t);
+    }
+    return out;
+  }
+};
+
+// The session's keyword arguments, shared by bench() and render(), as
+// SessionOptions (an OptionError names the field).
+bench::SessionOptions session_from(const std::string& scene, py::handle size,
+                                   const std::string& display, const std::string& acuity_preset,
+                                   const std::string& quality, std::optional<double> slope,
+                                   std::optional<double> margin, const std::string& gaze,
+                                   double fps, bool stereo, py::handle vergence,
+                                   double frame_timeout_s) {
+  bench::SessionOptions o;
+  o.scene = scene;
+  o.size = size_from(size);
+  o.display = display;
+  if (!acuity_preset.empty() && !quality.empty()) {
+    throw bench::OptionError("quality", bench::FieldText{"{acuity_preset} and {quality} are one "
+                                                         "option (quality its former name): give "
+                                                         "one",
+                                                         {"acuity_preset", "quality"}});
+  }
+  o.acuity = bench::acuity_from(acuity_preset.empty() ? quality : acuity_preset, slope);
+  o.margin = margin;
+  o.gaze = gaze;
+  o.fps = fps;
+  o.stereo = stereo;
+  o.vergence_m = vergence_from(vergence);
+  o.frame_timeout_s = frame_timeout_s;
+  return o;
+}
+
+// "WxH" of a size, as the command writes its default.
+std::string size_text(PixelSize s) {
+  return std::to_string(s.width) + "x" + std::to_string(s.height);
+}
+
 bench::Sweep sweep_from(py::handle sweep) {
   if (sweep.is_none()) return {};
   const auto t = sweep.cast<py::tuple>();
@@ -98,24 +153,12 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
              bool images, bool stereo, py::handle vergence, double frame_timeout_s) {
   bench::BenchOptions o;
   keywords([&] {
-    o.session.scene = scene;
-    o.session.size = size_from(size);
-    o.session.display = display;
-    if (!acuity_preset.empty() && !quality.empty()) {
-      throw bench::OptionError("quality",
-                               bench::FieldText{"{acuity_preset} and {quality} are one option "
-                                                "(quality its former name): give one",
-                                                {"acuity_preset", "quality"}});
-    }
-    o.session.acuity = bench::acuity_from(acuity_preset.empty() ? quality : acuity_preset, slope);
-    o.session.margin = margin;
-    o.session.gaze = gaze;
-    o.session.fps = fps;
-    o.session.stereo = stereo;
-    o.session.vergence_m = vergence_from(vergence);
-    o.session.frame_timeout_s = frame_timeout_s;
+    o.session = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps,
+                             stereo, vergence, frame_timeout_s);
     o.techniques = std::move(techniques);
     o.params = params_from(params);
+    // A value for a technique not run would be silently ignored.
+    o.params.validate(o.techniques.value_or(technique_names()));
     o.frames = frames;
     o.warmup = warmup;
     o.image_metrics = metrics;
@@ -127,14 +170,73 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
     bench::validate(o);
   });
   bench::BenchResult r;
+  Notices notices;
   {
     py::gil_scoped_release unlocked;
+    bench::BenchCallbacks callbacks;
+    callbacks.session.notice = notices.collect();
     keywords([&] {
-      r = bench::run_bench(o);
+      r = bench::run_bench(o, callbacks);
       if (!out.empty()) bench::write_bench_report(r, out);
     });
   }
-  return result_dict(r, images);
+  py::dict d = result_dict(r, images);
+  d["notes"] = notices.emit();
+  return d;
+}
+
+// Frames of one technique, as `foveate render` renders them, read back.
+py::dict render(const std::string& scene, const std::string& technique, py::handle size, int frames,
+                const std::string& display, const std::string& acuity_preset,
+                const std::string& quality, std::optional<double> slope,
+                std::optional<double> margin, const py::dict& params, const std::string& gaze,
+                double fps, bool overlay, bool stereo, py::handle vergence,
+                double frame_timeout_s) {
+  bench::SessionOptions o;
+  bench::ParamOverrides overrides;
+  keywords([&] {
+    o = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps, stereo,
+                     vergence, frame_timeout_s);
+    bench::validate(o);
+    (void)bench::for_field("technique", [&] { return technique_info(technique).name; });
+    overrides = params_from(params);
+    overrides.validate({technique});
+    if (!(frames >= 1 && frames <= 100000))
+      throw bench::OptionError("frames", "expected 1..100000, got " + std::to_string(frames));
+  });
+  std::vector<Image> images;
+  std::vector<double> shaded, native;
+  std::string report;
+  Notices notices;
+  {
+    py::gil_scoped_release unlocked;
+    keywords([&] {
+      bench::SessionCallbacks callbacks;
+      callbacks.notice = notices.collect();
+      bench::Session session(o, callbacks);
+      session.set_overlay(overlay);
+      bench::SessionTechnique t = session.make(technique, overrides);
+      for (int k = 0; k < frames; ++k) {
+        const GazeState g = session.gaze().at(session.frame_runner().frame_input(k).time_s);
+        const bench::SessionFrame st =
+            session.watchdog().run("frame " + std::to_string(k) + " (" + technique + ")",
+                                   [&] { return session.render(t, k, g); });
+        shaded.push_back(st.total.shaded_pixels);
+        native.push_back(st.total.native_pixels);
+        images.push_back(session.read_output());
+      }
+      report = session.gaze().report();
+    });
+  }
+  py::list arrays;
+  for (const Image& im : images) arrays.append(image_to_array(im));
+  py::dict d;
+  d["frames"] = arrays;
+  d["shaded_pixels"] = shaded;
+  d["native_pixels"] = native;
+  d["gaze_report"] = report;
+  d["notes"] = notices.emit();
+  return d;
 }
 
 py::list technique_list(py::handle display, py::handle size, const AcuityModel& acuity) {
@@ -187,9 +289,10 @@ py::object read_results(const std::string& path) {
 }  // namespace
 
 void bind_bench(py::module_& m) {
+  // The defaults are the library's, as `foveate bench` and `foveate render` take them.
   const bench::BenchOptions defaults;
-  m.def("bench", &run, py::kw_only(), py::arg("scene") = "cheap",
-        py::arg("techniques") = py::none(), py::arg("size") = "960x540",
+  m.def("bench", &run, py::kw_only(), py::arg("scene") = defaults.session.scene,
+        py::arg("techniques") = py::none(), py::arg("size") = size_text(defaults.session.size),
         py::arg("frames") = defaults.frames, py::arg("warmup") = defaults.warmup,
         py::arg("display") = defaults.session.display, py::arg("acuity_preset") = "",
         py::arg("quality") = "", py::arg("slope") = py::none(), py::arg("margin") = py::none(),
@@ -219,6 +322,20 @@ images=True adds each technique's last frame ("image", HxWx3 uint8) and
 "stereo" and each result's "eyes" hold the per-eye figures. frame_timeout_s:
 a frame whose GPU work runs longer raises foveate.Error once it has finished
 (a GL draw cannot be interrupted); 0 = no limit.)");
+  m.def("render", &render, py::kw_only(), py::arg("scene") = defaults.session.scene,
+        py::arg("technique") = "native", py::arg("size") = size_text(defaults.session.size),
+        py::arg("frames") = 1, py::arg("display") = defaults.session.display,
+        py::arg("acuity_preset") = "", py::arg("quality") = "", py::arg("slope") = py::none(),
+        py::arg("margin") = py::none(), py::arg("params") = py::dict(), py::arg("gaze") = "",
+        py::arg("fps") = defaults.session.fps, py::arg("overlay") = false,
+        py::arg("stereo") = false, py::arg("vergence") = py::none(),
+        py::arg("frame_timeout_s") = defaults.session.frame_timeout_s,
+        R"(Renders frames of a scene with one technique, as `foveate render` does, and
+returns a dict: "frames", a list of HxWx3 uint8 numpy arrays (stereo: both eyes
+side by side); "shaded_pixels" and "native_pixels" per frame; "gaze_report";
+"notes" (also given as warnings, e.g. that the size leaves foveation little
+to save). Keywords as in bench(); technique one name; overlay=True draws the
+technique's layers or regions and the gaze.)");
   m.def("read_results", &read_results, py::arg("path"),
         "results.json of a bench run (the file or its folder) as a dict");
   m.def("techniques", &technique_list, py::arg("display") = "desktop-1080p",
