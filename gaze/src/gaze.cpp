@@ -146,7 +146,7 @@ class MouseSource final : public GazeSource {
 
 Vec2d parse_fixed(const std::string& text, int width, int height) {
   // A fixed gaze off the image would measure a technique's fallback, not foveation.
-  const Vec2d px = parse_point_on_image(text, width, height, "fixed point");
+  const Vec2d px = parse_point_on_image(text, width, height, "fixed gaze point");
   return {px.x / width, px.y / height};
 }
 
