@@ -117,6 +117,28 @@ std::string size_text(PixelSize s) {
   return std::to_string(s.width) + "x" + std::to_string(s.height);
 }
 
+// As the command's --out: a folder holding an earlier run's output is
+// refused unless `overwrite`, which removes those files first, so that no
+// folder mixes two runs' files.
+void prepare_out(const std::string& out, bool overwrite) {
+  if (out.empty()) return;
+  const std::vector<std::string> earlier = run_outputs_in(out);
+  if (earlier.empty()) return;
+  const std::string which =
+      std::filesystem::path(earlier.front()).filename().string() +
+      (earlier.size() > 1 ? " and " + std::to_string(earlier.size() - 1) + " more" : "");
+  if (!overwrite) {
+    throw Error("out " + out + ": holds the output of an earlier run (" + which +
+                "); pass overwrite=True to replace it (its files are removed first) or choose "
+                "another folder");
+  }
+  for (const std::string& f : earlier) {
+    std::error_code ec;
+    std::filesystem::remove(f, ec);
+    if (ec) throw Error(f + ": cannot remove the earlier run's file (overwrite): " + ec.message());
+  }
+}
+
 bench::Sweep sweep_from(py::handle sweep) {
   if (sweep.is_none()) return {};
   const auto t = sweep.cast<py::tuple>();
@@ -149,16 +171,15 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
              const std::string& acuity_preset, const std::string& quality,
              std::optional<double> slope, std::optional<double> margin, const py::dict& params,
              const std::string& gaze, const std::string& reference, bool metrics, py::handle sweep,
-             double fps, const std::string& out, const std::string& video, bool side_by_side,
-             bool images, bool stereo, py::handle vergence, double frame_timeout_s) {
+             double fps, const std::string& out, bool overwrite, const std::string& video,
+             bool side_by_side, bool images, bool stereo, py::handle vergence,
+             double frame_timeout_s) {
   bench::BenchOptions o;
   keywords([&] {
     o.session = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps,
                              stereo, vergence, frame_timeout_s);
     o.techniques = std::move(techniques);
     o.params = params_from(params);
-    // A value for a technique not run would be silently ignored.
-    o.params.validate(o.techniques.value_or(technique_names()));
     o.frames = frames;
     o.warmup = warmup;
     o.image_metrics = metrics;
@@ -169,6 +190,7 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
     o.sweep = sweep_from(sweep);
     bench::validate(o);
   });
+  prepare_out(out, overwrite);
   bench::BenchResult r;
   Notices notices;
   {
@@ -298,9 +320,9 @@ void bind_bench(py::module_& m) {
         py::arg("quality") = "", py::arg("slope") = py::none(), py::arg("margin") = py::none(),
         py::arg("params") = py::dict(), py::arg("gaze") = "", py::arg("reference") = "native",
         py::arg("metrics") = defaults.image_metrics, py::arg("sweep") = py::none(),
-        py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("video") = "",
-        py::arg("side_by_side") = false, py::arg("images") = false, py::arg("stereo") = false,
-        py::arg("vergence") = py::none(),
+        py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("overwrite") = false,
+        py::arg("video") = "", py::arg("side_by_side") = false, py::arg("images") = false,
+        py::arg("stereo") = false, py::arg("vergence") = py::none(),
         py::arg("frame_timeout_s") = defaults.session.frame_timeout_s,
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
@@ -315,7 +337,9 @@ technique's own planning margin); acuity_preset "A" or "B" (Guenter et al.'s
 presets; quality= is the same, its former name) or slope a MAR slope; sweep
 (key, from, to, step), e.g. ("slope", 0.02, 0.03, 0.005) or
 ("margin", 1, 2, 0.5); out a folder for
-results.json, .csv, .md, report.html; video a file (.mp4) of the frames.
+results.json, .csv, .md, report.html (one holding an earlier run's output is
+refused unless overwrite=True, which removes those files first); video a
+file (.mp4) of the frames.
 images=True adds each technique's last frame ("image", HxWx3 uint8) and
 "native_image". stereo=True renders both eyes of a stereo display
 (display="hmd-quest2"; size is one eye's; vergence in metres, 2 or "inf"):

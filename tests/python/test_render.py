@@ -81,3 +81,17 @@ def test_another_interpreter_is_told_which_one_the_module_needs():
     assert "ImportError" in r.stderr
     assert "this module was built for" in r.stderr and "with numpy" in r.stderr, r.stderr
     assert "numpy cannot be imported in " + sys.executable in r.stderr, r.stderr
+
+
+def test_bench_refuses_an_out_folder_holding_another_run(fv, tmp_path):
+    args = dict(scene="cheap", techniques=["layered"], size=(32, 18), frames=1, warmup=0,
+                metrics=False, out=str(tmp_path))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fv.bench(**args)
+        with pytest.raises(fv.Error, match="holds the output of an earlier run.*overwrite=True"):
+            fv.bench(**args)
+        (tmp_path / "results.md").unlink()
+        (tmp_path / "stale-notes.txt").write_text("mine")
+        fv.bench(**args, overwrite=True)
+    assert (tmp_path / "results.md").exists() and (tmp_path / "stale-notes.txt").exists()
