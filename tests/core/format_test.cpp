@@ -115,7 +115,7 @@ TEST(ParsePoint, DecimalPointMeansNormalizedAndOnlyInZeroToOne) {
   const Vec2d p = parse_point("1,1", 1280, 720, "--gaze");
   EXPECT_DOUBLE_EQ(p.x, 1.0);
   EXPECT_DOUBLE_EQ(p.y, 1.0);
-  // 1.5 used to be taken as the pixel (1.5, 0.5): now a normalized value out of range.
+  // 1.5 has a decimal point: a normalized value, and out of range (not the pixel 1.5).
   const std::string e = point_error("1.5,0.5");
   EXPECT_NE(e.find("--gaze: '1.5,0.5': 1.5 is outside 0.0..1.0"), std::string::npos) << e;
   EXPECT_NE(e.find("whole numbers"), std::string::npos) << e;
