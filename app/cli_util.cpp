@@ -54,10 +54,11 @@ Verbosity& verbosity() {
   return v;
 }
 
-void note_savings(const Display& display, const AcuityModel& acuity) {
+void note_savings(const Display& display, const AcuityModel& acuity, std::optional<double> margin) {
   static bool said = false;
   if (said || quiet()) return;
-  const bench::SavingsCheck c = bench::check_savings(display, acuity);
+  const bench::SavingsCheck c =
+      bench::check_savings(display, acuity, bench::strictest_plan_margin(margin));
   if (!c.nothing_to_save) return;
   said = true;
   print_notice({bench::NoticeKind::Note, c.note});

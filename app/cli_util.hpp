@@ -3,6 +3,7 @@
 // note when a display leaves nothing to save, and parsing helpers whose
 // errors name the option.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,11 @@ Verbosity& verbosity();
 [[nodiscard]] inline bool quiet() { return verbosity() == Verbosity::Quiet; }
 [[nodiscard]] inline bool verbose() { return verbosity() == Verbosity::Verbose; }
 
-/// Prints bench::check_savings' note on stderr, once per process, unless --quiet.
-void note_savings(const Display& display, const AcuityModel& acuity);
+/// Prints bench::check_savings' note on stderr, once per process, unless
+/// --quiet: for the plan at `margin`, else at the finest planning margin the
+/// techniques use by default (bench::strictest_plan_margin).
+void note_savings(const Display& display, const AcuityModel& acuity,
+                  std::optional<double> margin = std::nullopt);
 /// A duration for people: "4 s", "2 min 05 s".
 std::string format_duration(double seconds);
 /// The items joined with `separator` between them.

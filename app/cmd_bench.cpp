@@ -30,6 +30,7 @@ struct BenchArgs {
   int warmup = bench::BenchOptions{}.warmup;
   std::string sweep;
   std::string out = "bench-out";
+  bool overwrite = false;
   std::string reference = "native";
   bool no_metrics = false;
   bool no_diagnostics = false;
@@ -76,7 +77,7 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   bench::BenchOptions o;
   o.session = to_session_options(a.session);
   if (a.techniques_given) o.techniques = split(a.techniques, ',');
-  o.params = session_params(a.session);
+  o.params = session_params(a.session, o.techniques.value_or(technique_names()));
   o.frames = a.frames;
   o.warmup = a.warmup;
   o.image_metrics = !a.no_metrics;
@@ -106,6 +107,7 @@ void add_common(CLI::App* sub, BenchArgs& a) {
   sub->add_option("--out", a.out,
                   "Output directory: results.json, results.csv, results.md, report.html")
       ->capture_default_str();
+  add_overwrite_flag(sub, a.overwrite);
   sub->add_option("--reference", a.reference,
                   "What the image metrics judge against: native, or ssaa[:N] = native with NxN "
                   "supersampling (default N = 4), against which native is judged too")
@@ -139,7 +141,7 @@ void add_common(CLI::App* sub, BenchArgs& a) {
 // writes the report into --out.
 bench::BenchResult run_and_write(const BenchArgs& a, const bench::BenchOptions& o,
                                  const char* what) {
-  const OutputDirLock out_lock(a.out, "--out");
+  const OutputDirLock out_lock(a.out, "--out", a.overwrite);
   std::optional<Progress> progress;
   bench::BenchCallbacks callbacks;
   callbacks.session = session_callbacks();

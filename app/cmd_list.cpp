@@ -116,8 +116,8 @@ void register_techniques(CLI::App& app) {
                   return Display::load(a->display);
                 }).resized(size.width, size.height);
     c.acuity = bench::acuity_from(a->acuity_preset, a->slope);
-    note_savings(c.display, c.acuity);
     if (a->margin) bench::check_margin(*a->margin);
+    note_savings(c.display, c.acuity, a->margin);
     c.margin = a->margin;
     if (a->json) {
       print_techniques_json(c, size);

@@ -23,6 +23,7 @@ namespace {
 struct MergeArgs {
   std::vector<std::string> shards;
   std::string out;
+  bool overwrite = false;
 };
 
 // A shard given as its --out folder or its results.json.
@@ -54,7 +55,7 @@ void run_merge(const MergeArgs& a) {
                   names[0] + " is a " + (tune ? "tune run" : "benchmark") + "'s");
     }
   }
-  const OutputDirLock out_lock(a.out, "--out");
+  const OutputDirLock out_lock(a.out, "--out", a.overwrite);
   if (tune) {
     std::vector<bench::TuneResult> shards;
     for (size_t i = 0; i < files.size(); ++i)
@@ -90,6 +91,7 @@ void register_merge(CLI::App& app) {
   sub->add_option("shards", a->shards, "Each shard's --out folder (or its results.json)")
       ->required();
   sub->add_option("--out", a->out, "Output folder of the merged results and report")->required();
+  add_overwrite_flag(sub, a->overwrite);
   sub->callback([a] { run_merge(*a); });
 }
 

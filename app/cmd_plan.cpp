@@ -11,6 +11,7 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "foveate/bench/savings.hpp"
 #include "foveate/bench/svg_plot.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
@@ -31,6 +32,7 @@ struct PlanArgs {
   std::string display = "desktop-1080p";
   std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
+  std::optional<double> margin;  ///< unset: layered's own planning margin
   int layers = 3;
   std::string gaze;
   std::string size = kDefaultSize;
@@ -153,7 +155,8 @@ void run_sweep(const PlanArgs& a) {
 // lens (where it has one).
 struct GazePlan {
   Display display;
-  AcuityModel acuity;
+  AcuityModel acuity;  ///< what the plan is judged by
+  double margin = 1;   ///< the plan is made for `acuity` this many times finer
   Vec2d gaze;
   LayerPlan plan;
   std::optional<LayerPlan> without_lens;
@@ -176,7 +179,12 @@ GazePlan make_gaze_plan(const PlanArgs& a) {
     display = display.resized(sz.width, sz.height);
   }
   const AcuityModel acuity = bench::acuity_from(a.acuity_preset, a.slope);
-  note_savings(display, acuity);
+  // The layers the layered technique renders: planned at its own margin
+  // unless --margin says otherwise (1 = the paper's plan).
+  if (a.margin) bench::check_margin(*a.margin);
+  const double margin = a.margin.value_or(bench::own_plan_margin("layered"));
+  const AcuityModel planned = acuity.finer(margin);
+  note_savings(display, acuity, margin);
   PlannerOptions opt;
   opt.layers = a.layers;
   opt.grid_step_deg = a.step;
@@ -186,16 +194,16 @@ GazePlan make_gaze_plan(const PlanArgs& a) {
     opt.weights.assign(a.layers, 0.5);
     opt.weights[0] = 1.0;
   }
-  const Vec2d gaze = a.gaze.empty()
-                         ? display.principal_point()
-                         : parse_point(a.gaze, display.width_px, display.height_px, "--gaze");
+  const Vec2d gaze =
+      a.gaze.empty() ? display.principal_point()
+                     : parse_point_on_image(a.gaze, display.width_px, display.height_px, "--gaze");
   // Through a lens the plan depends on the gaze (without --gaze: any gaze).
   if (!a.gaze.empty()) opt.gaze = gaze;
-  GazePlan g{display, acuity, gaze, plan_layers(display, acuity, opt), std::nullopt};
+  GazePlan g{display, acuity, margin, gaze, plan_layers(display, planned, opt), std::nullopt};
   if (display.lens) {
     Display bare = display;
     bare.lens.reset();
-    g.without_lens = plan_layers(bare, acuity, opt);
+    g.without_lens = plan_layers(bare, planned, opt);
   }
   return g;
 }
@@ -203,6 +211,7 @@ GazePlan make_gaze_plan(const PlanArgs& a) {
 void print_plan_json(const PlanArgs& a, const GazePlan& g) {
   nlohmann::json j = g.plan;
   j["gaze_px"] = {g.gaze.x, g.gaze.y};
+  j["margin"] = g.margin;
   if (g.without_lens) {
     const Oversampling o = g.display.lens_oversampling(g.gaze);
     nlohmann::json s = nlohmann::json::array();
@@ -241,6 +250,9 @@ void print_plan(const PlanArgs& a, const GazePlan& g) {
             << format_fixed(acuity.w0_deg, 4) << " deg";
   if (acuity.slope == kSlopePresetA) std::cout << " (acuity preset A)";
   if (acuity.slope == kSlopePresetB) std::cout << " (acuity preset B)";
+  std::cout << "\nplanned at margin " << format_number(g.margin, 3)
+            << (g.margin == 1.0 ? " (the paper's plan" : " (an acuity that many times finer")
+            << (a.margin ? "; --margin)" : "; layered's own, --margin 1 gives the paper's plan)");
   std::cout << "\ngaze at (" << format_fixed(g.gaze.x, 1) << ", " << format_fixed(g.gaze.y, 1)
             << ") px\n\n";
   std::printf("%-6s %11s %11s %9s %13s %11s  %s\n", "layer", "radius deg", "radius px", "s_i",
@@ -303,6 +315,12 @@ void register_plan(CLI::App& app) {
                       "samples finer than the panel shows")
       ->capture_default_str();
   add_acuity_options(sub, a->acuity_preset, a->slope);
+  sub->add_option("--margin", a->margin,
+                  "Plan for an acuity this many times finer (slope and foveal MAR divided by it, "
+                  "1 to 4) than the one the plan is judged by: 1 = the paper's plan; default: "
+                  "the layered technique's own planning margin (see 'foveate techniques'), so "
+                  "that the plan is the one 'render --technique layered' renders (not used by "
+                  "--sweep, which reproduces the paper's figures)");
   sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre (with a "

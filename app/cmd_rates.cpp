@@ -15,6 +15,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/image.hpp"
+#include "foveate/core/image_text.hpp"
 #include "foveate/core/shading_rate.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "session_args.hpp"
@@ -66,7 +67,8 @@ void put(Image& img, int x, int y, const std::uint8_t* c, double a) {
 // A plain grey frame, each tile tinted with its rate's colour and outlined, a
 // black-and-white gaze marker, and a legend in the bottom-left corner: one
 // swatch per rate, finest first, each holding a white box as wide and high as
-// the rate's fragment (4 screen pixels per pixel of the fragment).
+// the rate's fragment (4 screen pixels per pixel of the fragment) and named
+// above it ("2x4"), so that the picture reads without its colour table.
 Image preview(const ShadingRateImage& m, Vec2d gaze) {
   Image img(m.width_px, m.height_px);
   const std::uint8_t grey[3] = {128, 128, 128}, dark[3] = {40, 40, 40}, white[3] = {255, 255, 255};
@@ -101,6 +103,7 @@ Image preview(const ShadingRateImage& m, Vec2d gaze) {
         put(img, x, y, edge ? dark : kRateColours[i], 1.0);
       }
     }
+    draw_label(img, x0 - 1, y0 - 2 - label_height(1), kShadingRates[i].name(), 1);
     const int bw = 4 * kShadingRates[i].width, bh = 4 * kShadingRates[i].height;
     for (int y = 0; y < bh; ++y) {
       for (int x = 0; x < bw; ++x)

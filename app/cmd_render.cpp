@@ -30,6 +30,7 @@ struct RenderArgs {
   SessionArgs session;
   int frames = 1;
   std::string out;
+  bool overwrite = false;
   std::string technique = "native";
   std::string mouse;
   std::string reference = "native";
@@ -70,8 +71,10 @@ RenderSetup check(const RenderArgs& a) {
   }
   with_flag("--technique", [&] { return technique_info(a.technique); });
   s.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
-  s.params = session_params(a.session);
-  s.params.validate({a.technique});
+  // With --side-by-side native runs too (its parameters count).
+  std::vector<std::string> run = {a.technique};
+  if (a.side_by_side && a.technique != "native") run.push_back("native");
+  s.params = session_params(a.session, run);
   if (a.out.empty() && a.video.empty() && !a.no_write)
     throw CLI::RequiredError("--out, --video or --no-write");
   if (s.reference > 1 && a.out.empty())
@@ -144,6 +147,8 @@ class RenderRun {
     if (video && native_.view) {
       bench::mark_gaze(native_image, gaze.gaze_px);
       bench::mark_gaze(image, gaze.gaze_px);
+      bench::label_tile(native_image, "native");
+      bench::label_tile(image, a_.technique);
       video->write(bench::tile({&native_image, &image}));
     } else if (video) {
       video->write(image);
@@ -240,7 +245,7 @@ void print_text(const RenderArgs& a, const RenderSetup& s, RenderRun& run) {
 void run_render(const RenderArgs& a) {
   const RenderSetup s = check(a);
   std::optional<OutputDirLock> out_lock;
-  if (!a.out.empty() && !a.no_write) out_lock.emplace(a.out, "--out");
+  if (!a.out.empty() && !a.no_write) out_lock.emplace(a.out, "--out", a.overwrite);
   // Opened before rendering, so that a bad path fails at once.
   std::unique_ptr<bench::VideoWriter> video;
   if (!a.video.empty()) {
@@ -275,6 +280,7 @@ void register_render(CLI::App& app) {
   sub->add_option("--out", a->out,
                   "Output directory (frame-0000.png, ...); required unless --video or --no-write "
                   "is given");
+  add_overwrite_flag(sub, a->overwrite);
   sub->add_flag("--no-write", a->no_write,
                 "Render (and read back) without writing PNG files: soak and leak tests");
   sub->add_option("--stats", a->stats_every,

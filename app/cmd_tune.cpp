@@ -41,6 +41,7 @@ struct TuneArgs {
   bool grid = false;
   std::string shard;
   std::string out = "tune-out";
+  bool overwrite = false;
   bool json = false;
 };
 
@@ -77,7 +78,7 @@ bench::TuneOptions to_options(const TuneArgs& a) {
 
 void run(const TuneArgs& a) {
   const bench::TuneOptions o = to_options(a);
-  const OutputDirLock out_lock(a.out, "--out");
+  const OutputDirLock out_lock(a.out, "--out", a.overwrite);
   std::optional<Progress> progress;
   bench::TuneCallbacks c;
   c.bench.session = session_callbacks();
@@ -151,6 +152,7 @@ void register_tune(CLI::App& app) {
                   "jobs' --out folders");
   sub->add_option("--out", a->out, "Output folder: tune.json, tune.md, params.json, report.html")
       ->capture_default_str();
+  add_overwrite_flag(sub, a->overwrite);
   sub->add_flag("--json", a->json, "Print tune.json instead of the tables");
   sub->callback([a] { run(*a); });
 }

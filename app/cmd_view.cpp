@@ -60,9 +60,8 @@ void run_view(const ViewArgs& a) {
   o.window = true;
   o.window_size = {o.size.width * (o.stereo ? 2 : 1) + kPanelWidth, std::max(o.size.height, 560)};
   with_flag("--technique", [&] { return technique_info(a.technique); });
-  const bench::ParamOverrides params = session_params(a.session);
-  // Any technique can be switched to: a KEY=VALUE must belong to one of them.
-  params.validate(technique_names());
+  // Any technique can be switched to: a value must belong to one of them.
+  const bench::ParamOverrides params = session_params(a.session, technique_names());
   // The mouse is the gaze unless --gaze says otherwise (normalized, top-left),
   // while it is over the image and not over the panel or the divider.
   std::optional<Vec2d> mouse;

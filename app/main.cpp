@@ -3,16 +3,44 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "foveate/bench/field_text.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 #include "invocation.hpp"
 #include "messages.hpp"
 
 #ifndef FOVEATE_VERSION
 #define FOVEATE_VERSION "unknown"
 #endif
+
+namespace {
+
+// "did you mean" for a misspelled option or command: the arguments left over
+// against the options (or the commands) of the deepest command parsed.
+void suggest(const CLI::App& app) {
+  const CLI::App* at = &app;
+  while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
+  std::vector<std::string> names;
+  for (const CLI::Option* o : at->get_options()) {
+    for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+  }
+  for (const CLI::App* sub : at->get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
+  for (std::string arg : app.remaining(true)) {
+    arg = arg.substr(0, arg.find('='));
+    const std::string best = foveate::closest_name(arg, names);
+    if (best.empty()) continue;
+    std::fprintf(stderr, "foveate: '%s': did you mean '%s'? (foveate%s%s --help lists them)\n",
+                 arg.c_str(), best.c_str(), at == &app ? "" : " ", at->get_name().c_str());
+    return;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -26,7 +54,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // CLI11 prints the message; --help and --version exit 0, every usage
     // error (unknown option, missing value, a value of the wrong type) 2.
-    return app.exit(e) == 0 ? 0 : 2;
+    const int rc = app.exit(e);
+    if (rc != 0) suggest(app);
+    return rc == 0 ? 0 : 2;
   } catch (const foveate::bench::OptionError& e) {
     // The library names the field; the command line says the flag.
     std::fprintf(stderr, "foveate: error: %s\n", e.message(foveate::app::flag_for).c_str());

@@ -2,40 +2,98 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
+#include "cli_util.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 
 namespace foveate::app {
 
-OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag) {
+namespace {
+
+// The pid written into a lock file by the run holding it (empty if none).
+std::string holder_of(int fd) {
+  std::string holder;
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  if (n > 0) holder = std::string(buf, static_cast<size_t>(n));
+  while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
+  return holder;
+}
+
+}  // namespace
+
+void add_overwrite_flag(CLI::App* sub, bool& overwrite) {
+  sub->add_flag("--overwrite", overwrite,
+                "Replace the output of an earlier run in --out (its frames and reports are "
+                "removed first); without it such a folder is refused, so that no folder holds "
+                "a mix of two runs' files");
+}
+
+OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag, bool overwrite,
+                             const std::string& overwrite_flag) {
   make_output_dir(dir, flag);
   const std::string name = flag + " " + dir;
-  const std::string path = (std::filesystem::path(dir) / ".foveate.lock").string();
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (fd_ < 0) throw Error(name + ": cannot write into the folder: " + std::strerror(errno));
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int err = errno;
-    std::string holder;
-    char buf[32] = {};
-    const ssize_t n = ::pread(fd_, buf, sizeof buf - 1, 0);
-    if (n > 0) holder = std::string(buf, static_cast<size_t>(n));
-    while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
-    ::close(fd_);
-    fd_ = -1;
-    if (err == EWOULDBLOCK) {
-      throw Error(name + ": the folder is in use by another foveate run" +
-                  (holder.empty() ? std::string() : " (pid " + holder + ")") +
-                  "; wait for it to finish or choose another folder");
+  path_ = (std::filesystem::path(dir) / ".foveate.lock").string();
+  lock(name);
+  const std::vector<std::string> earlier = run_outputs_in(dir);
+  if (earlier.empty()) return;
+  const std::string which =
+      std::filesystem::path(earlier.front()).filename().string() +
+      (earlier.size() > 1 ? " and " + std::to_string(earlier.size() - 1) + " more" : "");
+  if (!overwrite) {
+    release();
+    throw Error(name + ": holds the output of an earlier run (" + which + "); pass " +
+                overwrite_flag +
+                " to replace it (its files are removed first) or choose another folder");
+  }
+  for (const std::string& f : earlier) {
+    std::error_code ec;
+    std::filesystem::remove(f, ec);
+    if (ec) {
+      release();
+      throw Error(f + ": cannot remove the earlier run's file (" + overwrite_flag +
+                  "): " + ec.message());
     }
-    throw Error(name + ": cannot lock the folder: " + std::strerror(err));
+  }
+  if (!quiet()) {
+    std::fprintf(stderr, "foveate: note: %s: removed the earlier run's output (%s), %s\n",
+                 name.c_str(), which.c_str(), overwrite_flag.c_str());
+  }
+}
+
+void OutputDirLock::lock(const std::string& name) {
+  // The run before may remove the lock file as it ends: a lock taken on a
+  // file no longer at the path is no lock, so take it again on the new one.
+  for (;;) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) throw Error(name + ": cannot write into the folder: " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      const std::string holder = holder_of(fd_);
+      ::close(fd_);
+      fd_ = -1;
+      if (err == EWOULDBLOCK) {
+        throw Error(name + ": the folder is in use by another foveate run" +
+                    (holder.empty() ? std::string() : " (pid " + holder + ")") +
+                    "; wait for it to finish or choose another folder");
+      }
+      throw Error(name + ": cannot lock the folder: " + std::strerror(err));
+    }
+    struct stat held {
+    }, now{};
+    if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &now) == 0 && held.st_ino == now.st_ino &&
+        held.st_dev == now.st_dev)
+      break;
+    ::close(fd_);
   }
   // Who holds it, for the message another run prints.
   const std::string pid = std::to_string(::getpid()) + "\n";
@@ -44,8 +102,14 @@ OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag) {
   }
 }
 
-OutputDirLock::~OutputDirLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+void OutputDirLock::release() {
+  if (fd_ < 0) return;
+  // Removed while still held, so that no other run locks it in between.
+  ::unlink(path_.c_str());
+  ::close(fd_);  // closing releases the lock
+  fd_ = -1;
 }
+
+OutputDirLock::~OutputDirLock() { release(); }
 
 }  // namespace foveate::app

@@ -50,7 +50,10 @@ void Progress::step(const std::string& detail, const std::string& kind) {
   k->seconds += std::chrono::duration<double>(now - last_).count();
   last_ = now;
   if (!enabled_ || finished_) return;
-  const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  const double el = std::chrono::duration<double>(now - t0_).count();
+  // Work done within a second needs no progress (--verbose asks for every step).
+  if (el < kQuietSeconds && !verbose()) return;
+  shown_ = true;
   const double left = seconds_left();
   const int percent = total_ > 0 ? std::min(100, 100 * done_ / total_) : 100;
   if (tty_) {
@@ -74,7 +77,8 @@ void Progress::finish() {
   if (!enabled_ || finished_) return;
   finished_ = true;
   const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-  if (tty_) std::fprintf(stderr, "\n");
+  if (!shown_ && el < kQuietSeconds) return;
+  if (tty_ && shown_) std::fprintf(stderr, "\n");
   std::fprintf(stderr, "%s: %d/%d %s done in %s\n", what_.c_str(), done_, total_, unit_.c_str(),
                format_duration(el).c_str());
   std::fflush(stderr);

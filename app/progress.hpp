@@ -1,7 +1,8 @@
 #pragma once
 // Progress of a long command on stderr: a bar redrawn in place on a terminal,
 // a plain line every tenth of the work otherwise (logs, CI); nothing with
-// --quiet. The estimate of the time left is the elapsed time per step times
+// --quiet, and nothing for work done within a second (kQuietSeconds; with
+// --verbose every step is shown). The estimate of the time left is the elapsed time per step times
 // the steps left, so every slow part of the work must be a step.
 #include <chrono>
 #include <string>
@@ -19,6 +20,9 @@ struct StepKind {
 /// The time left: for every kind, the steps left times its mean time per step
 /// (a kind not yet seen counts at the mean of all steps so far).
 double time_left(const std::vector<StepKind>& kinds);
+
+/// Work that ends within this many seconds shows no progress at all.
+inline constexpr double kQuietSeconds = 1.0;
 
 class Progress {
  public:
@@ -43,6 +47,7 @@ class Progress {
   std::string what_, unit_;
   int total_, done_ = 0;
   bool enabled_, tty_, finished_ = false;
+  bool shown_ = false;  ///< a line or the bar was printed
   std::chrono::steady_clock::time_point t0_, last_;
   std::vector<StepKind> kinds_;  ///< the first is "" (the rest of the total)
 };

@@ -41,12 +41,20 @@ bench::Shard parse_shard(const std::string& text, const std::string& flag) {
   return {static_cast<int>(k) - 1, static_cast<int>(n)};
 }
 
-bench::ParamOverrides session_params(const SessionArgs& a) {
+bench::ParamOverrides session_params(const SessionArgs& a,
+                                     const std::vector<std::string>& techniques) {
   bench::ParamOverrides out;
   if (!a.params_file.empty()) {
-    out = with_flag("--params-file", [&] { return bench::read_params_file(a.params_file); });
+    // A file holds values for every technique it was tuned for: those of the
+    // techniques run apply.
+    out = with_flag("--params-file", [&] {
+            return bench::read_params_file(a.params_file);
+          }).only(techniques);
   }
-  for (const auto& [technique, values] : parse_params(a.params).per_technique) {
+  const bench::ParamOverrides given = parse_params(a.params);
+  // What --param says must apply to a technique run (the library names the field).
+  given.validate(techniques);
+  for (const auto& [technique, values] : given.per_technique) {
     for (const auto& [key, v] : values) out.per_technique[technique][key] = v;
   }
   return out;

@@ -20,7 +20,9 @@ inline constexpr const char* kFixedDate = "2026-01-01T00:00:00";
 
 struct SessionArgs {
   std::string scene = bench::SessionOptions{}.scene;
-  std::string size = kDefaultSize;
+  /// The library's default, which the Python module shares.
+  std::string size = std::to_string(bench::SessionOptions{}.size.width) + "x" +
+                     std::to_string(bench::SessionOptions{}.size.height);
   std::string display = bench::SessionOptions{}.display;
   PhotometryOverrides photometry;
   std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
@@ -63,7 +65,10 @@ bench::SessionOptions to_session_options(const SessionArgs& args,
 bench::ParamOverrides parse_params(const std::vector<std::string>& items);
 /// "K/N" (1-based job K of N) for --shard; errors name `flag`.
 bench::Shard parse_shard(const std::string& text, const std::string& flag);
-/// --params-file's values, then --param's over them.
-bench::ParamOverrides session_params(const SessionArgs& args);
+/// --params-file's values for `techniques` (the techniques the command
+/// runs), then --param's over them; a --param value for a technique not
+/// among them, or a key none of them declares, is an OptionError of "params".
+bench::ParamOverrides session_params(const SessionArgs& args,
+                                     const std::vector<std::string>& techniques);
 
 }  // namespace foveate::app

@@ -8,6 +8,7 @@
 
 #include "convert.hpp"
 #include "foveate/bench/report.hpp"
+#include "foveate/bench/session.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
@@ -62,6 +63,82 @@ bench::ParamOverrides params_from(const py::dict& params) {
   return out;
 }
 
+// The notes and warnings of a run (the savings note among them), kept to be
+// given to Python once the run is over and the GIL is held again: as
+// warnings.warn (UserWarning) and in the result's "notes".
+struct Notices {
+  std::vector<std::string> texts;
+  bench::NoticeFn collect() {
+    return [this](const bench::Notice& n) {
+      if (n.kind != bench::NoticeKind::Detail) texts.push_back(n.text.render(keyword_for));
+    };
+  }
+  py::list emit() const {
+    py::list out;
+    const py::object warn = py::module_::import("warnings").attr("warn");
+    for (const std::string& t : texts) {
+      warn(t, py::module_::import("builtins").attr("UserWarning"), 2);
+      out.append(t);
+    }
+    return out;
+  }
+};
+
+// The session's keyword arguments, shared by bench() and render(), as
+// SessionOptions (an OptionError names the field).
+bench::SessionOptions session_from(const std::string& scene, py::handle size,
+                                   const std::string& display, const std::string& acuity_preset,
+                                   const std::string& quality, std::optional<double> slope,
+                                   std::optional<double> margin, const std::string& gaze,
+                                   double fps, bool stereo, py::handle vergence,
+                                   double frame_timeout_s) {
+  bench::SessionOptions o;
+  o.scene = scene;
+  o.size = size_from(size);
+  o.display = display;
+  if (!acuity_preset.empty() && !quality.empty()) {
+    throw bench::OptionError("quality", bench::FieldText{"{acuity_preset} and {quality} are one "
+                                                         "option (quality its former name): give "
+                                                         "one",
+                                                         {"acuity_preset", "quality"}});
+  }
+  o.acuity = bench::acuity_from(acuity_preset.empty() ? quality : acuity_preset, slope);
+  o.margin = margin;
+  o.gaze = gaze;
+  o.fps = fps;
+  o.stereo = stereo;
+  o.vergence_m = vergence_from(vergence);
+  o.frame_timeout_s = frame_timeout_s;
+  return o;
+}
+
+// "WxH" of a size, as the command writes its default.
+std::string size_text(PixelSize s) {
+  return std::to_string(s.width) + "x" + std::to_string(s.height);
+}
+
+// As the command's --out: a folder holding an earlier run's output is
+// refused unless `overwrite`, which removes those files first, so that no
+// folder mixes two runs' files.
+void prepare_out(const std::string& out, bool overwrite) {
+  if (out.empty()) return;
+  const std::vector<std::string> earlier = run_outputs_in(out);
+  if (earlier.empty()) return;
+  const std::string which =
+      std::filesystem::path(earlier.front()).filename().string() +
+      (earlier.size() > 1 ? " and " + std::to_string(earlier.size() - 1) + " more" : "");
+  if (!overwrite) {
+    throw Error("out " + out + ": holds the output of an earlier run (" + which +
+                "); pass overwrite=True to replace it (its files are removed first) or choose "
+                "another folder");
+  }
+  for (const std::string& f : earlier) {
+    std::error_code ec;
+    std::filesystem::remove(f, ec);
+    if (ec) throw Error(f + ": cannot remove the earlier run's file (overwrite): " + ec.message());
+  }
+}
+
 bench::Sweep sweep_from(py::handle sweep) {
   if (sweep.is_none()) return {};
   const auto t = sweep.cast<py::tuple>();
@@ -94,26 +171,13 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
              const std::string& acuity_preset, const std::string& quality,
              std::optional<double> slope, std::optional<double> margin, const py::dict& params,
              const std::string& gaze, const std::string& reference, bool metrics, py::handle sweep,
-             double fps, const std::string& out, const std::string& video, bool side_by_side,
-             bool images, bool stereo, py::handle vergence, double frame_timeout_s) {
+             double fps, const std::string& out, bool overwrite, const std::string& video,
+             bool side_by_side, bool images, bool stereo, py::handle vergence,
+             double frame_timeout_s) {
   bench::BenchOptions o;
   keywords([&] {
-    o.session.scene = scene;
-    o.session.size = size_from(size);
-    o.session.display = display;
-    if (!acuity_preset.empty() && !quality.empty()) {
-      throw bench::OptionError("quality",
-                               bench::FieldText{"{acuity_preset} and {quality} are one option "
-                                                "(quality its former name): give one",
-                                                {"acuity_preset", "quality"}});
-    }
-    o.session.acuity = bench::acuity_from(acuity_preset.empty() ? quality : acuity_preset, slope);
-    o.session.margin = margin;
-    o.session.gaze = gaze;
-    o.session.fps = fps;
-    o.session.stereo = stereo;
-    o.session.vergence_m = vergence_from(vergence);
-    o.session.frame_timeout_s = frame_timeout_s;
+    o.session = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps,
+                             stereo, vergence, frame_timeout_s);
     o.techniques = std::move(techniques);
     o.params = params_from(params);
     o.frames = frames;
@@ -126,15 +190,75 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
     o.sweep = sweep_from(sweep);
     bench::validate(o);
   });
+  prepare_out(out, overwrite);
   bench::BenchResult r;
+  Notices notices;
   {
     py::gil_scoped_release unlocked;
+    bench::BenchCallbacks callbacks;
+    callbacks.session.notice = notices.collect();
     keywords([&] {
-      r = bench::run_bench(o);
+      r = bench::run_bench(o, callbacks);
       if (!out.empty()) bench::write_bench_report(r, out);
     });
   }
-  return result_dict(r, images);
+  py::dict d = result_dict(r, images);
+  d["notes"] = notices.emit();
+  return d;
+}
+
+// Frames of one technique, as `foveate render` renders them, read back.
+py::dict render(const std::string& scene, const std::string& technique, py::handle size, int frames,
+                const std::string& display, const std::string& acuity_preset,
+                const std::string& quality, std::optional<double> slope,
+                std::optional<double> margin, const py::dict& params, const std::string& gaze,
+                double fps, bool overlay, bool stereo, py::handle vergence,
+                double frame_timeout_s) {
+  bench::SessionOptions o;
+  bench::ParamOverrides overrides;
+  keywords([&] {
+    o = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps, stereo,
+                     vergence, frame_timeout_s);
+    bench::validate(o);
+    (void)bench::for_field("technique", [&] { return technique_info(technique).name; });
+    overrides = params_from(params);
+    overrides.validate({technique});
+    if (!(frames >= 1 && frames <= 100000))
+      throw bench::OptionError("frames", "expected 1..100000, got " + std::to_string(frames));
+  });
+  std::vector<Image> images;
+  std::vector<double> shaded, native;
+  std::string report;
+  Notices notices;
+  {
+    py::gil_scoped_release unlocked;
+    keywords([&] {
+      bench::SessionCallbacks callbacks;
+      callbacks.notice = notices.collect();
+      bench::Session session(o, callbacks);
+      session.set_overlay(overlay);
+      bench::SessionTechnique t = session.make(technique, overrides);
+      for (int k = 0; k < frames; ++k) {
+        const GazeState g = session.gaze().at(session.frame_runner().frame_input(k).time_s);
+        const bench::SessionFrame st =
+            session.watchdog().run("frame " + std::to_string(k) + " (" + technique + ")",
+                                   [&] { return session.render(t, k, g); });
+        shaded.push_back(st.total.shaded_pixels);
+        native.push_back(st.total.native_pixels);
+        images.push_back(session.read_output());
+      }
+      report = session.gaze().report();
+    });
+  }
+  py::list arrays;
+  for (const Image& im : images) arrays.append(image_to_array(im));
+  py::dict d;
+  d["frames"] = arrays;
+  d["shaded_pixels"] = shaded;
+  d["native_pixels"] = native;
+  d["gaze_report"] = report;
+  d["notes"] = notices.emit();
+  return d;
 }
 
 py::list technique_list(py::handle display, py::handle size, const AcuityModel& acuity) {
@@ -187,17 +311,18 @@ py::object read_results(const std::string& path) {
 }  // namespace
 
 void bind_bench(py::module_& m) {
+  // The defaults are the library's, as `foveate bench` and `foveate render` take them.
   const bench::BenchOptions defaults;
-  m.def("bench", &run, py::kw_only(), py::arg("scene") = "cheap",
-        py::arg("techniques") = py::none(), py::arg("size") = "960x540",
+  m.def("bench", &run, py::kw_only(), py::arg("scene") = defaults.session.scene,
+        py::arg("techniques") = py::none(), py::arg("size") = size_text(defaults.session.size),
         py::arg("frames") = defaults.frames, py::arg("warmup") = defaults.warmup,
         py::arg("display") = defaults.session.display, py::arg("acuity_preset") = "",
         py::arg("quality") = "", py::arg("slope") = py::none(), py::arg("margin") = py::none(),
         py::arg("params") = py::dict(), py::arg("gaze") = "", py::arg("reference") = "native",
         py::arg("metrics") = defaults.image_metrics, py::arg("sweep") = py::none(),
-        py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("video") = "",
-        py::arg("side_by_side") = false, py::arg("images") = false, py::arg("stereo") = false,
-        py::arg("vergence") = py::none(),
+        py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("overwrite") = false,
+        py::arg("video") = "", py::arg("side_by_side") = false, py::arg("images") = false,
+        py::arg("stereo") = false, py::arg("vergence") = py::none(),
         py::arg("frame_timeout_s") = defaults.session.frame_timeout_s,
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
@@ -212,13 +337,29 @@ technique's own planning margin); acuity_preset "A" or "B" (Guenter et al.'s
 presets; quality= is the same, its former name) or slope a MAR slope; sweep
 (key, from, to, step), e.g. ("slope", 0.02, 0.03, 0.005) or
 ("margin", 1, 2, 0.5); out a folder for
-results.json, .csv, .md, report.html; video a file (.mp4) of the frames.
+results.json, .csv, .md, report.html (one holding an earlier run's output is
+refused unless overwrite=True, which removes those files first); video a
+file (.mp4) of the frames.
 images=True adds each technique's last frame ("image", HxWx3 uint8) and
 "native_image". stereo=True renders both eyes of a stereo display
 (display="hmd-quest2"; size is one eye's; vergence in metres, 2 or "inf"):
 "stereo" and each result's "eyes" hold the per-eye figures. frame_timeout_s:
 a frame whose GPU work runs longer raises foveate.Error once it has finished
 (a GL draw cannot be interrupted); 0 = no limit.)");
+  m.def("render", &render, py::kw_only(), py::arg("scene") = defaults.session.scene,
+        py::arg("technique") = "native", py::arg("size") = size_text(defaults.session.size),
+        py::arg("frames") = 1, py::arg("display") = defaults.session.display,
+        py::arg("acuity_preset") = "", py::arg("quality") = "", py::arg("slope") = py::none(),
+        py::arg("margin") = py::none(), py::arg("params") = py::dict(), py::arg("gaze") = "",
+        py::arg("fps") = defaults.session.fps, py::arg("overlay") = false,
+        py::arg("stereo") = false, py::arg("vergence") = py::none(),
+        py::arg("frame_timeout_s") = defaults.session.frame_timeout_s,
+        R"(Renders frames of a scene with one technique, as `foveate render` does, and
+returns a dict: "frames", a list of HxWx3 uint8 numpy arrays (stereo: both eyes
+side by side); "shaded_pixels" and "native_pixels" per frame; "gaze_report";
+"notes" (also given as warnings, e.g. that the size leaves foveation little
+to save). Keywords as in bench(); technique one name; overlay=True draws the
+technique's layers or regions and the gaze.)");
   m.def("read_results", &read_results, py::arg("path"),
         "results.json of a bench run (the file or its folder) as a dict");
   m.def("techniques", &technique_list, py::arg("display") = "desktop-1080p",

@@ -99,6 +99,8 @@ BenchResult BenchRun::run() {
   for (const std::string& e : session_.take_gl_errors())
     notice(NoticeKind::Warning, {"GL debug error: " + e, {}});
   out_.gaze_report = session_.gaze().report();
+  out_.savings = check_savings(session_.display(), options_.session.acuity,
+                               strictest_plan_margin(options_.session.margin, out_.techniques));
   finish_environment(out_.environment);
   if (video_) {
     video_->finish();

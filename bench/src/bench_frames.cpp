@@ -6,6 +6,7 @@
 
 #include "bench_run.hpp"
 #include "foveate/core/parse.hpp"
+#include "report_common.hpp"
 
 namespace foveate::bench {
 
@@ -29,6 +30,10 @@ void BenchRun::measure(int k) {
   const int frame = out_.warmup + k;
   const bool last = k + 1 == options_.frames;
   const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(frame).time_s);
+  // A gaze off the image or in the filter's fallback makes every technique
+  // run its fallback: the frame is reported, not silently averaged in.
+  if (session_.gaze().last().fallback || session_.gaze().last_off_image())
+    out_.fallback_frames.push_back(k);
   // The image every run is judged against: native, or the supersampled
   // reference (untimed, rendered from a scene of its own).
   Reference reference;
@@ -89,6 +94,7 @@ void BenchRun::write_video_frame(const std::vector<std::pair<size_t, Images>>& i
     } else if (options_.side_by_side) {
       mark_gaze(tiles[s], g.gaze_px);
     }
+    label_tile(tiles[s], label(out_, runs_[shown_[s]].result));
     ptrs.push_back(&tiles[s]);
   }
   video_->write(tile(ptrs));

@@ -127,6 +127,15 @@ BenchResult read_bench_results(const nlohmann::json& j, const std::string& where
   b.environment.cores = env.value("cpu_cores", 0u);
   b.skipped = j.value("skipped", std::vector<std::string>{});
   b.gaze_fallback = j.value("gaze_fallback", false);
+  b.fallback_frames = j.value("gaze_fallback_frames", std::vector<int>{});
+  b.gaze_report = j.value("gaze_report", nlohmann::json()).is_string()
+                      ? j["gaze_report"].get<std::string>()
+                      : std::string();
+  if (const auto sv = j.find("savings"); sv != j.end() && sv->is_object()) {
+    b.savings.pixel_bound = sv->value("pixel_bound", 1.0);
+    b.savings.margin = sv->value("margin", 1.0);
+    b.savings.nothing_to_save = sv->value("little_to_save", false);
+  }
   read_options(j, where, b);
   b.settings_key = j.value("settings", nlohmann::json::object()).dump();
   for (const auto& r : value_at<nlohmann::json>(j, "results", where)) {

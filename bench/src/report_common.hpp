@@ -3,6 +3,7 @@
 // resolving, and the labels of the runs.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "foveate/bench/bench.hpp"
 #include "foveate/core/parse.hpp"
@@ -75,6 +76,13 @@ inline std::string label(const BenchResult& b, const TechniqueResult& r) {
   if (b.options.sweep.key.empty() || r.technique == "native") return r.technique;
   return r.technique + " @ " + b.options.sweep.key + "=" + format_fixed(r.sweep_value, 4);
 }
+
+/// The marks a table row carries: " †" on a foveated technique where the
+/// size leaves little to save (BenchResult::savings), " ‡" on every row when
+/// some frames ran with the gaze in its fallback (BenchResult::fallback_frames).
+std::string row_marks(const BenchResult& b, const TechniqueResult& r);
+/// What the marks mean, one sentence each (empty when no row is marked).
+std::vector<std::string> mark_notes(const BenchResult& b);
 
 /// The HTML report's sections (report_html*.cpp).
 std::string html_speed(const BenchResult& b);

@@ -61,6 +61,7 @@ std::string html_head(const BenchResult& b) {
   if (b.gaze_fallback)
     h << "<p class=warn>The live gaze source never answered: every frame used the fallback gaze "
          "(allowed for this run).</p>\n";
+  for (const std::string& n : mark_notes(b)) h << "<p class=warn>" << escape_html(n) << "</p>\n";
   return h.str();
 }
 

@@ -143,6 +143,12 @@ nlohmann::json bench_json(const BenchResult& b) {
           {"margin", s.margin ? nlohmann::json(*s.margin) : nlohmann::json()},
           {"gaze", s.gaze.empty() ? "centre" : s.gaze},
           {"gaze_fallback", b.gaze_fallback},
+          {"gaze_fallback_frames", b.fallback_frames},
+          {"gaze_report", b.gaze_report.empty() ? nlohmann::json() : nlohmann::json(b.gaze_report)},
+          {"savings",
+           {{"pixel_bound", b.savings.pixel_bound},
+            {"margin", b.savings.margin},
+            {"little_to_save", b.savings.nothing_to_save}}},
           {"skipped", b.skipped},
           {"reference", b.options.reference > 1 ? "ssaa:" + std::to_string(b.options.reference)
                                                 : std::string("native")},

@@ -99,7 +99,7 @@ std::string bench_markdown(const BenchResult& b) {
     << quality_header("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
   const auto jod_cell = [](double v) { return std::isfinite(v) ? format_fixed(v, 3) : "-"; };
   for (const TechniqueResult& r : b.results) {
-    s << "| " << label(b, r) << " | " << jod_cell(jod_of(r)) << " | "
+    s << "| " << label(b, r) << row_marks(b, r) << " | " << jod_cell(jod_of(r)) << " | "
       << jod_cell(jod_below_native(b, r)) << " | " << format_fixed(r.speedup, 2) << "x ("
       << format_fixed(r.speedup_lo, 2) << "-" << format_fixed(r.speedup_hi, 2) << ") | "
       << format_fixed(r.mean_ms, 2) << " | " << format_fixed(r.median_ms, 2) << " | "
@@ -108,6 +108,9 @@ std::string bench_markdown(const BenchResult& b) {
     for (const QualityColumn& c : kQualityColumns) s << ' ' << quality_cell(r, c) << " |";
     s << '\n';
   }
+  const std::vector<std::string> notes = mark_notes(b);
+  if (!notes.empty()) s << '\n';
+  for (const std::string& n : notes) s << n << '\n';
   s << eyes_markdown(b) << passes_markdown(b);
   return s.str();
 }

@@ -109,7 +109,8 @@ void Session::announce() const {
             format_fixed(display_.pixels_per_degree(c, c), 1) + " px/deg at the centre; gaze " +
             gaze_->describe(),
         {}}});
-  const SavingsCheck savings = check_savings(display_, options_.acuity);
+  const SavingsCheck savings =
+      check_savings(display_, options_.acuity, strictest_plan_margin(options_.margin));
   if (savings.nothing_to_save) callbacks_.notice({NoticeKind::Note, savings.note});
 }
 

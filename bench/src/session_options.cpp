@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "foveate/bench/field_text.hpp"
+#include "foveate/gaze/gaze.hpp"
 
 namespace foveate::bench {
 
@@ -47,6 +48,8 @@ void validate(const SessionOptions& o) {
   if (!up.empty() && up != "y" && up != "z")
     throw OptionError("up", "expected y or z, got '" + up + "'");
   if (const std::string why = size_problem(o.size); !why.empty()) throw OptionError("size", why);
+  // The gaze is on the output (stereo: the cyclopean view, one eye's size).
+  for_field("gaze", [&] { gaze::check_gaze_spec(o.gaze, o.size.width, o.size.height); });
   if (o.margin) check_margin(*o.margin);
   if (!(o.fps > 0.0 && o.fps <= 10000.0)) {
     throw OptionError("fps", "expected a rate above 0 and at most 10000 frames per second, got " +

@@ -2,6 +2,7 @@
 // without them, a writer that refuses with a clear message).
 #include "foveate/bench/video.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -179,6 +180,12 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, double 
   std::string templ = path + ".tmp-XXXXXX";
   const int fd = ::mkstemp(templ.data());
   if (fd < 0) throw Error(path + ": cannot write: " + std::strerror(errno));
+  // mkstemp makes the file private (0600); a video is an output like the
+  // PNG files beside it, so it gets the mode a newly created file gets
+  // (0666 less the umask, which can only be read by setting it).
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
   m.tmp = templ;
 

@@ -5,6 +5,7 @@
 
 #include "foveate/bench/video.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/image_text.hpp"
 #include "foveate/core/parse.hpp"
 
 namespace foveate::bench {
@@ -44,6 +45,12 @@ void mark_gaze(Image& image, Vec2d gaze_px) {
       }
     }
   }
+}
+
+void label_tile(Image& image, const std::string& name) {
+  if (image.empty()) return;
+  const int scale = label_scale(image.height);
+  draw_label(image, 0, image.height - label_height(scale), name, scale);
 }
 
 void tile_layout(int n, int& cols, int& rows) {

@@ -84,6 +84,7 @@ Display Display::load(const std::string& name_or_path) {
   }
   Display d = from_json(read_json_file(name_or_path, "display JSON"), name_or_path);
   if (d.name.empty()) d.name = std::filesystem::path(name_or_path).stem().string();
+  d.source = name_or_path;
   return d;
 }
 

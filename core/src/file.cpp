@@ -155,4 +155,28 @@ void make_output_dir(const std::string& dir, const std::string& option) {
   if (ec) throw Error(name + ": cannot create the folder: " + ec.message());
 }
 
+std::vector<std::string> run_outputs_in(const std::string& dir) {
+  namespace fs = std::filesystem;
+  static const char* const kNamed[] = {"results.json", "results.csv", "results.md", "report.html",
+                                       "tune.json",    "tune.md",     "params.json"};
+  const auto numbered = [](const std::string& name, const std::string& prefix) {
+    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - 4, 4, ".png") != 0)
+      return false;
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - 4);
+    return digits.find_first_not_of("0123456789") == std::string::npos;
+  };
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const std::string name = it->path().filename().string();
+    bool ours = numbered(name, "frame-") || numbered(name, "reference-");
+    for (const char* n : kNamed) ours = ours || name == n;
+    if (ours) out.push_back(it->path().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace foveate

@@ -162,7 +162,14 @@ void CheckerboardPattern::validate() const {
   for (int k = 0; k < 3; ++k) {
     require(std::isfinite(thresholds_px[k]) && thresholds_px[k] >= 0.0,
             "thresholds: must be finite and >= 0");
-    if (k > 0) require(thresholds_px[k] >= thresholds_px[k - 1], "thresholds: must not decrease");
+    if (k > 0 && thresholds_px[k] < thresholds_px[k - 1]) {
+      // The three rings nest: the values say which one is out of order.
+      require(false, "thresholds (r1, r2, r3): must not decrease, got " +
+                         format_number(thresholds_px[0]) + ", " + format_number(thresholds_px[1]) +
+                         ", " + format_number(thresholds_px[2]) + " px (r" + std::to_string(k + 1) +
+                         " = " + format_number(thresholds_px[k]) + " is below r" +
+                         std::to_string(k) + " = " + format_number(thresholds_px[k - 1]) + ")");
+    }
   }
 }
 

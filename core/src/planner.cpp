@@ -195,9 +195,7 @@ std::vector<double> optimal_radii(const Geometry& g, const std::vector<double>& 
       arg = static_cast<int>(j);
     }
   }
-  if (arg < 0)
-    throw Error("layers: the display is too small for " + std::to_string(n) +
-                " layers at this grid step");
+  if (arg < 0) return {};  // no room: plan_layers says so, naming the display
   std::vector<double> radii(m, 0.0);
   for (int i = m - 1; i >= 0; --i) {
     radii[i] = cand[i][arg];
@@ -254,6 +252,16 @@ LayerPlan plan_layers(const Display& display, const AcuityModel& acuity,
   const std::vector<double> grid = candidate_radii(g, opt);
   const std::vector<double> radii =
       opt.layers > 1 ? optimal_radii(g, grid, w, sampling, acuity, opt) : std::vector<double>{};
+  if (opt.layers > 1 && radii.empty()) {
+    // The display is named by its file when it came from one: that is what
+    // the user has to change.
+    const std::string which = display.source.empty() ? "'" + display.name + "'" : display.source;
+    throw Error("layers: the display " + which + " (" + std::to_string(display.width_px) + "x" +
+                std::to_string(display.height_px) + " px, " + format_fixed(2 * g.e_star, 1) +
+                " deg across) is too small for " + std::to_string(opt.layers) +
+                " layers at a grid step of " + format_number(opt.grid_step_deg) +
+                " deg: give it a wider field of view or plan fewer layers");
+  }
   return make_plan(display, acuity, g, radii, sampling);
 }
 

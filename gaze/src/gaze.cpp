@@ -144,15 +144,28 @@ class MouseSource final : public GazeSource {
   Vec2d last_{0.5, 0.5};
 };
 
+Vec2d parse_fixed(const std::string& text, int width, int height) {
+  // A fixed gaze off the image would measure a technique's fallback, not foveation.
+  const Vec2d px = parse_point_on_image(text, width, height, "fixed gaze point");
+  return {px.x / width, px.y / height};
+}
+
 Vec2d parse_fixed(const std::string& text, const Display& d) {
-  const Vec2d px = parse_point(text, d.width_px, d.height_px, "fixed gaze point");
-  return {px.x / d.width_px, px.y / d.height_px};
+  return parse_fixed(text, d.width_px, d.height_px);
+}
+
+// The kinds of source a spec may name.
+const std::vector<std::string>& source_kinds() {
+  static const std::vector<std::string> kinds{"fixed", "trace", "synthetic",
+                                              "pupil", "mouse", "nearest"};
+  return kinds;
 }
 
 }  // namespace
 
 const char* gaze_spec_help() {
-  return "X,Y or fixed:X,Y (pixels, or normalized with a decimal point: 0.5,0.5) | trace:FILE "
+  return "X,Y or fixed:X,Y on the image (whole numbers are pixels: 960,540; numbers with a "
+         "decimal point are normalized, 0.0..1.0: 0.5,0.5) | trace:FILE "
          "(CSV, Pupil gaze_positions.csv, "
          "JSON) | synthetic[:SEED] | pupil[:HOST[:PORT]] (default 127.0.0.1:50020) | mouse | "
          "nearest (the nearest scene object)";
@@ -212,7 +225,20 @@ std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const Gaze
     if (!ctx.objects) throw Error("gaze source nearest needs a scene that knows its objects");
     return std::make_unique<NearestObjectViewer>(ctx.display, ctx.objects);
   }
-  throw Error("gaze source: unknown source '" + kind + "'; expected " + gaze_spec_help());
+  const std::string suggestion = did_you_mean(kind, source_kinds());
+  throw Error("gaze source: unknown source '" + kind + "'" +
+              (suggestion.empty() ? ";" : suggestion) + " expected " + gaze_spec_help());
+}
+
+void check_gaze_spec(const std::string& spec, int width, int height) {
+  if (spec.empty()) return;
+  const auto colon = spec.find(':');
+  const std::string kind = spec.substr(0, colon);
+  if (kind == "fixed" && colon != std::string::npos) {
+    (void)parse_fixed(spec.substr(colon + 1), width, height);
+  } else if (colon == std::string::npos && spec.find(',') != std::string::npos) {
+    (void)parse_fixed(spec, width, height);
+  }
 }
 
 }  // namespace foveate::gaze

@@ -12,7 +12,8 @@ struct GazeTracker::Impl {
   TrackerOptions options;
   int width = 0, height = 0;
   FilteredGaze last;
-  int frames = 0, held = 0, fallback = 0, saccades = 0;
+  bool off_image = false;
+  TrackerCounts counts;
 
   Impl(std::unique_ptr<GazeSource> s, const Display& d, TrackerOptions o)
       : source(std::move(s)),
@@ -41,10 +42,14 @@ GazeState GazeTracker::at(double time_s, std::optional<double> shown_s) {
   const GazeSample sample = m.source->sample(time_s);
   m.last = m.filter.update(sample, time_s);
   m.latency.record(m.last, shown_s.value_or(time_s));
-  ++m.frames;
-  m.held += m.last.holding ? 1 : 0;
-  m.fallback += m.last.fallback ? 1 : 0;
-  m.saccades += m.last.in_saccade ? 1 : 0;
+  const Vec2d p = m.last.pos;
+  m.off_image = !(p.x >= 0.0 && p.x <= 1.0 && p.y >= 0.0 && p.y <= 1.0);
+  TrackerCounts& c = m.counts;
+  ++c.frames;
+  c.holding += m.last.holding ? 1 : 0;
+  c.fallback += m.last.fallback ? 1 : 0;
+  c.saccades += m.last.in_saccade ? 1 : 0;
+  c.off_image += m.off_image ? 1 : 0;
   GazeState g;
   g.gaze_px = {m.last.pos.x * m.width, m.last.pos.y * m.height};
   g.fovea_scale = m.last.fovea_scale;
@@ -54,6 +59,8 @@ GazeState GazeTracker::at(double time_s, std::optional<double> shown_s) {
 }
 
 const FilteredGaze& GazeTracker::last() const { return impl_->last; }
+bool GazeTracker::last_off_image() const { return impl_->off_image; }
+const TrackerCounts& GazeTracker::counts() const { return impl_->counts; }
 const GazeSource& GazeTracker::source() const { return *impl_->source; }
 const GazeFilter& GazeTracker::filter() const { return impl_->filter; }
 const LatencyEstimator& GazeTracker::latency() const { return impl_->latency; }
@@ -62,8 +69,10 @@ std::string GazeTracker::describe() const { return impl_->source->describe(); }
 std::string GazeTracker::report() const {
   const Impl& m = *impl_;
   std::ostringstream s;
-  s << "gaze: " << m.source->describe() << "; " << m.frames << " frames, " << m.held << " holding, "
-    << m.fallback << " in fallback, " << m.saccades << " in saccades";
+  const TrackerCounts& c = m.counts;
+  s << "gaze: " << m.source->describe() << "; " << c.frames << " frames, " << c.holding
+    << " holding, " << c.fallback << " in fallback, " << c.saccades << " in saccades, "
+    << c.off_image << " off the image";
   if (m.latency.count() > 0) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "; latency median %.1f ms, worst case %.1f ms",

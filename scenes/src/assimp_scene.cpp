@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 
@@ -71,8 +72,49 @@ std::string lower_ext(const std::string& path) {
   return ext;
 }
 
+// What is wrong with a glTF file that assimp gave up on ("No suitable
+// reader found" for a .gltf cut short): glTF's own structure says whether the
+// file is truncated or corrupt. Empty when it looks whole.
+std::string gltf_problem(const std::string& path, const std::string& ext) {
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (ec) return {};
+  if (size == 0) return "the file is empty";
+  if (ext == ".gltf") {
+    try {
+      const nlohmann::json whole = nlohmann::json::parse(read_file(path));
+      if (!whole.is_object()) return "not a glTF JSON object: the file is corrupt";
+    } catch (const nlohmann::json::parse_error& e) {
+      return "not valid glTF JSON (" + std::to_string(size) + " bytes; " + e.what() +
+             "): the file is truncated or corrupt";
+    } catch (const Error&) {
+      return {};
+    }
+    return {};
+  }
+  if (ext != ".glb") return {};
+  // GLB: "glTF", version, total length (little-endian uint32s).
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return {};
+  unsigned char h[12] = {};
+  const size_t got = std::fread(h, 1, sizeof h, f);
+  std::fclose(f);
+  if (got < sizeof h) return "the GLB header is cut short (" + std::to_string(got) + " bytes)";
+  if (std::memcmp(h, "glTF", 4) != 0) return "no GLB header (the file does not start with 'glTF')";
+  const std::uint64_t length = std::uint64_t(h[8]) | std::uint64_t(h[9]) << 8 |
+                               std::uint64_t(h[10]) << 16 | std::uint64_t(h[11]) << 24;
+  if (size < length) {
+    return "truncated: the GLB header gives " + std::to_string(length) + " bytes, the file has " +
+           std::to_string(size);
+  }
+  return {};
+}
+
 // Why the import failed, in words, even when assimp gives no reason.
 [[noreturn]] void import_failed(const std::string& path, const Assimp::Importer& importer) {
+  const std::string ext = lower_ext(path);
+  if (const std::string problem = gltf_problem(path, ext); !problem.empty())
+    throw Error(path + ": cannot read the model: " + problem);
   const std::string why = importer.GetErrorString();
   if (why.find("No meshes") != std::string::npos || why.find("no faces") != std::string::npos ||
       why.find("mNumMeshes is 0") != std::string::npos) {
@@ -81,7 +123,6 @@ std::string lower_ext(const std::string& path) {
   if (!why.empty()) throw Error(path + ": cannot read the model: " + why);
   std::error_code ec;
   const auto size = fs::file_size(path, ec);
-  const std::string ext = lower_ext(path);
   const bool known = !ext.empty() && importer.IsExtensionSupported(ext);
   throw Error(path + ": cannot read the model (the importer gave no reason; tried " +
               (known ? "the importer for '" + ext + "' files"

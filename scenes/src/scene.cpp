@@ -5,6 +5,7 @@
 
 #include "factories.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate_embedded/scenes_shaders.hpp"
 
 namespace foveate {
@@ -35,9 +36,13 @@ std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOp
   std::error_code ec;
   if (!fs::exists(name_or_path, ec)) {
     std::string names;
-    for (const auto& s : builtin_scenes()) names += (names.empty() ? "" : ", ") + s.name;
+    std::vector<std::string> list;
+    for (const auto& s : builtin_scenes()) {
+      names += (names.empty() ? "" : ", ") + s.name;
+      list.push_back(s.name);
+    }
     throw Error("scene '" + name_or_path + "': not a built-in scene (" + names +
-                ") nor an existing file");
+                ") nor an existing file" + did_you_mean(name_or_path, list));
   }
   std::string ext = fs::path(name_or_path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),

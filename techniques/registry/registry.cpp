@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 #include "param_number.hpp"
 
 namespace foveate {
@@ -85,7 +86,8 @@ const TechniqueInfo& technique_info(const std::string& name) {
   }
   std::string names;
   for (const TechniqueInfo& t : techniques()) names += (names.empty() ? "" : ", ") + t.name;
-  throw Error("unknown technique '" + name + "' (known: " + names + ")");
+  throw Error("unknown technique '" + name + "'" + did_you_mean(name, technique_names()) +
+              " (known: " + names + ")");
 }
 
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueConfig& config) {

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "errors.hpp"
 #include "foveate/bench/bench.hpp"
 #include "foveate/bench/frame_order.hpp"
 #include "foveate/bench/params_file.hpp"
+#include "foveate/bench/report.hpp"
 #include "foveate/bench/savings.hpp"
 #include "foveate/bench/statistics.hpp"
 #include "foveate/bench/tune.hpp"
@@ -178,6 +180,37 @@ TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
   EXPECT_TRUE(full.note.text.empty());
 }
 
+// At 960x540 and 640x360 the desktop display leaves too little to save for
+// the techniques' own plans (checkerboard shaded 100 %, layered ran 0.39x at
+// 960x540): the note is given below kLittleToSaveBound at the finest plan the
+// techniques make by default (layered's margin 2), not only near 1x.
+TEST(Savings, TheNoteIsGivenUnderTheClearThresholdAtTheTechniquesOwnPlans) {
+  const Display d = Display::load("desktop-1080p");
+  const AcuityModel a = AcuityModel::preset("A");
+  const double margin = strictest_plan_margin(std::nullopt);
+  EXPECT_DOUBLE_EQ(margin, 2.0);
+  EXPECT_DOUBLE_EQ(own_plan_margin("layered"), 2.0);
+  EXPECT_DOUBLE_EQ(own_plan_margin("native"), 1.0);
+  EXPECT_DOUBLE_EQ(strictest_plan_margin(1.25), 1.25);
+  for (const auto& [w, h] : {std::pair{960, 540}, std::pair{640, 360}}) {
+    const SavingsCheck c = check_savings(d.resized(w, h), a, margin);
+    EXPECT_TRUE(c.nothing_to_save) << w << "x" << h << ": bound " << c.pixel_bound;
+    const std::string note = c.note.render();
+    EXPECT_NE(note.find("at planning margin 2 ("), std::string::npos) << note;
+    EXPECT_NE(note.find("under 1.5x"), std::string::npos) << note;
+    EXPECT_NE(note.find("try size 1280x720"), std::string::npos) << note;
+  }
+  EXPECT_FALSE(check_savings(d.resized(1280, 720), a, margin).nothing_to_save);
+  EXPECT_FALSE(check_savings(d.resized(960, 540), a, 1.0).nothing_to_save);  // the papers' plans
+  // A display too small to plan layers on (0.1 deg across) has nothing to
+  // save: a note, not an error.
+  Display narrow = d;
+  narrow.width_mm = 2;
+  const SavingsCheck tiny = check_savings(narrow, a);
+  EXPECT_TRUE(tiny.nothing_to_save);
+  EXPECT_DOUBLE_EQ(tiny.pixel_bound, 1.0);
+}
+
 TEST(Savings, AWideFieldSavesEvenAtModestSizes) {
   const Display quest = Display::load("hmd-quest3").resized(640, 684);
   EXPECT_FALSE(check_savings(quest, AcuityModel::preset("A")).nothing_to_save);
@@ -227,4 +260,41 @@ TEST(Options, RunsAndShardsAreChecked) {
   t = {};
   t.techniques = std::vector<std::string>{"native"};
   EXPECT_EQ(field_of([&] { validate(t); }), "techniques");
+}
+
+// The table and results.json say which runs had little to save (†) and which
+// frames ran in the gaze's fallback (‡), so that no figure silently measures
+// a fallback.
+TEST(Report, MarksRunsWithLittleToSaveAndFramesInFallback) {
+  BenchResult b;
+  b.options.frames = 6;
+  b.options.session.size = {64, 36};
+  b.techniques = {"native", "layered"};
+  TechniqueResult native, layered;
+  native.technique = "native";
+  layered.technique = "layered";
+  b.results = {native, layered};
+  const std::string plain = bench_markdown(b);
+  EXPECT_EQ(plain.find("†"), std::string::npos) << plain;
+  EXPECT_EQ(plain.find("‡"), std::string::npos) << plain;
+  b.savings.nothing_to_save = true;
+  b.savings.pixel_bound = 1.04;
+  b.savings.margin = 2;
+  b.fallback_frames = {3, 4, 5};
+  const std::string md = bench_markdown(b);
+  EXPECT_NE(md.find("| native ‡ |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| layered † ‡ |"), std::string::npos) << md;
+  EXPECT_NE(md.find("† Little to save: at 64x36 the planner's pixel bound is 1.04x (planning "
+                    "margin 2), under 1.5x"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("‡ Gaze fallback: 3 of 6 measured frames (3, 4, 5, counted from 0)"),
+            std::string::npos)
+      << md;
+  BenchResult runs_only = b;
+  runs_only.results.clear();
+  const nlohmann::json j = bench_json(runs_only);
+  EXPECT_EQ(j["gaze_fallback_frames"], nlohmann::json({3, 4, 5}));
+  EXPECT_EQ(j["savings"]["little_to_save"], true);
+  EXPECT_DOUBLE_EQ(j["savings"]["pixel_bound"].get<double>(), 1.04);
 }

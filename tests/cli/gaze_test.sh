@@ -78,7 +78,7 @@ err=$("$FOVEATE" gaze stats --strict "$tmp/cut.csv" 2>&1); rc=$?
 check "cut-off last line with --strict: exit 1" '[[ $rc -eq 1 && "$err" == *"cut.csv:4:"*"cut off"*"--strict"* ]]'
 err=$("$FOVEATE" render --scene cheap --size 32x18 --gaze "trace:$tmp/cut.csv" --out "$tmp/rc" 2>&1); rc=$?
 check "render with a cut-off trace: runs, warns" '[[ $rc -eq 0 && "$err" == *"warning: $tmp/cut.csv:4:"* ]]'
-err=$("$FOVEATE" render --scene cheap --size 32x18 --gaze "trace:$tmp/cut.csv" --strict --out "$tmp/rc" 2>&1); rc=$?
+err=$("$FOVEATE" render --scene cheap --size 32x18 --gaze "trace:$tmp/cut.csv" --strict --overwrite --out "$tmp/rc" 2>&1); rc=$?
 check "render --strict with a cut-off trace: exit 1" '[[ $rc -eq 1 && "$err" == *"--gaze: $tmp/cut.csv:4:"*"--strict"* ]]'
 { echo "time_s,x,y"; for i in $(seq 1 30); do echo "$i,bad,0.5"; done; echo "31,0.5,0.5"; } > "$tmp/many.csv"
 "$FOVEATE" gaze stats "$tmp/many.csv" > /dev/null 2>"$tmp/warn.txt"

@@ -44,9 +44,9 @@ check "on the axis: the gaze tile and its row out to 10 tiles are as without the
 
 # plan: the fovea's layer through the lens at the off-axis gaze is coarser
 # than native; without --gaze the plan holds for any gaze (the axis: 1:1).
-out=$("$FOVEATE" plan --display "$tmp/lens.json" --size 700x700 --gaze 0.98,0.5)
+out=$("$FOVEATE" plan --display "$tmp/lens.json" --size 700x700 --gaze 0.98,0.5 --margin 1)
 check "plan prints the lens and the plan without it" '[[ "$out" == *"planned for this gaze"*"without the lens: s = 1.000"* ]]'
-"$FOVEATE" plan --display "$tmp/lens.json" --size 700x700 --gaze 0.98,0.5 --json > "$tmp/p.json"
+"$FOVEATE" plan --display "$tmp/lens.json" --size 700x700 --gaze 0.98,0.5 --margin 1 --json > "$tmp/p.json"
 check "plan json: layer 1 coarser than without the lens, fewer pixels" 'python3 - "$tmp/p.json" <<PY
 import json, sys
 j = json.load(open(sys.argv[1]))

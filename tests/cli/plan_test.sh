@@ -5,11 +5,11 @@ fail=0
 check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
-out=$("$FOVEATE" plan --quality A)
+out=$("$FOVEATE" plan --quality A --margin 1)  # the paper's plan
 check "table shows the paper's geometry" '[[ "$out" == *"e* (half field of view) = 23.37"* && "$out" == *"0.0516"* ]]'
 check "table shows the half-rate ratio 13.3" '[[ "$out" == *"half rate = 13.3"* ]]'
 
-json=$("$FOVEATE" plan --quality B --json)
+json=$("$FOVEATE" plan --quality B --json --margin 1)
 check "json has layers and ratios" 'python3 -c "import json,sys; j=json.loads(sys.argv[1]); assert len(j[\"layers\"])==3; assert abs(j[\"pixel_ratio_half_rate\"]-9.8)<0.5; assert abs(j[\"display\"][\"half_fov_deg\"]-23.4)<0.05; [l[k] for l in j[\"layers\"] for k in (\"radius_deg\",\"sampling_factor\",\"width_px\",\"height_px\",\"pixels\")]" "$json"'
 
 "$FOVEATE" plan --sweep "$tmp/sweep.csv" >/dev/null

@@ -22,10 +22,11 @@ check "render with --channel" '[[ -s "$tmp/c/frame-0000.png" ]]'
 
 # Every gaze source drives every technique (guenter has meshes, so lodmask runs too).
 "$FOVEATE" gaze synth --seed 4 --seconds 2 --out "$tmp/trace.csv" > /dev/null
-for src in "fixed:0.3,0.4" "synthetic:2" "trace:$tmp/trace.csv" "nearest" "700,-50"; do
+# (A fixed gaze off the image is refused: refusals_test.sh.)
+for src in "fixed:0.3,0.4" "synthetic:2" "trace:$tmp/trace.csv" "nearest" "63,0"; do
   for t in layered logpolar checkerboard lodmask inset; do
     if "$FOVEATE" render --scene guenter --size 64x36 --frames 2 --technique "$t" --gaze "$src" \
-         --out "$tmp/g" > "$tmp/g.txt" 2>&1 && [[ -s "$tmp/g/frame-0001.png" ]]; then :; else
+         --overwrite --out "$tmp/g" > "$tmp/g.txt" 2>&1 && [[ -s "$tmp/g/frame-0001.png" ]]; then :; else
       echo "FAIL: gaze $src with $t: $(cat "$tmp/g.txt")"; fail=1
     fi
   done

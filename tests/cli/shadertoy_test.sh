@@ -40,7 +40,7 @@ near "a shader's own texture2D macro, textureCube and iGlobalTime uniform" "$(px
 render --scene "$data/own_uniforms.glsl" --time 1 --channel "$data/quadrants.png" --out "$tmp/ou" > /dev/null || bad "a shader declaring Shadertoy's uniforms renders"
 near "a shader's own declarations of Shadertoy's uniforms are set" "$(px "$tmp/ou/frame-0000.png" 8,4)" "127 127 127 255"
 for t in native "layered --param msaa=1" logpolar checkerboard inset; do
-  render --scene "$data/short_macros.glsl" --technique $t --out "$tmp/sm" > /dev/null 2>&1 || bad "short macro names with $t"
+  render --scene "$data/short_macros.glsl" --technique $t --overwrite --out "$tmp/sm" > /dev/null 2>&1 || bad "short macro names with $t"
   near "short macro names do not leak into $t" "$(px "$tmp/sm/frame-0000.png" 32,18)" "255 127 0 255"
 done
 
@@ -118,7 +118,7 @@ near "frame 4: Buffer A = 5, Buffer B = 15, iFrame 4" "$(px "$tmp/m/frame-0004.p
 near "an image channel in a project" "$(px "$tmp/m/frame-0004.png" 2,2)" "255 0 0 255"
 near "the supersampled reference runs its own buffers" "$(px "$tmp/m/reference-0004.png" 32,18)" "127 38 102 255"
 for t in "inset" "layered --param half_rate=0" "logpolar"; do
-  render --scene "$mp/counter.json" --frames 5 --technique $t --out "$tmp/t" > /dev/null || bad "multipass with $t"
+  render --scene "$mp/counter.json" --frames 5 --technique $t --overwrite --out "$tmp/t" > /dev/null || bad "multipass with $t"
   near "multipass with $t: buffers once per frame" "$(px "$tmp/t/frame-0004.png" 32,18)" "127 38 102 255"
 done
 cat > "$tmp/cycle.json" <<JSON
@@ -158,7 +158,7 @@ expect_error "--channel with a project" 1 "--channel is for a single shader" ren
 render --scene "$mp/counter.json" --frames 1 --out "$tmp/w" 2> "$tmp/w.err" > /dev/null
 [[ -z "$(grep -v '^foveate: note: ' "$tmp/w.err")" ]] && ok "no warning when a project binds what it samples" || bad "project stderr: $(cat "$tmp/w.err")"
 project "{\"name\": \"Buffer A\", \"file\": \"$mp/count_a.glsl\"}, {\"name\": \"Image\", \"file\": \"$mp/image.glsl\", \"iChannel0\": \"Buffer A\", \"iChannel2\": \"$data/quadrants.png\"}"
-render --scene "$tmp/p.json" --out "$tmp/w" 2> "$tmp/w.err" > /dev/null
+render --scene "$tmp/p.json" --overwrite --out "$tmp/w" 2> "$tmp/w.err" > /dev/null
 grep -q "count_a.glsl: samples iChannel0 but no image or buffer" "$tmp/w.err" && grep -q "image.glsl: samples iChannel1" "$tmp/w.err" \
   && ok "a project's unbound channels are warned per pass" || bad "project warnings: $(cat "$tmp/w.err")"
 exit $fail

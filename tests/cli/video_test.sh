@@ -71,7 +71,7 @@ check "an odd size is padded to 66x38 and says so" '[[ "$(probe "$tmp/odd.mp4")"
 check "bench --side-by-side: native | layered, the measured frames" '[[ "$(probe "$tmp/bench.mp4")" == "h264 128 36 yuv420p 60/1 3" ]] || { echo "  got: $(probe "$tmp/bench.mp4")"; false; }'
 check "bench names the video on stderr" 'grep -q "video: $tmp/bench.mp4: 3 frame(s)" "$tmp/err.txt"'
 "$FOVEATE" bench --scene cheap --size 64x36 --frames 2 --warmup 0 --techniques native,layered,logpolar,inset \
-  --no-metrics --quiet --video "$tmp/grid.mkv" --out "$tmp/b" > /dev/null 2>&1
+  --no-metrics --quiet --video "$tmp/grid.mkv" --overwrite --out "$tmp/b" > /dev/null 2>&1
 check "bench with four techniques: two rows of two (.mkv)" '[[ "$(probe "$tmp/grid.mkv" | cut -d" " -f1-3)" == "h264 128 72" ]] || { echo "  got: $(probe "$tmp/grid.mkv")"; false; }'
 
 expect_error() {  # name, expected text, args...

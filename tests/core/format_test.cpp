@@ -91,3 +91,61 @@ TEST(Downscale, BoxFiltersToTheWidthKeepingTheAspect) {
     for (int x = 0; x < 4; ++x) EXPECT_EQ(small.at(x, y)[0], 100);
   EXPECT_EQ(downscale(img, 16).width, 8);  // never enlarged
 }
+
+namespace {
+std::string point_error(const std::string& text, bool on_image = false) {
+  try {
+    if (on_image) {
+      (void)parse_point_on_image(text, 1280, 720, "--gaze");
+    } else {
+      (void)parse_point(text, 1280, 720, "--gaze");
+    }
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return {};
+}
+}  // namespace
+
+// A decimal point makes a coordinate normalized; pixels are whole numbers.
+TEST(ParsePoint, DecimalPointMeansNormalizedAndOnlyInZeroToOne) {
+  const Vec2d n = parse_point("0.25,1.0", 1280, 720, "--gaze");
+  EXPECT_DOUBLE_EQ(n.x, 320.0);
+  EXPECT_DOUBLE_EQ(n.y, 720.0);
+  const Vec2d p = parse_point("1,1", 1280, 720, "--gaze");
+  EXPECT_DOUBLE_EQ(p.x, 1.0);
+  EXPECT_DOUBLE_EQ(p.y, 1.0);
+  // 1.5 has a decimal point: a normalized value, and out of range (not the pixel 1.5).
+  const std::string e = point_error("1.5,0.5");
+  EXPECT_NE(e.find("--gaze: '1.5,0.5': 1.5 is outside 0.0..1.0"), std::string::npos) << e;
+  EXPECT_NE(e.find("whole numbers"), std::string::npos) << e;
+  EXPECT_NE(point_error("0.5,-0.1").find("-0.1 is outside 0.0..1.0"), std::string::npos);
+  const std::string mixed = point_error("0.5,540");
+  EXPECT_NE(mixed.find("mixes a normalized coordinate (0.5"), std::string::npos) << mixed;
+  EXPECT_NE(mixed.find("in pixels (540)"), std::string::npos) << mixed;
+}
+
+TEST(ParsePoint, OnImageRefusesAPointOffTheImage) {
+  EXPECT_EQ(point_error("1280,720", true), "");
+  EXPECT_EQ(point_error("0,0", true), "");
+  EXPECT_EQ(point_error("1.0,0.0", true), "");
+  const std::string e = point_error("5000,100", true);
+  EXPECT_NE(e.find("--gaze: '5000,100' is (5000, 100) px, outside the 1280x720 image"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(point_error("-1,10", true).find("outside the 1280x720 image"), std::string::npos);
+  EXPECT_EQ(point_error("-1,10", false), "");  // off the screen is a valid point elsewhere
+}
+
+TEST(DidYouMean, SuggestsTheCloseNameOnly) {
+  const std::vector<std::string> scenes{"raymarch", "detail", "cheap", "guenter"};
+  EXPECT_EQ(closest_name("raymrach", scenes), "raymarch");  // two letters swapped
+  EXPECT_EQ(closest_name("Detail", scenes), "detail");      // case
+  EXPECT_EQ(closest_name("chep", scenes), "cheap");         // a letter missing
+  EXPECT_EQ(closest_name("sponza", scenes), "");            // nothing close
+  EXPECT_EQ(closest_name("cheap", scenes), "");             // the name itself
+  EXPECT_EQ(closest_name("--sise", {"--size", "--scene", "--slope"}), "--size");
+  EXPECT_EQ(closest_name("--zzzz", {"--size", "--scene", "--slope"}), "");
+  EXPECT_EQ(did_you_mean("layerd", {"native", "layered", "logpolar"}), "; did you mean 'layered'?");
+  EXPECT_EQ(did_you_mean("xyz", {"native", "layered"}), "");
+}

@@ -313,3 +313,20 @@ TEST(Checkerboard, ThresholdsFromFractionsAndAcuity) {
   EXPECT_NEAR(checkerboard_sampling_factor(1), std::sqrt(4.0 / 3.0), 1e-12);
   EXPECT_THROW(CheckerboardPattern::from_fractions(0, 10, 10), Error);
 }
+
+// Thresholds out of order are refused with their values, so that the user
+// sees which of r1, r2, r3 to change.
+TEST(Checkerboard, DecreasingThresholdsAreRefusedWithTheirValues) {
+  CheckerboardPattern p;
+  p.block = 4;
+  p.thresholds_px = {30, 10, 50};
+  try {
+    p.validate();
+    FAIL() << "decreasing thresholds accepted";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("must not decrease, got 30, 10, 50 px (r2 = 10 is below r1 = 30)"),
+              std::string::npos)
+        << m;
+  }
+}

@@ -163,3 +163,26 @@ TEST(Sweep, SpeedupGrowsWithFieldOfView) {
   EXPECT_GT(r70[0].speedup_a[2], 50.0);
   EXPECT_LT(r70[0].speedup_a[2], 200.0);
 }
+
+// A display too small for the layers is named by the file it came from
+// (what the user has to change), else by its name.
+TEST(Planner, ADisplayTooSmallIsNamed) {
+  Display d = Display::load("desktop-1080p").resized(64, 36);
+  d.width_mm = 2;
+  d.name = "tiny";
+  const auto message = [&] {
+    try {
+      (void)plan_layers(d, AcuityModel::preset("A"), PlannerOptions{});
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message().find("layers: the display 'tiny' (64x36 px,"), std::string::npos)
+      << message();
+  d.source = "/data/tiny.json";
+  EXPECT_NE(message().find("the display /data/tiny.json (64x36 px"), std::string::npos)
+      << message();
+  EXPECT_NE(message().find("too small for 3 layers at a grid step of"), std::string::npos)
+      << message();
+}

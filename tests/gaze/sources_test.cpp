@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "foveate/core/error.hpp"
 #include "foveate/gaze/gaze.hpp"
+#include "foveate/gaze/tracker.hpp"
 
 namespace foveate::gaze {
 namespace {
@@ -66,6 +68,45 @@ TEST(GazeSpec, BadSpecsAreClearErrors) {
   EXPECT_NE(error_of("eyeball", c).find("unknown source 'eyeball'"), std::string::npos);
   EXPECT_EQ(error_of("mouse", c), "gaze source mouse needs a window (foveate view)");
   EXPECT_NE(error_of("nearest", c).find("objects"), std::string::npos);
+}
+
+// A fixed gaze off the image would measure a technique's fallback: refused,
+// when the source is made and before (check_gaze_spec, which bench::validate uses).
+TEST(GazeSpec, FixedPointOffTheImageIsRefused) {
+  const GazeContext c = ctx_1080p();
+  const std::string e = error_of("5000,100", c);
+  EXPECT_NE(e.find("'5000,100' is (5000, 100) px, outside the 1920x1080 image"), std::string::npos)
+      << e;
+  EXPECT_NE(error_of("fixed:1.5,0.5", c).find("1.5 is outside 0.0..1.0"), std::string::npos);
+  EXPECT_NE(error_of("synthtic", c).find("did you mean 'synthetic'?"), std::string::npos);
+  EXPECT_THROW(check_gaze_spec("5000,100", 1280, 720), Error);
+  EXPECT_THROW(check_gaze_spec("fixed:-3,10", 1280, 720), Error);
+  EXPECT_NO_THROW(check_gaze_spec("1280,720", 1280, 720));
+  EXPECT_NO_THROW(check_gaze_spec("synthetic:3", 1280, 720));
+  EXPECT_NO_THROW(check_gaze_spec("", 1280, 720));
+}
+
+// A source whose gaze goes off the image (within what the filter accepts).
+class WanderingSource final : public GazeSource {
+ public:
+  GazeSample sample(double t_s) override {
+    const bool off = t_s >= 0.5;
+    return {t_s, {off ? 1.1 : 0.5, 0.5}, 1.0, true};
+  }
+  std::string describe() const override { return "wandering"; }
+};
+
+TEST(GazeTracker, CountsAndReportsFramesOffTheImage) {
+  GazeTracker tracker(std::make_unique<WanderingSource>(), Display{});
+  int off = 0;
+  for (int k = 0; k < 10; ++k) {
+    (void)tracker.at(k / 10.0);
+    off += tracker.last_off_image() ? 1 : 0;
+  }
+  EXPECT_EQ(off, 5);
+  EXPECT_EQ(tracker.counts().off_image, 5);
+  EXPECT_EQ(tracker.counts().frames, 10);
+  EXPECT_NE(tracker.report().find("5 off the image"), std::string::npos) << tracker.report();
 }
 
 TEST(GazeSpec, SyntheticSeedsAreDeterministic) {

@@ -13,6 +13,7 @@
 
 #include "foveate/bench/environment.hpp"
 #include "foveate/bench/params.hpp"
+#include "foveate/bench/savings.hpp"
 #include "foveate/bench/session.hpp"
 #include "foveate/bench/sweep.hpp"
 #include "foveate/core/image.hpp"
@@ -143,6 +144,14 @@ struct BenchResult {
   std::string video_summary;         ///< one line about the video written (empty = none)
   std::vector<std::string> skipped;  ///< techniques left out of the default list, with the reason
   bool gaze_fallback = false;        ///< the live gaze source never answered (allow_fallback)
+  /// The measured frames (0-based) whose gaze lay off the image or was the
+  /// gaze filter's fallback: every technique ran its fallback there, so
+  /// their figures measure that, not foveation.
+  std::vector<int> fallback_frames;
+  /// The planner's bound at this size for the finest plan the run makes
+  /// (check_savings): under kLittleToSaveBound the techniques have little to
+  /// save, and the table marks them.
+  SavingsCheck savings;
   /// Stereo runs: both eyes' displays (display above is the left eye's).
   std::optional<StereoDisplay> stereo;
   std::array<Vec2d, 2> sample_eye_gaze_px{};  ///< each eye's gaze at the last frame

@@ -62,6 +62,11 @@ class VideoWriter {
 /// with a dark outline and a dark centre dot, sized with the image.
 void mark_gaze(Image& image, Vec2d gaze_px);
 
+/// Writes `name` into the bottom-left corner of a video's tile (white on a
+/// dark box, scaled with the image), so that a side-by-side video says which
+/// technique each tile shows.
+void label_tile(Image& image, const std::string& name);
+
 /// Images of equal size tiled left to right (up to three), or on two rows
 /// (more than three; an empty cell stays black).
 Image tile(const std::vector<const Image*>& images);

@@ -105,6 +105,9 @@ struct Display {
   /// The light it emits, for the perceptual metrics (FovVideoVDP). Head-mounted
   /// presets see no ambient light.
   Photometry photometry{};
+  /// The file it was read from (Display::load), empty for a preset: errors
+  /// about the display name it.
+  std::string source{};
 
   [[nodiscard]] bool head_mounted() const { return fov_h_deg > 0.0 || fov.set(); }
   /// Whether it can be rendered in stereo (four angles and an IPD).

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace foveate {
 
@@ -27,6 +28,12 @@ void write_file_atomic(const std::string& path, std::string_view contents);
 /// reason: an existing file, a name that looks like a file's (frames and
 /// reports go inside the folder), a read-only mount.
 void make_output_dir(const std::string& dir, const std::string& option);
+
+/// The files in the folder `dir` that a foveate run writes there (render's
+/// frame-NNNN.png and reference-NNNN.png; results.json, .csv, .md,
+/// report.html, tune.json, tune.md and params.json of bench, demo, merge and
+/// tune), as paths, sorted; empty when there are none or `dir` is no folder.
+std::vector<std::string> run_outputs_in(const std::string& dir);
 
 /// A limit in MiB from the environment variable `name` (a positive integer),
 /// or `fallback_mib` when it is unset; a bad value is an error naming it.

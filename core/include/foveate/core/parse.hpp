@@ -2,6 +2,7 @@
 // Parsing of the small values users type: numbers, screen points and sizes.
 // Errors name the option they came from.
 #include <string>
+#include <vector>
 
 #include "foveate/core/display.hpp"
 
@@ -18,11 +19,25 @@ std::string format_fixed(double value, int digits);
 /// The whole string as a finite number; false otherwise.
 bool parse_number(const std::string& text, double& out);
 
-/// "X,Y" in pixels, or normalized when both values are written with a decimal
-/// point and lie in [0, 1] (e.g. "0.5,0.5"); returned in pixels of a
-/// width x height screen, origin top-left. Points off the screen are allowed;
-/// throws foveate::Error naming `option` for anything else.
+/// "X,Y" on a width x height screen, returned in pixels, origin top-left. A
+/// coordinate written with a decimal point is normalized (0.0 = the left or
+/// top edge, 1.0 = the right or bottom one) and must lie in [0, 1]; one
+/// without is in pixels. Both must be of one kind ("0.5,540" is refused).
+/// Pixel points off the screen are allowed (within 1e6 px); throws
+/// foveate::Error naming `option` and the reason for anything else.
 Vec2d parse_point(const std::string& text, int width, int height, const std::string& option);
+/// parse_point, and the point must lie on the image: 0 <= x <= width and
+/// 0 <= y <= height (a gaze off the image leaves a foveated technique
+/// nothing to follow). The error names `option`, the point and the size.
+Vec2d parse_point_on_image(const std::string& text, int width, int height,
+                           const std::string& option);
+
+/// The candidate closest to `input` in edit distance (letters swapped,
+/// missing or wrong; case ignored), when it is close enough to be a typo
+/// (at most a third of its length, and 1 for short names), else empty.
+std::string closest_name(const std::string& input, const std::vector<std::string>& candidates);
+/// "; did you mean 'NAME'?" for closest_name, or empty.
+std::string did_you_mean(const std::string& input, const std::vector<std::string>& candidates);
 
 /// A render size in pixels.
 struct PixelSize {

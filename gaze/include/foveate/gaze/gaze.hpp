@@ -55,7 +55,8 @@ struct GazeContext {
 };
 
 /// Parses a gaze spec and creates the source:
-///   fixed:X,Y (or X,Y)  pixels, or normalized when both have a decimal point and lie in [0,1]
+///   fixed:X,Y (or X,Y)  a point on the image: whole numbers are pixels, numbers with a
+///                        decimal point normalized (0.0..1.0; parse_point_on_image)
 ///   trace:FILE           CSV, Pupil gaze_positions.csv or JSON, interpolated at render time
 ///   synthetic[:SEED]     the seeded synthetic viewer
 ///   pupil[:HOST[:PORT]]  live Pupil Capture / Service (default 127.0.0.1:50020)
@@ -63,6 +64,11 @@ struct GazeContext {
 ///   nearest              looks at the nearest scene object (needs ctx.objects)
 /// Throws foveate::Error with a clear message on a bad spec.
 std::unique_ptr<GazeSource> make_gaze_source(const std::string& spec, const GazeContext& ctx);
+
+/// Checks what can be checked of `spec` before a source is made, for an
+/// image of width x height pixels: a fixed point must lie on it. Throws
+/// foveate::Error with the reason.
+void check_gaze_spec(const std::string& spec, int width, int height);
 
 /// The help text for --gaze (one line per form).
 const char* gaze_spec_help();

@@ -17,6 +17,16 @@ namespace foveate {
 
 namespace gaze {
 
+/// What the tracker's frames were: how many followed the gaze asked for, and
+/// how many did not (held, fallen back, off the image).
+struct TrackerCounts {
+  int frames = 0;
+  int holding = 0;   ///< the last gaze held through a blink or dropout
+  int fallback = 0;  ///< the fallback point with a widened fovea
+  int saccades = 0;
+  int off_image = 0;  ///< the gaze given to the frame lay off the image
+};
+
 struct TrackerOptions {
   FilterOptions filter;
   LatencyOptions latency;
@@ -41,11 +51,17 @@ class GazeTracker {
   GazeState at(double time_s, std::optional<double> shown_s = std::nullopt);
   /// The filter's output for the last frame (holding, fallback, saccade).
   [[nodiscard]] const FilteredGaze& last() const;
+  /// Whether the last frame's gaze lay off the image (outside [0, 1]
+  /// normalized): the source looked off the screen, within what the filter
+  /// accepts (FilterOptions::off_screen_limit).
+  [[nodiscard]] bool last_off_image() const;
+  [[nodiscard]] const TrackerCounts& counts() const;
   [[nodiscard]] const GazeSource& source() const;
   [[nodiscard]] const GazeFilter& filter() const;
   [[nodiscard]] const LatencyEstimator& latency() const;
   [[nodiscard]] std::string describe() const;
-  /// What the source and the filter did: dropped samples, holds, fallbacks, latency.
+  /// What the source and the filter did: dropped samples, holds, fallbacks,
+  /// frames off the image, latency.
   [[nodiscard]] std::string report() const;
 
  private:
