@@ -10,6 +10,7 @@
 #include "foveate/bench/tune.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/techniques/palette.hpp"
 #include "report_common.hpp"
 
 namespace foveate::bench {
@@ -250,8 +251,8 @@ void write_tune_report(const TuneResult& r, const std::string& dir) {
     for (size_t i = 0; i < techniques.size(); ++i) {
       for (const TunePoint& p : r.points) {
         if (p.scene != scene || p.technique != techniques[i] || !std::isfinite(p.jod)) continue;
-        pts.push_back({p.technique + " {" + params_text(p.params) + "}", kSeriesColours[i % 10],
-                       p.speedup, p.jod});
+        pts.push_back({p.technique + " {" + params_text(p.params) + "}",
+                       technique_colour_hex(techniques[i]), p.speedup, p.jod});
       }
     }
     h << "<h2>" << scene
