@@ -119,8 +119,9 @@ Benchmarks read_benchmarks(const std::vector<std::string>& given) {
   for (size_t i = 0; i < groups.size(); ++i) {
     if (groups[i].front().options.shard.count > 1) {
       all.results.push_back(bench::merge_shards(groups[i], group_names[i]));
-      all.names.push_back(group_names[i].front() + " and its " +
-                          std::to_string(groups[i].size() - 1) + " other shards");
+      const size_t others = groups[i].size() - 1;
+      all.names.push_back(group_names[i].front() + " and " + std::to_string(others) +
+                          (others == 1 ? " other shard" : " other shards"));
     } else {
       all.results.push_back(std::move(groups[i].front()));
       all.names.push_back(group_names[i].front());

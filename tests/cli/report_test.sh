@@ -150,7 +150,7 @@ have = {(r[0].split()[0], r[1], r[3]) for r in rows if len(r) >= 4}
 want = {("1", "cheap", "layered"), ("2", "raymarch", "logpolar"), ("3", "cheap", "layered"),
         ("3", "cheap", "logpolar")}
 good = not dups and sections == ["r1", "r2", "r3"] and want <= have
-good = good and "other shards" in dom and "not kept in results.json" in dom
+good = good and "k1/results.json and 1 other shard" in dom and "not kept in results.json" in dom
 good = good and os.path.exists(os.path.join(folder, "chart-all-speed.svg")) \
     and os.path.exists(os.path.join(folder, "r2-chart-speed.svg"))
 print(("ok: " if good else "FAIL: ") + f"3 sections {sections}, rows {sorted(have)}, shards merged, ids unique {dups[:3]}, charts beside it")
