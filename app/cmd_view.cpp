@@ -1,11 +1,15 @@
 // foveate view: a live window with a panel (app/viewer/): the gaze follows the
-// mouse unless --gaze says otherwise; technique, parameters, acuity model,
-// display, A/B and split screen against native, measured frame time and
-// speedup. --commands / --script drive the same actions from a script.
+// mouse over the image unless --gaze says otherwise, and holds while the
+// mouse is elsewhere; technique, parameters, acuity model, display, A/B and
+// split screen against native, measured frame time and speedup. The window
+// fits the screen it opens on. --commands / --script drive the same actions
+// from a script.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -38,8 +42,49 @@ struct ViewArgs {
 };
 
 const char* kKeys =
-    "1-9 technique, Space A/B (native), S split screen, O overlay, R reset parameters, "
-    "Esc or Q quit";
+    "1-9 technique, Space A/B (native), S split screen, O overlay, F freeze the gaze, "
+    "R reset parameters, Esc or Q quit";
+
+// Room left on the screen for the window's title bar and borders, which the
+// window's size does not include.
+constexpr int kDecorationPx = 40;
+
+// The work area of the primary monitor (the screen less its task bars), or
+// nullopt when GLFW cannot tell (no display: creating the window then fails
+// with its own message).
+std::optional<PixelSize> screen_work_area() {
+  if (!glfwInit()) return std::nullopt;
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (!monitor) return std::nullopt;
+  int x = 0, y = 0, w = 0, h = 0;
+  glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+  if (w <= 0 || h <= 0) {
+    const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+    if (!mode) return std::nullopt;
+    w = mode->width, h = mode->height;
+  }
+  return PixelSize{w, h};
+}
+
+// The window: the image beside the panel, the image shrunk (never enlarged)
+// until the window fits the work area; and the image's scale.
+struct WindowFit {
+  PixelSize window;
+  double scale = 1.0;
+};
+WindowFit fit_window(int image_w, int image_h, std::optional<PixelSize> area) {
+  constexpr int kMinPanelHeight = 560;
+  WindowFit f{{image_w + viewer::kPanelWidth, std::max(image_h, kMinPanelHeight)}, 1.0};
+  if (!area) return f;
+  const int max_w = area->width, max_h = std::max(area->height - kDecorationPx, 200);
+  f.scale = std::min({1.0, double(max_w - viewer::kPanelWidth) / image_w, double(max_h) / image_h});
+  f.scale = std::max(f.scale, 0.1);
+  const int shown_w = static_cast<int>(std::lround(image_w * f.scale));
+  const int shown_h = static_cast<int>(std::lround(image_h * f.scale));
+  f.window = {std::min(shown_w + viewer::kPanelWidth, max_w),
+              std::min(std::max(shown_h, kMinPanelHeight), max_h)};
+  return f;
+}
 
 /// The window's framebuffer as an opaque image.
 Image grab_window(gpu::Window& w) {
@@ -58,20 +103,26 @@ void run_view(const ViewArgs& a) {
   if (!a.script.empty()) script.emplace(read_file(a.script), "--script " + a.script);
   bench::SessionOptions o = to_session_options(a.session, "now");
   o.window = true;
-  o.window_size = {o.size.width * (o.stereo ? 2 : 1) + kPanelWidth, std::max(o.size.height, 560)};
+  const std::optional<PixelSize> area = screen_work_area();
+  const WindowFit fit = fit_window(o.size.width * (o.stereo ? 2 : 1), o.size.height, area);
+  o.window_size = fit.window;
   with_flag("--technique", [&] { return technique_info(a.technique); });
   // Any technique can be switched to: a value must belong to one of them.
   const bench::ParamOverrides params = session_params(a.session, technique_names());
-  // The mouse is the gaze unless --gaze says otherwise (normalized, top-left),
-  // while it is over the image and not over the panel or the divider.
-  std::optional<Vec2d> mouse;
+  // The mouse is the gaze unless --gaze says otherwise (normalized, top-left):
+  // where it is over the image, or where it last was (MouseGaze).
   if (o.gaze.empty()) o.gaze = "mouse";
+  Viewer* viewer = nullptr;
   bench::SessionCallbacks callbacks = session_callbacks();
-  callbacks.mouse = [&]() -> std::optional<Vec2d> { return mouse; };
+  callbacks.mouse = [&]() -> std::optional<Vec2d> {
+    return viewer ? viewer->mouse_gaze().position() : Vec2d{0.5, 0.5};
+  };
   bench::Session session(o, callbacks);
   gpu::Window& window = *session.window();
   Viewer view(session, a.technique, params, a.session.acuity_preset, a.session.slope);
+  viewer = &view;
   view.set_overlay(a.overlay);
+  view.set_display_scale(fit.scale);
   Ui ui(window);
   std::fprintf(stderr, "foveate view: keys %s; techniques:", kKeys);
   for (size_t i = 0; i < view.available().size(); ++i)
@@ -80,6 +131,8 @@ void run_view(const ViewArgs& a) {
 
   const auto start = std::chrono::steady_clock::now();
   Image last;
+  std::optional<Pointer> scripted;  // a script's pointer, instead of the real one
+  int fitted_height = 0;            // the tallest the window was made for the panel
   for (int frame = 0; a.frames == 0 || frame < a.frames; ++frame) {
     const gpu::Window::Input in = window.poll();
     if (in.should_close) break;
@@ -88,6 +141,8 @@ void run_view(const ViewArgs& a) {
     FrameActions actions;
     if (script) script->begin_frame(view, frame, wall, actions);
     if (actions.quit) break;
+    if (actions.pointer) scripted = actions.pointer;
+    const Pointer pointer = scripted ? *scripted : Pointer{in.mouse_inside, in.mouse_x, in.mouse_y};
     bool quit = false;
     if (!ui.wants_keyboard()) {
       for (int key : in.keys_pressed) {
@@ -96,6 +151,7 @@ void run_view(const ViewArgs& a) {
         if (key == GLFW_KEY_SPACE) view.set_show_native(!view.show_native());
         if (key == GLFW_KEY_S) view.set_split(!view.split());
         if (key == GLFW_KEY_R) view.reset_params();
+        if (key == GLFW_KEY_F) view.mouse_gaze().set_frozen(!view.mouse_gaze().frozen());
         const int n = static_cast<int>(view.available().size());
         if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + std::min(n, 9)) {
           try {
@@ -107,21 +163,25 @@ void run_view(const ViewArgs& a) {
       }
     }
     if (quit) break;
-    const bool over_image = in.mouse_inside && in.mouse_x >= 0 && in.mouse_y >= 0 &&
-                            in.mouse_x < view.width() && in.mouse_y < view.height();
-    if (over_image && !ui.wants_mouse() && !ui.dragging_divider() && session.stereo()) {
+    // The pointer in the image's pixels (the image may be shown scaled).
+    const double mx = pointer.x / view.display_scale(), my = pointer.y / view.display_scale();
+    // (ImGui follows the real mouse: a script's pointer is judged by its place alone.)
+    const bool ui_has_it = !scripted && (ui.wants_mouse() || ui.dragging_divider());
+    const bool over_image = pointer.inside && mx >= 0 && my >= 0 && mx < view.width() &&
+                            my < view.height() && !ui_has_it;
+    if (over_image && session.stereo()) {
       // Over either eye: the combined gaze that puts this eye's gaze (parallel
       // gaze) under the mouse, as a position in the cyclopean view.
       const int W = o.size.width, H = o.size.height;
-      const bool right = in.mouse_x >= W;
+      const bool right = mx >= W;
       const Vec2d axis =
           session.stereo_display().eye(right ? Eye::Right : Eye::Left).principal_point();
-      const double x = in.mouse_x - (right ? W : 0);
-      mouse = Vec2d{(0.5 * W + x - axis.x) / W, (0.5 * H + in.mouse_y - axis.y) / H};
-    } else if (over_image && !ui.wants_mouse() && !ui.dragging_divider()) {
-      mouse = Vec2d{in.mouse_x / view.width(), in.mouse_y / view.height()};
+      const double x = mx - (right ? W : 0);
+      view.mouse_gaze().update(Vec2d{(0.5 * W + x - axis.x) / W, (0.5 * H + my - axis.y) / H});
+    } else if (over_image) {
+      view.mouse_gaze().update(Vec2d{mx / view.width(), my / view.height()});
     } else {
-      mouse.reset();
+      view.mouse_gaze().update(std::nullopt);
     }
     const GazeState gaze = session.gaze().at(wall);
     FrameInput input = session.frame_runner().frame_input(frame);
@@ -129,13 +189,33 @@ void run_view(const ViewArgs& a) {
     session.watchdog().run("frame " + std::to_string(frame) + " (" + view.technique().name() + ")",
                            [&] { view.render_frame(input, gaze, wall); });
     ui.draw(view);
+    if (area) {
+      // Tall enough for the panel's contents where the screen allows (the
+      // panel scrolls beyond), grown as they grow (the graphs appear with the
+      // first measurements) but never past a height already fitted, so a
+      // window the user made smaller stays so.
+      const int want =
+          std::min(static_cast<int>(std::ceil(ui.content_height())), area->height - kDecorationPx);
+      if (want > fitted_height && want > window.framebuffer_height()) {
+        glfwSetWindowSize(static_cast<GLFWwindow*>(window.native_handle()),
+                          window.framebuffer_width(), want);
+      }
+      fitted_height = std::max(fitted_height, want);
+    }
     // Before the swap: the back buffer holds what is about to be shown.
     for (const std::string& path : actions.screenshots) {
       write_png(path, grab_window(window));
       std::fprintf(stderr, "foveate view: wrote %s\n", path.c_str());
     }
     if (!a.screenshot.empty()) last = grab_window(window);
-    for (int i = 0; i < actions.print_state; ++i) std::cout << view.state().dump() << std::endl;
+    for (int i = 0; i < actions.print_state; ++i) {
+      nlohmann::json state = view.state();
+      state["window"] = {{"width", window.framebuffer_width()},
+                         {"height", window.framebuffer_height()}};
+      if (area) state["screen"] = {{"width", area->width}, {"height", area->height}};
+      state["panel"] = {{"content_height", ui.content_height()}, {"scrolls", ui.scrolls()}};
+      std::cout << state.dump() << std::endl;
+    }
     window.swap_buffers();
     char title[256];
     std::snprintf(title, sizeof title, "foveate: %s on %s, %.1f ms", view.technique_name().c_str(),

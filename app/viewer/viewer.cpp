@@ -6,6 +6,8 @@
 
 #include "cli_util.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
+#include "foveate/techniques/palette.hpp"
 
 namespace foveate::app::viewer {
 
@@ -21,7 +23,25 @@ double ema(double old, double sample, double weight, bool first) {
   return first ? sample : (1.0 - weight) * old + weight * sample;
 }
 
+// A word of a shell command line: quoted when the shell would split or
+// expand it.
+std::string shell_word(const std::string& w) {
+  if (!w.empty() && w.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                        "0123456789-_.,/:=+@%") == std::string::npos)
+    return w;
+  std::string q = "'";
+  for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 }  // namespace
+
+void MouseGaze::update(std::optional<Vec2d> on_image) {
+  away_ = !on_image;
+  if (on_image && !frozen_) position_ = *on_image;
+}
+
+const char* MouseGaze::state() const { return frozen_ ? "frozen" : away_ ? "held" : "following"; }
 
 Viewer::Viewer(bench::Session& session, const std::string& technique,
                const bench::ParamOverrides& params, const std::string& preset,
@@ -150,6 +170,61 @@ void Viewer::set_divider(double fraction) {
 
 void Viewer::set_overlay(bool on) { session_.set_overlay(on); }
 
+void Viewer::set_display_scale(double scale) {
+  if (!(scale > 0.0 && scale <= 1.0))
+    throw Error("display scale: expected a fraction in (0, 1], got " + format_number(scale));
+  scale_ = scale;
+}
+
+int Viewer::shown_width() const { return static_cast<int>(std::lround(width() * scale_)); }
+int Viewer::shown_height() const { return static_cast<int>(std::lround(height() * scale_)); }
+
+bool Viewer::gaze_follows_mouse() const { return session_.options().gaze.rfind("mouse", 0) == 0; }
+
+void Viewer::record(const std::string& technique, double ms) {
+  std::vector<float>& h = history_[technique];
+  h.push_back(static_cast<float>(ms));
+  if (h.size() > kHistoryFrames) h.erase(h.begin(), h.end() - kHistoryFrames);
+}
+
+bench::TechniqueParams Viewer::saved_params() const {
+  bench::TechniqueParams out;
+  for (const auto& [t, m] : params_) {
+    if (!m.empty()) out[t] = m;
+  }
+  return out;
+}
+
+void Viewer::save_params(const std::string& path) const {
+  const bench::SessionOptions& o = session_.options();
+  bench::write_params_file(
+      path, saved_params(),
+      "saved by foveate view: scene " + o.scene + " at " + std::to_string(o.size.width) + "x" +
+          std::to_string(o.size.height) + " on " + o.display + ", MAR slope " +
+          format_number(acuity_.slope, 6) + "; the command line: " + command_line());
+}
+
+std::string Viewer::command_line() const {
+  const bench::SessionOptions& o = session_.options();
+  std::string s = "foveate view --scene " + shell_word(o.scene) + " --size " +
+                  std::to_string(o.size.width) + "x" + std::to_string(o.size.height) +
+                  " --display " + shell_word(o.display);
+  if (acuity_preset_ == "custom") {
+    s += " --slope " + format_number(acuity_.slope, 6);
+  } else if (acuity_preset_ != "A") {
+    s += " --acuity " + acuity_preset_;
+  }
+  if (o.margin) s += " --margin " + format_number(*o.margin, 6);
+  if (o.stereo) s += " --stereo";
+  if (!o.gaze.empty() && !gaze_follows_mouse()) s += " --gaze " + shell_word(o.gaze);
+  s += " --technique " + shell_word(name_);
+  for (const auto& [t, m] : params_) {
+    for (const auto& [k, v] : m)
+      s += " --param " + shell_word(t + "." + k + "=" + format_number(v, 6));
+  }
+  return s;
+}
+
 std::optional<double> Viewer::speedup() const {
   if (name_ == "native") return 1.0;
   if (!stats_.native_ms || stats_.frame_ms <= 0.0) return std::nullopt;
@@ -158,13 +233,8 @@ std::optional<double> Viewer::speedup() const {
 
 std::vector<LegendEntry> Viewer::legend() const {
   std::vector<LegendEntry> out;
-  for (const OverlayShape& s : technique_.view->overlay(gaze_)) {
-    const std::string label = s.label.empty() ? "(unlabelled)" : s.label;
-    const bool seen = std::any_of(out.begin(), out.end(), [&](const LegendEntry& e) {
-      return e.label == label && e.r == s.r && e.g == s.g && e.b == s.b;
-    });
-    if (!seen) out.push_back({s.r, s.g, s.b, label});
-  }
+  for (const OverlayShape& s : overlay_legend(technique_.view->overlay(gaze_)))
+    out.push_back({s.r, s.g, s.b, s.label.empty() ? "(unlabelled)" : s.label, s.kind});
   return out;
 }
 
@@ -188,8 +258,11 @@ void Viewer::blit_columns(int x0, int x1) {
   glDisable(GL_FRAMEBUFFER_SRGB);
   const gpu::RenderTarget& out =
       session_.stereo() ? session_.stereo()->output() : session_.frame_runner().output();
-  glBlitNamedFramebuffer(out.framebuffer(), 0, x0, 0, x1, H, x0, fb_h - H, x1, fb_h,
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // Scaled to fit the window when it must be (set_display_scale).
+  auto shown = [&](int x) { return static_cast<GLint>(std::lround(x * scale_)); };
+  glBlitNamedFramebuffer(out.framebuffer(), 0, x0, 0, x1, H, shown(x0), fb_h - shown_height(),
+                         shown(x1), fb_h, GL_COLOR_BUFFER_BIT,
+                         scale_ == 1.0 ? GL_NEAREST : GL_LINEAR);
 }
 
 void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double wall_s) {
@@ -204,6 +277,7 @@ void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double
     stats_.native_ms =
         ema(stats_.native_ms.value_or(ms), ms, kNativeWeight, stats_.native_samples == 0);
     ++stats_.native_samples;
+    record("native", ms);
   };
   // Clear the window (the UI's part) before drawing into it.
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -239,6 +313,7 @@ void Viewer::render_frame(const FrameInput& input, const GazeState& gaze, double
     // The first frames after a (re)build compile shaders and fill history.
     const bool settling = frames_since_build_ <= technique_.view->settle_frames();
     stats_.frame_ms = ema(stats_.frame_ms, ms, kFrameWeight, settling || stats_.frame_ms <= 0);
+    if (!settling) record(name_, ms);
     ++frames_since_build_;
     blit_columns(split_ ? split_px : 0, W);
   }
@@ -288,6 +363,14 @@ nlohmann::json Viewer::state() const {
                {"y_px", gaze_.gaze_px.y}, {"valid", f.valid},
                {"holding", f.holding},    {"fallback", f.fallback},
                {"saccade", f.in_saccade}, {"latency_ms", gaze_.latency_ms}};
+  // Following the mouse: whether it follows, holds its last place on the
+  // image, or is frozen.
+  j["gaze"]["hold"] = gaze_follows_mouse() ? nlohmann::json(mouse_gaze_.state()) : nlohmann::json();
+  j["display_scale"] = scale_;
+  nlohmann::json history = nlohmann::json::object();
+  for (const auto& [t, h] : history_) history[t] = h.size();
+  j["history_frames"] = history;
+  j["command_line"] = command_line();
   if (session_.options().stereo) {
     // The gaze above is the combined (cyclopean) one; here each eye's.
     const std::array<GazeState, 2> eyes = session_.eye_gazes(gaze_);
@@ -301,7 +384,10 @@ nlohmann::json Viewer::state() const {
       return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255));
     };
     std::snprintf(hex, sizeof hex, "#%02x%02x%02x", byte(e.r), byte(e.g), byte(e.b));
-    legend.push_back({{"colour", hex}, {"label", e.label}});
+    const char* shape = e.kind == OverlayShape::Kind::Rect     ? "rectangle"
+                        : e.kind == OverlayShape::Kind::Circle ? "ring"
+                                                               : "dot";
+    legend.push_back({{"colour", hex}, {"label", e.label}, {"shape", shape}});
   }
   j["legend"] = legend;
   return j;

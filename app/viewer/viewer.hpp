@@ -13,16 +13,46 @@
 #include <string>
 #include <vector>
 
+#include "foveate/bench/params_file.hpp"
 #include "foveate/bench/session.hpp"
 #include "foveate/gpu/frame.hpp"
 
 namespace foveate::app::viewer {
 
-/// One entry of the overlay's legend: a colour and what it marks.
+/// One entry of the overlay's legend: a colour, the shape it is drawn as (a
+/// layer's target and its blend ring share a colour) and what it marks.
 struct LegendEntry {
   float r = 1, g = 1, b = 1;
   std::string label;
+  OverlayShape::Kind kind = OverlayShape::Kind::Rect;
 };
+
+/// Where the gaze is while it follows the mouse (no --gaze): the mouse over
+/// the image; held at its last place on the image while the mouse is over
+/// the panel, off the image or dragging the divider, or while frozen (F), so
+/// that reaching for a slider never moves the gaze the image is tuned at
+/// (nor drops it into the gaze filter's fallback). It starts at the centre.
+class MouseGaze {
+ public:
+  /// This frame's pointer: its normalized place on the image (origin
+  /// top-left) when it is over the image and the panel does not have it;
+  /// nullopt otherwise.
+  void update(std::optional<Vec2d> on_image);
+  void set_frozen(bool on) { frozen_ = on; }
+  [[nodiscard]] bool frozen() const { return frozen_; }
+  /// What the gaze source reads (normalized, origin top-left).
+  [[nodiscard]] Vec2d position() const { return position_; }
+  /// "following", "held" (the mouse is not over the image) or "frozen".
+  [[nodiscard]] const char* state() const;
+
+ private:
+  Vec2d position_{0.5, 0.5};
+  bool frozen_ = false;
+  bool away_ = false;
+};
+
+/// Frame times kept for the panel's graphs: the last this many per technique.
+inline constexpr size_t kHistoryFrames = 240;
 
 struct ViewerStats {
   double frame_ms = 0.0;  ///< the shown technique's frame time (smoothed), glFinish-bracketed
@@ -56,6 +86,12 @@ class Viewer {
   void set_overlay(bool on);
   /// Measure native on the next frame (otherwise about once a second).
   void request_native_sample() { next_native_s_ = -1.0; }
+  /// The image is shown at this scale (<= 1) so that the window fits the
+  /// screen; rendering and measuring stay at the output's size.
+  void set_display_scale(double scale);
+  /// Writes every technique's parameters set here or by --param /
+  /// --params-file to `path` as a parameters file (--params-file reads it).
+  void save_params(const std::string& path) const;
 
   // State.
   [[nodiscard]] const std::vector<std::string>& available() const { return available_; }
@@ -79,6 +115,24 @@ class Viewer {
     return session_.options().size.width * (session_.options().stereo ? 2 : 1);
   }
   [[nodiscard]] int height() const { return session_.options().size.height; }
+  [[nodiscard]] double display_scale() const { return scale_; }
+  /// The image's size in the window.
+  [[nodiscard]] int shown_width() const;
+  [[nodiscard]] int shown_height() const;
+  [[nodiscard]] MouseGaze& mouse_gaze() { return mouse_gaze_; }
+  [[nodiscard]] const MouseGaze& mouse_gaze() const { return mouse_gaze_; }
+  /// Whether the gaze follows the mouse (no --gaze given).
+  [[nodiscard]] bool gaze_follows_mouse() const;
+  /// The last frame times (ms) of each technique shown, native's samples
+  /// under "native"; at most kHistoryFrames each, oldest first.
+  [[nodiscard]] const std::map<std::string, std::vector<float>>& history() const {
+    return history_;
+  }
+  /// The parameters set (save_params writes them), by technique.
+  [[nodiscard]] bench::TechniqueParams saved_params() const;
+  /// A `foveate view` command line that starts the viewer as it is now: the
+  /// scene, size, display, acuity, margin, technique and every parameter set.
+  [[nodiscard]] std::string command_line() const;
   [[nodiscard]] bench::Session& session() { return session_; }
 
   /// Renders one frame (wall time `wall_s` since the start) and copies it to
@@ -96,6 +150,7 @@ class Viewer {
   double timed_render(bench::SessionTechnique& t, const FrameInput& input, const GazeState& gaze,
                       bool with_overlay, FrameStats* stats);
   void blit_columns(int x0, int x1);
+  void record(const std::string& technique, double ms);
 
   bench::Session& session_;
   std::vector<std::string> available_;
@@ -115,6 +170,9 @@ class Viewer {
   int frame_ = 0;
   double next_native_s_ = -1.0;
   gpu::FrameTimer timer_;
+  double scale_ = 1.0;
+  MouseGaze mouse_gaze_;
+  std::map<std::string, std::vector<float>> history_;
 };
 
 }  // namespace foveate::app::viewer

@@ -15,11 +15,13 @@ struct Verb {
   int min_args, max_args;
 };
 constexpr Verb kVerbs[] = {
-    {"technique", 1, 1}, {"param", 1, 1},      {"reset", 0, 0},       {"acuity", 1, 1},
-    {"slope", 1, 1},     {"display", 1, 1},    {"ab", 0, 1},          {"split", 0, 1},
-    {"divider", 1, 1},   {"overlay", 0, 1},    {"measure", 0, 0},     {"frames", 1, 1},
-    {"wait", 1, 1},      {"screenshot", 1, 1}, {"print-state", 0, 0}, {"quit", 0, 0},
-    {"quality", 1, 1}};  // quality: acuity's former name
+    {"technique", 1, 1},   {"param", 1, 1},      {"reset", 0, 0},
+    {"acuity", 1, 1},      {"slope", 1, 1},      {"display", 1, 1},
+    {"ab", 0, 1},          {"split", 0, 1},      {"divider", 1, 1},
+    {"overlay", 0, 1},     {"measure", 0, 0},    {"frames", 1, 1},
+    {"wait", 1, 1},        {"screenshot", 1, 1}, {"print-state", 0, 0},
+    {"quit", 0, 0},        {"mouse", 1, 2},      {"freeze", 0, 1},
+    {"save-params", 1, 1}, {"quality", 1, 1}};  // quality: acuity's former name
 
 double number(const std::string& s, const std::string& what) {
   char* end = nullptr;
@@ -53,6 +55,10 @@ const char* Script::help() {
          "  divider X               the split's position, 0..1 of the width\n"
          "  overlay [on|off]        the layer/region borders\n"
          "  measure                 time native on the next frame (otherwise once a second)\n"
+         "  mouse X Y, mouse off    the pointer at window pixel X, Y (or out of the window) from\n"
+         "                          now on, instead of the real mouse\n"
+         "  freeze [on|off]         hold the gaze where it is (key F; no argument: flip)\n"
+         "  save-params FILE        the parameters set, as a file --params-file reads\n"
          "  frames N, wait S        render N frames, or for S seconds, before going on\n"
          "  screenshot FILE         the window (image and panel) as PNG, at the end of the frame\n"
          "  print-state             the state as one JSON line on stdout, at the end of the frame\n"
@@ -106,6 +112,13 @@ Script::Script(const std::string& text, std::string origin) : origin_(std::move(
         if (s < 0 || s > 3600) throw Error("wait: expected 0..3600 seconds");
       } else if (c.verb == "slope" || c.verb == "divider") {
         number(c.args[0], c.verb);
+      } else if (c.verb == "mouse") {
+        if (c.args.size() == 1 && c.args[0] != "off")
+          throw Error("mouse: expected X Y (window pixels) or off");
+        if (c.args.size() == 2) {
+          number(c.args[0], "mouse x");
+          number(c.args[1], "mouse y");
+        }
       } else if (c.verb == "param") {
         const auto eq = c.args[0].find('=');
         if (eq == std::string::npos || eq == 0)
@@ -150,6 +163,10 @@ void Script::run(const Command& c, Viewer& v) {
     v.set_overlay(on_off(a, v.overlay(), "on", "off"));
   } else if (c.verb == "measure") {
     v.request_native_sample();
+  } else if (c.verb == "freeze") {
+    v.mouse_gaze().set_frozen(on_off(a, v.mouse_gaze().frozen(), "on", "off"));
+  } else if (c.verb == "save-params") {
+    v.save_params(a[0]);
   }
 }
 
@@ -182,6 +199,12 @@ void Script::begin_frame(Viewer& viewer, int frame, double wall_s, FrameActions&
     if (c.verb == "quit") {
       out.quit = true;
       return;
+    }
+    if (c.verb == "mouse") {
+      out.pointer = c.args.size() == 2
+                        ? Pointer{true, number(c.args[0], "mouse x"), number(c.args[1], "mouse y")}
+                        : Pointer{};
+      continue;
     }
     try {
       run(c, viewer);

@@ -3,6 +3,7 @@
 // --commands or --script FILE) that drive the same calls as the panel, on
 // frame boundaries, so a test (or a demo) can change parameters, switch
 // techniques, take screenshots and print the state as JSON lines.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,20 @@
 
 namespace foveate::app::viewer {
 
+/// The mouse pointer: whether it is in the window, and where (window pixels,
+/// origin top-left).
+struct Pointer {
+  bool inside = false;
+  double x = 0, y = 0;
+};
+
 /// What the loop does at the end of a frame, after the UI is drawn.
 struct FrameActions {
   std::vector<std::string> screenshots;  ///< write the window's contents here (PNG)
   int print_state = 0;                   ///< print Viewer::state() this many times
   bool quit = false;                     ///< stop before rendering
+  /// A script's pointer, taken instead of the real mouse from this frame on.
+  std::optional<Pointer> pointer;
 };
 
 class Script {

@@ -12,12 +12,19 @@
 #include "backends/imgui_impl_opengl3.h"
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/gl.hpp"
+#include "foveate/techniques/palette.hpp"
 
 namespace foveate::app::viewer {
 
 namespace {
 
 ImVec4 rgb(float r, float g, float b) { return {r, g, b, 1.0f}; }
+
+// A technique's colour, the same as in the reports (techniques/palette.hpp).
+ImVec4 technique_rgb(const std::string& technique) {
+  const Rgb8 c = technique_colour(technique);
+  return rgb(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f);
+}
 
 /// The slider's range: the declared one, with pixel radii up to the output's
 /// diagonal (typing a value with Ctrl+click still reaches the declared range).
@@ -29,7 +36,7 @@ std::pair<double, double> slider_range(const ParamDecl& d, const Viewer& v) {
 
 }  // namespace
 
-Ui::Ui(gpu::Window& window) {
+Ui::Ui(gpu::Window& window) : window_(window.native_handle()) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -147,6 +154,69 @@ void Ui::measurements(Viewer& v) {
                                 : "native is timed on the same frame about once a second, "
                                   "glFinish-bracketed");
   ImGui::PopTextWrapPos();
+  frame_time_graph(v);
+}
+
+// The last frame times of each technique shown, in its colour, and native's
+// samples, on one scale from 0 so that their heights compare.
+void Ui::frame_time_graph(Viewer& v) {
+  const auto& history = v.history();
+  float top = 0;
+  for (const auto& [t, h] : history) {
+    for (float ms : h) top = std::max(top, ms);
+  }
+  if (history.empty() || !(top > 0)) {
+    ImGui::TextDisabled("frame-time graph: no frames measured yet");
+    return;
+  }
+  top *= 1.1f;
+  ImGui::TextDisabled("frame times, last %zu frames each, 0 to %.1f ms:", kHistoryFrames,
+                      static_cast<double>(top));
+  // The technique shown first, then the others measured, native last.
+  std::vector<std::string> order{v.technique_name()};
+  for (const auto& [t, h] : history) {
+    if (t != v.technique_name() && t != "native") order.push_back(t);
+  }
+  if (v.technique_name() != "native") order.push_back("native");
+  for (const std::string& t : order) {
+    const auto it = history.find(t);
+    if (it == history.end() || it->second.empty()) continue;
+    const std::vector<float>& h = it->second;
+    float mean = 0;
+    for (float ms : h) mean += ms;
+    mean /= static_cast<float>(h.size());
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s %.2f ms", t.c_str(), static_cast<double>(mean));
+    ImGui::PushStyleColor(ImGuiCol_PlotLines, technique_rgb(t));
+    ImGui::PushID(t.c_str());
+    ImGui::PlotLines(
+        "##ft", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f, top,
+        ImVec2(ImGui::GetContentRegionAvail().x, t == v.technique_name() ? 54.0f : 30.0f));
+    ImGui::PopID();
+    ImGui::PopStyleColor();
+  }
+}
+
+// Saving the parameters set to a file --params-file reads, and copying a
+// command line that starts the viewer as it is.
+void Ui::save_and_share(Viewer& v) {
+  ImGui::InputText("file", params_path_, sizeof params_path_);
+  if (ImGui::Button("Save parameters")) {
+    const std::string path = params_path_;
+    act([&] {
+      v.save_params(path);
+      done_ = "saved to " + path + " (read it with --params-file)";
+    });
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Copy command line")) {
+    glfwSetClipboardString(static_cast<GLFWwindow*>(window_), v.command_line().c_str());
+    done_ = "command line copied";
+  }
+  if (!done_.empty()) ImGui::TextDisabled("%s", done_.c_str());
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", v.command_line().c_str());
+  ImGui::PopTextWrapPos();
 }
 
 void Ui::legend_and_gaze(Viewer& v) {
@@ -154,8 +224,21 @@ void Ui::legend_and_gaze(Viewer& v) {
     if (!v.overlay()) ImGui::TextDisabled("(overlay off)");
     int k = 0;
     for (const LegendEntry& e : v.legend()) {
+      // The swatch is the shape the overlay draws: a layer's target and its
+      // blend ring share a colour.
       ImGui::PushID(k++);
-      ImGui::ColorButton("##c", rgb(e.r, e.g, e.b), ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      const ImU32 c = ImGui::ColorConvertFloat4ToU32(rgb(e.r, e.g, e.b));
+      ImDrawList* dl = ImGui::GetWindowDrawList();
+      const ImVec2 mid(at.x + 8, at.y + 8);
+      if (e.kind == OverlayShape::Kind::Rect) {
+        dl->AddRect(ImVec2(at.x + 1, at.y + 3), ImVec2(at.x + 15, at.y + 13), c, 0.0f, 0, 2.0f);
+      } else if (e.kind == OverlayShape::Kind::Circle) {
+        dl->AddCircle(mid, 6.0f, c, 0, 2.0f);
+      } else {
+        dl->AddCircleFilled(mid, 4.0f, c);
+      }
+      ImGui::Dummy(ImVec2(16, 16));
       ImGui::SameLine();
       ImGui::TextWrapped("%s", e.label.c_str());
       ImGui::PopID();
@@ -165,6 +248,17 @@ void Ui::legend_and_gaze(Viewer& v) {
     auto& g = v.session().gaze();
     const auto& f = g.last();
     ImGui::TextWrapped("source: %s", g.describe().c_str());
+    if (v.gaze_follows_mouse()) {
+      const std::string hold = v.mouse_gaze().state();
+      if (hold == "following") {
+        ImGui::TextColored(rgb(0.4f, 1, 0.4f), "following the mouse over the image (F freezes)");
+      } else if (hold == "held") {
+        ImGui::TextColored(rgb(1, 0.85f, 0.3f),
+                           "held at its last place on the image (the mouse is away)");
+      } else {
+        ImGui::TextColored(rgb(0.5f, 0.8f, 1), "frozen (F follows the mouse again)");
+      }
+    }
     ImGui::Text("at %.0f, %.0f px, latency %.1f ms", v.gaze().gaze_px.x, v.gaze().gaze_px.y,
                 v.gaze().latency_ms);
     ImGui::Text("filter: %s%s%s",
@@ -207,7 +301,7 @@ void Ui::acuity_and_display(Viewer& v) {
 // The split's divider, draggable on the image, or the A/B flip's label.
 void Ui::draw_divider(Viewer& v) {
   ImGuiIO& io = ImGui::GetIO();
-  const float W = static_cast<float>(v.width()), H = static_cast<float>(v.height());
+  const float W = static_cast<float>(v.shown_width()), H = static_cast<float>(v.shown_height());
   if (v.split()) {
     const float x = static_cast<float>(v.divider()) * W;
     const ImVec2 m = io.MousePos;
@@ -239,7 +333,7 @@ void Ui::draw(Viewer& v) {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   ImGuiIO& io = ImGui::GetIO();
-  const float W = static_cast<float>(v.width());
+  const float W = static_cast<float>(v.shown_width());
 
   ImGui::SetNextWindowPos(ImVec2(W, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(std::max(io.DisplaySize.x - W, 100.0f), io.DisplaySize.y),
@@ -277,8 +371,15 @@ void Ui::draw(Viewer& v) {
   if (ImGui::CollapsingHeader("Acuity and display", ImGuiTreeNodeFlags_DefaultOpen))
     acuity_and_display(v);
   legend_and_gaze(v);
-  ImGui::TextDisabled("keys: 1-9 technique, Space A/B, S split, O overlay, R reset, Esc quit");
+  if (ImGui::CollapsingHeader("Save and share", ImGuiTreeNodeFlags_DefaultOpen)) save_and_share(v);
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled(
+      "keys: 1-9 technique, Space A/B, S split, O overlay, F freeze the gaze, R reset, Esc quit");
+  ImGui::PopTextWrapPos();
   ImGui::PopItemWidth();
+  // The cursor's place is in content coordinates: the height the contents need.
+  content_height_ = ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y;
+  scrolls_ = ImGui::GetScrollMaxY() > 0.0f;
   ImGui::End();
 
   draw_divider(v);

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "foveate/techniques/palette.hpp"
+
 namespace foveate::bench {
 
 double resolve_ms(const TechniqueResult& r) {
@@ -58,5 +60,21 @@ std::vector<std::string> mark_notes(const BenchResult& b) {
   }
   return notes;
 }
+
+std::string run_colour(const BenchResult& b, const TechniqueResult& r) {
+  int variant = 0;
+  for (const TechniqueResult& o : b.results) {
+    if (&o == &r) break;
+    if (o.technique == r.technique) ++variant;
+  }
+  return technique_colour_hex(r.technique, variant);
+}
+
+std::string chart_div(const std::string& id, const std::string& svg) {
+  return "<div class=\"chart\" id=\"" + id + "\">" + svg + "<a class=\"download\" href=\"" + id +
+         ".svg\" download=\"" + id + ".svg\">download SVG</a></div>\n";
+}
+
+std::string cell(double v, int digits) { return format_significant(v, digits); }
 
 }  // namespace foveate::bench

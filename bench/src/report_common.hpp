@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "foveate/bench/bench.hpp"
+#include "foveate/core/format.hpp"
 #include "foveate/core/parse.hpp"
 
 namespace foveate::bench {
@@ -88,9 +89,19 @@ std::vector<std::string> mark_notes(const BenchResult& b);
 std::string html_speed(const BenchResult& b);
 std::string html_quality(const BenchResult& b);
 std::string html_sweep(const BenchResult& b);
-/// Colours of the charts' series, by index.
-inline constexpr const char* kSeriesColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
-                                                 "#ff7f0e", "#8c564b", "#e377c2", "#7f7f7f",
-                                                 "#bcbd22", "#17becf"};
+/// A run's colour in every chart: its technique's (techniques/palette.hpp),
+/// so that a technique looks the same in every report; the second and later
+/// runs of one technique (a sweep's values) take shades of it.
+std::string run_colour(const BenchResult& b, const TechniqueResult& r);
+
+/// A chart on the page: the SVG in a div of class "chart" with `id`, and a
+/// link that downloads it as `id`.svg (the page's script makes the link
+/// from the chart itself, so it works from the page alone; without script
+/// it points at the file write_bench_report puts beside the page).
+std::string chart_div(const std::string& id, const std::string& svg);
+
+/// A number for a table cell: `digits` significant digits
+/// (format_significant), "–" where not measured.
+std::string cell(double v, int digits = 3);
 
 }  // namespace foveate::bench

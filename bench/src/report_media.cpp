@@ -6,9 +6,22 @@
 #include <cstdio>
 #include <sstream>
 
+#include "foveate/core/format.hpp"
 #include "foveate/core/parse.hpp"
+#include "foveate/techniques/palette.hpp"
 
 namespace foveate::bench {
+
+namespace {
+
+std::string shape_colour(const OverlayShape& o) {
+  char colour[32];
+  std::snprintf(colour, sizeof colour, "rgb(%d,%d,%d)", int(std::lround(o.r * 255)),
+                int(std::lround(o.g * 255)), int(std::lround(o.b * 255)));
+  return colour;
+}
+
+}  // namespace
 
 std::string base64(const std::string& in) {
   static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -78,22 +91,19 @@ Worst worst_window(const metrics::Map& error, const Display& display, Vec2d gaze
   return found ? best : best_any;
 }
 
-std::string img_tag(const Image& img, const std::string& alt, int display_width, bool png,
-                    int max_width) {
+std::string img_tag(const Image& img, const std::string& alt, int display_width, int max_width) {
   if (img.empty()) return "<span class=missing>(no image)</span>";
   const Image small = max_width > 0 ? downscale(img, max_width) : img;
   return "<img alt=\"" + alt + "\" width=\"" + std::to_string(display_width) +
-         "\" src=\"data:image/" + (png ? "png" : "jpeg") + ";base64," +
-         base64(png ? encode_png(small) : encode_jpeg(small, 90)) + "\">";
+         "\" src=\"data:image/png;base64," + base64(encode_png(small)) + "\">";
 }
 
-std::string colour_bar(double max, const std::string& unit, int width) {
+std::string colour_bar(double max, const std::string& unit, const std::string& id, int width) {
   std::ostringstream s;
   const int h = 44, left = 10, bar_w = width - 20;
   s << "<svg class=\"colourbar\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width
     << "\" height=\"" << h
-    << "\" font-family=\"sans-serif\" font-size=\"11\"><defs><linearGradient "
-       "id=\"heat\">";
+    << "\" font-family=\"sans-serif\" font-size=\"11\"><defs><linearGradient id=\"" << id << "\">";
   for (int i = 0; i <= 8; ++i) {
     std::uint8_t c[3];
     metrics::heat_color(i / 8.0, c);
@@ -101,12 +111,12 @@ std::string colour_bar(double max, const std::string& unit, int width) {
       << ',' << int(c[2]) << ")\"/>";
   }
   s << "</linearGradient></defs><rect x=\"" << left << "\" y=\"2\" width=\"" << bar_w
-    << "\" height=\"12\" fill=\"url(#heat)\" stroke=\"#444\"/>";
+    << "\" height=\"12\" fill=\"url(#" << id << ")\" stroke=\"#444\"/>";
   for (int i = 0; i <= 4; ++i) {
     const double x = left + bar_w * i / 4.0;
     s << "<line x1=\"" << x << "\" y1=\"14\" x2=\"" << x << "\" y2=\"18\" stroke=\"#444\"/><text "
       << "class=\"tick\" x=\"" << x << "\" y=\"29\" text-anchor=\"middle\">"
-      << format_fixed(max * i / 4.0, 0) << (i == 4 ? "+" : "") << "</text>";
+      << format_significant(max * i / 4.0, 2) << (i == 4 ? "+" : "") << "</text>";
   }
   s << "<text x=\"" << width / 2 << "\" y=\"" << h - 3 << "\" text-anchor=\"middle\">" << unit
     << "</text></svg>";
@@ -122,12 +132,10 @@ std::string overlay_figure(const Image& frame, const std::vector<OverlayShape>& 
   s << "<svg class=\"overlay\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << display_width
     << "\" height=\"" << display_width * h / std::max(w, 1) << "\" viewBox=\"0 0 " << w << ' ' << h
     << "\"><title>" << alt << "</title><image width=\"" << w << "\" height=\"" << h
-    << "\" href=\"data:image/jpeg;base64," << base64(encode_jpeg(small, 85)) << "\"/>";
+    << "\" href=\"data:image/png;base64," << base64(encode_png(small)) << "\"/>";
   const double stroke = std::max(1.5, w / 240.0);  // about 2 px on the page
   for (const OverlayShape& o : shapes) {
-    char colour[32];
-    std::snprintf(colour, sizeof colour, "rgb(%d,%d,%d)", int(o.r * 255), int(o.g * 255),
-                  int(o.b * 255));
+    const std::string colour = shape_colour(o);
     if (o.kind == OverlayShape::Kind::Rect) {
       s << "<rect class=\"shape\" x=\"" << o.x << "\" y=\"" << o.y << "\" width=\"" << o.w
         << "\" height=\"" << o.h << "\"";
@@ -136,12 +144,29 @@ std::string overlay_figure(const Image& frame, const std::vector<OverlayShape>& 
         << (o.kind == OverlayShape::Kind::Dot ? std::max(o.w, 2 * stroke) : o.w) << "\"";
     }
     s << (o.kind == OverlayShape::Kind::Dot
-              ? " fill=\"" + std::string(colour) + "\""
-              : " fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"" +
+              ? " fill=\"" + colour + "\""
+              : " fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"" +
                     format_fixed(stroke, 1) + "\"")
       << "/>";
   }
-  s << "</svg>";
+  s << "</svg><ul class=\"legend\">";
+  for (const OverlayShape& o : overlay_legend(shapes)) {
+    // The swatch is the shape itself: a layer's target (a rectangle) and its
+    // blend ring (a circle) share a colour.
+    const std::string colour = shape_colour(o);
+    s << "<li><svg class=\"swatch\" width=\"16\" height=\"12\">";
+    if (o.kind == OverlayShape::Kind::Rect) {
+      s << "<rect x=\"1.5\" y=\"1.5\" width=\"13\" height=\"9\" fill=\"none\" stroke=\"" << colour
+        << "\" stroke-width=\"2\"/>";
+    } else if (o.kind == OverlayShape::Kind::Circle) {
+      s << "<circle cx=\"8\" cy=\"6\" r=\"4.5\" fill=\"none\" stroke=\"" << colour
+        << "\" stroke-width=\"2\"/>";
+    } else {
+      s << "<circle cx=\"8\" cy=\"6\" r=\"3.5\" fill=\"" << colour << "\"/>";
+    }
+    s << "</svg>" << (o.label.empty() ? "(unlabelled)" : o.label) << "</li>";
+  }
+  s << "</ul>";
   return s.str();
 }
 

@@ -26,15 +26,17 @@ struct Worst {
 Worst worst_window(const metrics::Map& error, const Display& display, Vec2d gaze, int size,
                    double min_ecc);
 
-/// An <img> with the image inline: JPEG (quality 90) unless `png`, first
-/// downscaled to at most `max_width` pixels (0 = as it is).
-std::string img_tag(const Image& img, const std::string& alt, int display_width, bool png = false,
-                    int max_width = 0);
+/// An <img> with the image inline as PNG (lossless: a crop or heat map shows
+/// the technique's own pixels, not a codec's), first downscaled to at most
+/// `max_width` pixels (0 = as it is).
+std::string img_tag(const Image& img, const std::string& alt, int display_width, int max_width = 0);
 /// The heat maps' colour scale (metrics::heat_color) as an SVG bar with ticks
-/// from 0 to `max` in `unit`.
-std::string colour_bar(double max, const std::string& unit, int width = 240);
+/// from 0 to `max` in `unit`; `id` names its gradient, unique in the page.
+std::string colour_bar(double max, const std::string& unit, const std::string& id, int width = 240);
 /// The frame with the technique's overlay shapes (layer or region borders,
-/// the gaze) drawn over it as SVG, `display_width` wide.
+/// the gaze) drawn over it as SVG, `display_width` wide, and below it the
+/// legend: one entry per label, colour and shape (overlay_legend), its swatch
+/// drawn as that shape.
 std::string overlay_figure(const Image& frame, const std::vector<OverlayShape>& shapes,
                            const std::string& alt, int display_width);
 

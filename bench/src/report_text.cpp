@@ -122,7 +122,15 @@ void write_bench_report(const BenchResult& b, const std::string& dir) {
   write_file_atomic((d / "results.json").string(), bench_json(b).dump(2) + "\n");
   write_file_atomic((d / "results.csv").string(), bench_csv(b));
   write_file_atomic((d / "results.md").string(), bench_markdown(b));
-  write_file_atomic((d / "report.html").string(), bench_html(b));
+  write_html_report(bench_html(b), dir);
+}
+
+void write_html_report(const std::string& html, const std::string& dir) {
+  namespace fs = std::filesystem;
+  make_output_dir(dir, "out");
+  const fs::path d(dir);
+  write_file_atomic((d / "report.html").string(), html);
+  for (const auto& [name, svg] : report_figures(html)) write_file_atomic((d / name).string(), svg);
 }
 
 }  // namespace foveate::bench

@@ -54,9 +54,12 @@ void Session::make_context() {
     context_ = gpu::create_headless_context(co);
     return;
   }
-  auto w =
-      gpu::create_window(std::max(options_.size.width, options_.window_size.width),
-                         std::max(options_.size.height, options_.window_size.height), "foveate");
+  // The window's own size when given (the front end shows the output in it,
+  // scaled if need be), else the output's.
+  const bool sized = options_.window_size.width > 0 && options_.window_size.height > 0;
+  auto w = gpu::create_window(sized ? options_.window_size.width : options_.size.width,
+                              sized ? options_.window_size.height : options_.size.height,
+                              "foveate");
   window_ = w.get();
   context_ = std::move(w);
 }

@@ -1,15 +1,18 @@
 // What foveate tune writes (tune.json, tune.md, params.json, report.html),
 // reading it back, and joining shards.
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
+#include "foveate/bench/report.hpp"
 #include "foveate/bench/svg_plot.hpp"
 #include "foveate/bench/tune.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
+#include "foveate/techniques/palette.hpp"
 #include "report_common.hpp"
 
 namespace foveate::bench {
@@ -238,7 +241,9 @@ void write_tune_report(const TuneResult& r, const std::string& dir) {
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>foveate tune"
        "</title><style>body{font-family:sans-serif;margin:24px;max-width:1400px;color:#222}"
        "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px}"
-       ".note{color:#555;font-size:13px}</style></head><body>\n<h1>foveate tune</h1>\n"
+       ".note{color:#555;font-size:13px}.chart>svg{display:block;width:100%;height:auto}"
+       ".chart a.download{font-size:12px;color:#555}</style></head><body>\n"
+       "<h1>foveate tune</h1>\n"
        "<p class=note>Every candidate's speedup over native (same run, interleaved) against its "
        "FovVideoVDP JOD; the ringed points joined by the dashed line are the front over all "
        "techniques. Bound: "
@@ -250,22 +255,27 @@ void write_tune_report(const TuneResult& r, const std::string& dir) {
     for (size_t i = 0; i < techniques.size(); ++i) {
       for (const TunePoint& p : r.points) {
         if (p.scene != scene || p.technique != techniques[i] || !std::isfinite(p.jod)) continue;
-        pts.push_back({p.technique + " {" + params_text(p.params) + "}", kSeriesColours[i % 10],
-                       p.speedup, p.jod});
+        pts.push_back({p.technique + " {" + params_text(p.params) + "}",
+                       technique_colour_hex(techniques[i]), p.speedup, p.jod});
       }
     }
+    // The chart's id names its file beside the page: a scene given as a path
+    // keeps only letters, digits, '-' and '_'.
+    std::string id = "chart-tune-";
+    for (char c : scene) id += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
     h << "<h2>" << scene
       << "</h2>\n<p class=note>native: " << format_fixed(r.native_jod.at(scene), 3)
       << " JOD; the bound: " << format_fixed(r.native_jod.at(scene) - r.options.bound_jod, 3)
-      << ".</p>\n<div class=chart id=\"chart-tune-" << scene << "\">"
-      << svg_scatter(pts,
-                     {"Speed against visible quality on " + scene, "speedup over native (x)",
-                      "FovVideoVDP JOD", false, 900, 520, false},
-                     true)
-      << "</div>\n";
+      << ".</p>\n"
+      << chart_div(id, svg_scatter(pts,
+                                   {.title = "Speed against visible quality on " + scene,
+                                    .x_label = "speedup over native (x)",
+                                    .y_label = "FovVideoVDP JOD",
+                                    .y_from_zero = false},
+                                   true));
   }
   h << "<h2>Chosen</h2>\n<pre>" << tune_markdown(r) << "</pre>\n</body></html>\n";
-  write_file_atomic((d / "report.html").string(), h.str());
+  write_html_report(h.str(), dir);
 }
 
 }  // namespace foveate::bench

@@ -11,6 +11,7 @@ small=(--size 96x54 --frames 2 --warmup 1 --reference ssaa:2)
 
 "$F" tune --scenes cheap --techniques layered,inset --bound 0.5 "${small[@]}" --out "$tmp/t" --quiet > "$tmp/t.md"
 check "tune writes tune.json, tune.md, params.json and report.html" '[[ -s "$tmp/t/tune.json" && -s "$tmp/t/tune.md" && -s "$tmp/t/params.json" && -s "$tmp/t/report.html" ]]'
+check "tune's chart is an SVG file beside its report, linked from it" '[[ -s "$tmp/t/chart-tune-cheap.svg" ]] && grep -q "download=\"chart-tune-cheap.svg\"" "$tmp/t/report.html"'
 check "tune prints each technique's choice" 'grep -q "^| layered |" "$tmp/t.md" && grep -q "^| inset |" "$tmp/t.md"'
 check "tune.json: points with speedup and JOD, native's JOD, a choice per technique" 'python3 -c "
 import json,sys; j=json.load(open(sys.argv[1]))

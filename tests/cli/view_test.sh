@@ -112,7 +112,8 @@ PY
 check "screenshot shows the scene and the panel" python3 - "$tmp/shot.png" "$tmp" <<'PY'
 import sys; sys.path.insert(0, sys.argv[2]); import png
 w, h, px = png.read(sys.argv[1])
-assert (w, h) == (320 + 380, 560), (w, h)
+# The panel's width beside the image; as tall as the panel needs (at least 560).
+assert w == 320 + 380 and h >= 560, (w, h)
 panel = [px(x, y) for x in range(330, w - 20, 2) for y in range(30, h, 2)]
 bg = sum(1 for p in panel if max(abs(c - 15) for c in p) <= 2) / len(panel)
 text = sum(1 for p in panel if min(p) >= 200) / len(panel)
@@ -160,6 +161,87 @@ g = s['gaze']; assert g['source'].startswith('mouse') and abs(g['x_px'] - 80) <=
 else
   echo "FAIL: xdotool is missing (scripts/setup.sh installs it)"; fail=1
 fi
+
+# The gaze holds its last place on the image while the mouse is over the
+# panel or out of the window, and while frozen (F); the state says which.
+xvfb "$FOVEATE" view --scene cheap --size 320x180 --technique layered --commands "
+    mouse 100 50; frames 3; print-state
+    mouse 500 100; frames 3; print-state    # over the panel
+    mouse off; frames 3; print-state        # out of the window
+    mouse 200 120; frames 3; print-state
+    freeze on; mouse 40 30; frames 3; print-state
+    freeze off; frames 3; print-state
+    quit" > "$tmp/hold.jsonl" 2> "$tmp/hold.err" || { echo "FAIL: gaze hold run: $(cat "$tmp/hold.err")"; fail=1; }
+check "the gaze follows the mouse over the image and holds elsewhere or when frozen" python3 - "$tmp/hold.jsonl" <<'PY'
+import json, sys
+s = [json.loads(l) for l in open(sys.argv[1]).read().splitlines()]
+assert len(s) == 6, len(s)
+want = [("following", 100, 50), ("held", 100, 50), ("held", 100, 50), ("following", 200, 120),
+        ("frozen", 200, 120), ("following", 40, 30)]
+for i, (st, (hold, x, y)) in enumerate(zip(s, want)):
+    g = st["gaze"]
+    assert g["hold"] == hold, (i, g)
+    assert abs(g["x_px"] - x) <= 3 and abs(g["y_px"] - y) <= 3, (i, g)
+    assert not g["fallback"], (i, g)  # never the filter's fallback (the centre, a wider fovea)
+PY
+
+# The window fits the screen (Xvfb's 1280x800): at 1600x900 the image is shown
+# scaled beside the panel, and the mouse maps back to the image's pixels.
+xvfb "$FOVEATE" view --scene cheap --size 1600x900 --technique layered --commands "
+    frames 1; mouse 300 200; frames 3; print-state; quit" > "$tmp/fit.jsonl" 2> "$tmp/fit.err" \
+  || { echo "FAIL: fit run: $(cat "$tmp/fit.err")"; fail=1; }
+check "the window fits the screen, the image scaled, the gaze where the mouse is" python3 - "$tmp/fit.jsonl" <<'PY'
+import json, sys
+s = json.loads(open(sys.argv[1]).read().splitlines()[0])
+w, scr, k = s["window"], s["screen"], s["display_scale"]
+assert (scr["width"], scr["height"]) == (1280, 800), scr
+assert w["width"] <= 1280 and w["height"] <= 800, w
+assert 0 < k < 1 and round(1600 * k) + 380 <= 1280, k
+g = s["gaze"]
+assert abs(g["x_px"] - 300 / k) <= 4 and abs(g["y_px"] - 200 / k) <= 4, (g, k)
+# The panel fits the window, or scrolls: never cut off.
+p = s["panel"]
+assert p["content_height"] <= w["height"] or p["scrolls"], (p, w)
+PY
+check "at 320x180 the window is as tall as the panel needs, within the screen" python3 - "$tmp/hold.jsonl" <<'PY'
+import json, sys
+s = json.loads(open(sys.argv[1]).read().splitlines()[0])
+w, p = s["window"], s["panel"]
+assert w["height"] <= 800 and (p["content_height"] <= w["height"] + 1 or (w["height"] >= 760 and p["scrolls"])), (w, p)
+PY
+
+# Frame-time graphs, the parameters saved to a file that --params-file reads,
+# and the command line the panel copies, which starts the same viewer.
+xvfb "$FOVEATE" view --scene cheap --size 320x180 --technique layered --slope 0.02 --commands "
+    param layers=2; param logpolar.sigma=1.5; measure; frames 12
+    save-params $tmp/params.json; print-state; quit" > "$tmp/save.jsonl" 2> "$tmp/save.err" \
+  || { echo "FAIL: save run: $(cat "$tmp/save.err")"; fail=1; }
+check "the parameters file holds what was set; the graphs have frames" python3 - "$tmp/save.jsonl" "$tmp/params.json" <<'PY'
+import json, sys
+s = json.loads(open(sys.argv[1]).read().splitlines()[0])
+f = json.load(open(sys.argv[2]))
+assert f["schema"] == "foveate-params/1", f
+assert f["techniques"]["layered"]["layers"] == 2 and f["techniques"]["logpolar"]["sigma"] == 1.5, f
+h = s["history_frames"]
+assert h.get("layered", 0) >= 2 and h.get("native", 0) >= 1, h
+c = s["command_line"]
+for part in ["--scene cheap", "--size 320x180", "--slope 0.02", "--technique layered",
+             "--param layered.layers=2", "--param logpolar.sigma=1.5"]:
+    assert part in c, (part, c)
+PY
+xvfb "$FOVEATE" view --scene cheap --size 320x180 --technique checkerboard --params-file "$tmp/params.json" \
+  --commands "frames 1; technique layered; frames 1; print-state; quit" > "$tmp/load.jsonl" 2> "$tmp/load.err"
+check "--params-file reads the saved file" python3 -c "
+import json; s = json.loads(open('$tmp/load.jsonl').read().splitlines()[0])
+assert s['overrides_by_technique']['layered'] == {'layers': 2} and s['overrides_by_technique']['logpolar'] == {'sigma': 1.5}, s"
+cmd=$(python3 -c "import json; print(json.loads(open('$tmp/save.jsonl').read().splitlines()[0])['command_line'])")
+eval "xvfb \"\$FOVEATE\" ${cmd#foveate } --commands 'frames 1; print-state; quit'" > "$tmp/again.jsonl" 2> "$tmp/again.err"
+check "the copied command line starts the same viewer" python3 - "$tmp/save.jsonl" "$tmp/again.jsonl" <<'PY'
+import json, sys
+a, b = (json.loads(open(p).read().splitlines()[0]) for p in sys.argv[1:3])
+for k in ["technique", "slope", "overrides_by_technique", "display", "command_line"]:
+    assert a[k] == b[k], (k, a[k], b[k])
+PY
 
 # Refusals: a technique the scene cannot run; a bad command; a bad value.
 err=$(xvfb "$FOVEATE" view --scene cheap --size 160x90 --technique lodmask --frames 1 2>&1); rc=$?

@@ -34,7 +34,9 @@ struct SessionOptions {
   bool mouse_down = false;
   /// Open a window (GLFW) instead of a headless context; the output is shown in it.
   bool window = false;
-  /// The window's size when larger than `size` (room for a UI beside the output).
+  /// The window's size (0 x 0: the output's): room for a UI beside the
+  /// output, or less than the output where the screen is smaller (the front
+  /// end then shows the output scaled).
   PixelSize window_size{0, 0};
   /// A frame running longer than this stops the run (0 = off; FrameWatchdog).
   double frame_timeout_s = kDefaultFrameTimeoutS;
