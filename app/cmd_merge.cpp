@@ -83,6 +83,7 @@ void run_merge(const MergeArgs& a) {
 struct ReportArgs {
   std::vector<std::string> results;
   std::string out;
+  bool overwrite = false;
 };
 
 // The benchmarks given, with the shards of one benchmark merged into one (in
@@ -135,7 +136,7 @@ void run_report(const ReportArgs& a) {
   const Benchmarks b = read_benchmarks(a.results);
   const std::string html = b.results.size() == 1 ? bench::bench_html(b.results.front())
                                                  : bench::combined_html(b.results, b.names);
-  const OutputDirLock out_lock(a.out, "--out");
+  const OutputDirLock out_lock(a.out, "--out", a.overwrite);
   bench::write_html_report(html, a.out);
   if (!quiet()) {
     std::cerr << "wrote " << (std::filesystem::path(a.out) / "report.html").string() << " ("
@@ -174,6 +175,7 @@ void register_report(CLI::App& app) {
   sub->add_option("results", a->results, "Each benchmark's --out folder (or its results.json)")
       ->required();
   sub->add_option("--out", a->out, "Output folder of report.html and its charts")->required();
+  add_overwrite_flag(sub, a->overwrite);
   sub->callback([a] { run_report(*a); });
 }
 

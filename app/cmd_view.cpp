@@ -93,6 +93,65 @@ Image grab_window(gpu::Window& w) {
   return img;
 }
 
+/// The viewer's keys; true when one asks to quit.
+bool handle_keys(viewer::Viewer& view, const std::vector<int>& keys) {
+  bool quit = false;
+  for (int key : keys) {
+    if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) quit = true;
+    if (key == GLFW_KEY_O) view.set_overlay(!view.overlay());
+    if (key == GLFW_KEY_SPACE) view.set_show_native(!view.show_native());
+    if (key == GLFW_KEY_S) view.set_split(!view.split());
+    if (key == GLFW_KEY_R) view.reset_params();
+    if (key == GLFW_KEY_F) view.mouse_gaze().set_frozen(!view.mouse_gaze().frozen());
+    const int n = static_cast<int>(view.available().size());
+    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + std::min(n, 9)) {
+      try {
+        view.set_technique(view.available()[static_cast<size_t>(key - GLFW_KEY_1)]);
+      } catch (const Error& e) {
+        std::fprintf(stderr, "foveate view: %s\n", e.what());
+      }
+    }
+  }
+  return quit;
+}
+
+/// The mouse gaze follows the pointer over the image (in the image's pixels:
+/// it may be shown scaled), and holds where the panel or nothing is under it.
+void follow_pointer(viewer::Viewer& view, bench::Session& session, const viewer::Pointer& pointer,
+                    bool ui_has_it) {
+  const double mx = pointer.x / view.display_scale(), my = pointer.y / view.display_scale();
+  const bool over_image =
+      pointer.inside && mx >= 0 && my >= 0 && mx < view.width() && my < view.height() && !ui_has_it;
+  if (over_image && session.stereo()) {
+    // Over either eye: the combined gaze that puts this eye's gaze (parallel
+    // gaze) under the mouse, as a position in the cyclopean view.
+    const int W = view.width() / 2, H = view.height();
+    const bool right = mx >= W;
+    const Vec2d axis =
+        session.stereo_display().eye(right ? Eye::Right : Eye::Left).principal_point();
+    const double x = mx - (right ? W : 0);
+    view.mouse_gaze().update(Vec2d{(0.5 * W + x - axis.x) / W, (0.5 * H + my - axis.y) / H});
+  } else if (over_image) {
+    view.mouse_gaze().update(Vec2d{mx / view.width(), my / view.height()});
+  } else {
+    view.mouse_gaze().update(std::nullopt);
+  }
+}
+
+/// The window made tall enough for the panel's contents where the screen
+/// allows (the panel scrolls beyond), grown as they grow (the graphs appear
+/// with the first measurements) but never past a height already fitted, so
+/// a window the user made smaller stays so.
+void fit_panel(gpu::Window& window, viewer::Ui& ui, PixelSize area, int& fitted_height) {
+  const int want =
+      std::min(static_cast<int>(std::ceil(ui.content_height())), area.height - kDecorationPx);
+  if (want > fitted_height && want > window.framebuffer_height()) {
+    glfwSetWindowSize(static_cast<GLFWwindow*>(window.native_handle()), window.framebuffer_width(),
+                      want);
+  }
+  fitted_height = std::max(fitted_height, want);
+}
+
 void run_view(const ViewArgs& a) {
   using namespace viewer;
   if (a.frames < 0) throw Error("--frames: must be >= 0 (0 = until the window closes)");
@@ -143,65 +202,17 @@ void run_view(const ViewArgs& a) {
     if (actions.quit) break;
     if (actions.pointer) scripted = actions.pointer;
     const Pointer pointer = scripted ? *scripted : Pointer{in.mouse_inside, in.mouse_x, in.mouse_y};
-    bool quit = false;
-    if (!ui.wants_keyboard()) {
-      for (int key : in.keys_pressed) {
-        if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) quit = true;
-        if (key == GLFW_KEY_O) view.set_overlay(!view.overlay());
-        if (key == GLFW_KEY_SPACE) view.set_show_native(!view.show_native());
-        if (key == GLFW_KEY_S) view.set_split(!view.split());
-        if (key == GLFW_KEY_R) view.reset_params();
-        if (key == GLFW_KEY_F) view.mouse_gaze().set_frozen(!view.mouse_gaze().frozen());
-        const int n = static_cast<int>(view.available().size());
-        if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + std::min(n, 9)) {
-          try {
-            view.set_technique(view.available()[static_cast<size_t>(key - GLFW_KEY_1)]);
-          } catch (const Error& e) {
-            std::fprintf(stderr, "foveate view: %s\n", e.what());
-          }
-        }
-      }
-    }
-    if (quit) break;
-    // The pointer in the image's pixels (the image may be shown scaled).
-    const double mx = pointer.x / view.display_scale(), my = pointer.y / view.display_scale();
+    if (!ui.wants_keyboard() && handle_keys(view, in.keys_pressed)) break;
     // (ImGui follows the real mouse: a script's pointer is judged by its place alone.)
     const bool ui_has_it = !scripted && (ui.wants_mouse() || ui.dragging_divider());
-    const bool over_image = pointer.inside && mx >= 0 && my >= 0 && mx < view.width() &&
-                            my < view.height() && !ui_has_it;
-    if (over_image && session.stereo()) {
-      // Over either eye: the combined gaze that puts this eye's gaze (parallel
-      // gaze) under the mouse, as a position in the cyclopean view.
-      const int W = o.size.width, H = o.size.height;
-      const bool right = mx >= W;
-      const Vec2d axis =
-          session.stereo_display().eye(right ? Eye::Right : Eye::Left).principal_point();
-      const double x = mx - (right ? W : 0);
-      view.mouse_gaze().update(Vec2d{(0.5 * W + x - axis.x) / W, (0.5 * H + my - axis.y) / H});
-    } else if (over_image) {
-      view.mouse_gaze().update(Vec2d{mx / view.width(), my / view.height()});
-    } else {
-      view.mouse_gaze().update(std::nullopt);
-    }
+    follow_pointer(view, session, pointer, ui_has_it);
     const GazeState gaze = session.gaze().at(wall);
     FrameInput input = session.frame_runner().frame_input(frame);
     input.time_s = o.start_time_s + wall;  // the viewer runs on the wall clock
     session.watchdog().run("frame " + std::to_string(frame) + " (" + view.technique().name() + ")",
                            [&] { view.render_frame(input, gaze, wall); });
     ui.draw(view);
-    if (area) {
-      // Tall enough for the panel's contents where the screen allows (the
-      // panel scrolls beyond), grown as they grow (the graphs appear with the
-      // first measurements) but never past a height already fitted, so a
-      // window the user made smaller stays so.
-      const int want =
-          std::min(static_cast<int>(std::ceil(ui.content_height())), area->height - kDecorationPx);
-      if (want > fitted_height && want > window.framebuffer_height()) {
-        glfwSetWindowSize(static_cast<GLFWwindow*>(window.native_handle()),
-                          window.framebuffer_width(), want);
-      }
-      fitted_height = std::max(fitted_height, want);
-    }
+    if (area) fit_panel(window, ui, *area, fitted_height);
     // Before the swap: the back buffer holds what is about to be shown.
     for (const std::string& path : actions.screenshots) {
       write_png(path, grab_window(window));
