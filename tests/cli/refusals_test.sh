@@ -5,11 +5,7 @@
 # source that leaves the image during a run, an --out folder holding another
 # run's output, and the messages that must name their input.
 set -u
-fail=0
-check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-F=$FOVEATE
-run() { out=$("$F" "$@" 2> "$tmp/err.txt"); rc=$?; err=$(cat "$tmp/err.txt"); }
+. "$(dirname "$0")/cli_lib.sh"
 
 # --- A fixed gaze off the image is a user error in render, bench and view.
 run render --scene cheap --size 64x36 --gaze 5000,100 --no-write

@@ -4,11 +4,7 @@
 # "did you mean" for misspelled options, scenes and techniques, progress
 # only for work longer than a second, a text legend in the rates preview.
 set -u
-fail=0
-check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; else echo "ok: $1"; fi; }
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-F=$FOVEATE
-run() { out=$("$F" "$@" 2> "$tmp/err.txt"); rc=$?; err=$(cat "$tmp/err.txt"); }
+. "$(dirname "$0")/cli_lib.sh"
 umask 022
 
 # --- File modes: a video like the PNG frames beside it.
