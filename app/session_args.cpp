@@ -8,6 +8,7 @@
 #include "foveate/core/parse.hpp"
 #include "foveate/gaze/gaze.hpp"
 #include "foveate/scenes/scene.hpp"
+#include "foveate/techniques/technique.hpp"
 #include "photometry_flags.hpp"
 
 namespace foveate::app {
@@ -54,6 +55,16 @@ bench::ParamOverrides session_params(const SessionArgs& a,
   const bench::ParamOverrides given = parse_params(a.params);
   // What --param says must apply to a technique run (the library names the field).
   given.validate(techniques);
+  // The command line overrides the file: a key given for every technique
+  // (--param KEY=V, or --margin) replaces the file's values of that key for
+  // each technique, which would otherwise win as the more specific.
+  const auto drop_from_file = [&](const std::string& key) {
+    for (auto& [technique, values] : out.per_technique) values.erase(key);
+  };
+  if (a.margin) drop_from_file(kPlanMarginKey);
+  if (const auto all = given.per_technique.find(""); all != given.per_technique.end()) {
+    for (const auto& [key, v] : all->second) drop_from_file(key);
+  }
   for (const auto& [technique, values] : given.per_technique) {
     for (const auto& [key, v] : values) out.per_technique[technique][key] = v;
   }
@@ -96,9 +107,9 @@ void add_plan_options(CLI::App* sub, SessionArgs& a) {
   sub->add_option("--margin", a.margin,
                   "Plan every technique for an acuity this many times finer (slope and foveal "
                   "MAR divided by it, 1 to 4) than the one the metrics judge by: 1 = each "
-                  "paper's plan; default: each technique's own margin, the least at which its "
-                  "error stays within native's + 1 code (see 'foveate techniques'); the same as "
-                  "--param margin=K");
+                  "paper's plan; default: each technique's own margin, the one 'foveate tune' "
+                  "chose as its fastest within 0.25 JOD of native (see 'foveate techniques'); "
+                  "the same as --param margin=K");
   sub->add_option("--param", a.params,
                   "Technique parameter KEY=VALUE or TECHNIQUE.KEY=VALUE (repeatable; see "
                   "'foveate techniques')");

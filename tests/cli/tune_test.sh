@@ -30,6 +30,16 @@ check "--param overrides --params-file" 'python3 -c "
 import json,sys; b=json.load(open(sys.argv[1]))
 assert [r for r in b[\"results\"] if r[\"technique\"]==\"layered\"][0][\"parameters\"][\"margin\"] == 3
 " "$tmp/b2/results.json"'
+"$F" bench --scene cheap --size 64x36 --frames 1 --techniques native,layered,inset --params-file "$tmp/t/params.json" --margin 1.75 --out "$tmp/b3" --quiet > /dev/null
+check "--margin overrides every technique's margin in --params-file" 'python3 -c "
+import json,sys; b=json.load(open(sys.argv[1]))
+assert all(r[\"parameters\"][\"margin\"] == 1.75 for r in b[\"results\"] if r[\"technique\"] != \"native\"), b[\"results\"]
+" "$tmp/b3/results.json"'
+"$F" bench --scene cheap --size 64x36 --frames 1 --techniques native,layered --params-file "$tmp/t/params.json" --param margin=3.5 --out "$tmp/b4" --quiet > /dev/null
+check "--param KEY=V for every technique overrides the file's TECHNIQUE.KEY" 'python3 -c "
+import json,sys; b=json.load(open(sys.argv[1]))
+assert [r for r in b[\"results\"] if r[\"technique\"]==\"layered\"][0][\"parameters\"][\"margin\"] == 3.5
+" "$tmp/b4/results.json"'
 
 # Shards of a benchmark, merged: the runs of one run, native's JOD and each run's.
 "$F" bench --scene cheap "${small[@]}" --techniques native,layered,inset,checkerboard --out "$tmp/whole" --quiet > /dev/null
