@@ -17,6 +17,7 @@
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/core/planner.hpp"
+#include "foveate/techniques/technique.hpp"
 #include "progress.hpp"
 #include "session_args.hpp"
 
@@ -33,7 +34,7 @@ struct PlanArgs {
   std::string acuity_preset;  ///< --acuity (--quality): "A", "B" or empty
   std::optional<double> slope;
   std::optional<double> margin;  ///< unset: layered's own planning margin
-  int layers = 3;
+  std::optional<int> layers;     ///< unset: layered's own with its margin, else the paper's 3
   std::string gaze;
   std::string size = kDefaultSize;
   std::optional<double> fixed_s2;
@@ -185,13 +186,20 @@ GazePlan make_gaze_plan(const PlanArgs& a) {
   const double margin = a.margin.value_or(bench::own_plan_margin("layered"));
   const AcuityModel planned = acuity.finer(margin);
   note_savings(display, acuity, margin);
+  // The layer count goes with the margin: layered's own with its own margin,
+  // the paper's three with a margin given.
+  int own_layers = 3;
+  for (const ParamDecl& p : technique_info("layered").params) {
+    if (p.key == "layers") own_layers = static_cast<int>(p.value);
+  }
+  const int layers = a.layers.value_or(a.margin ? 3 : own_layers);
   PlannerOptions opt;
-  opt.layers = a.layers;
+  opt.layers = layers;
   opt.grid_step_deg = a.step;
   opt.fixed_s2 = a.fixed_s2;
   opt.max_grid_points = a.max_grid;
   if (a.half_rate_weights) {
-    opt.weights.assign(a.layers, 0.5);
+    opt.weights.assign(static_cast<size_t>(layers), 0.5);
     opt.weights[0] = 1.0;
   }
   const Vec2d gaze =
@@ -321,7 +329,9 @@ void register_plan(CLI::App& app) {
                   "the layered technique's own planning margin (see 'foveate techniques'), so "
                   "that the plan is the one 'render --technique layered' renders (not used by "
                   "--sweep, which reproduces the paper's figures)");
-  sub->add_option("--layers", a->layers, "Number of layers n, 1..6")->capture_default_str();
+  sub->add_option("--layers", a->layers,
+                  "Number of layers n, 1..6; default: the layered technique's own (see 'foveate "
+                  "techniques'), or with --margin the paper's 3");
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre (with a "
                   "lens: the plan then holds for any gaze)");

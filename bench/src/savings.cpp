@@ -64,6 +64,7 @@ SavingsCheck check_savings(const Display& display, const AcuityModel& acuity, do
           "native or more";
   // The smallest common width, same aspect and field of view, that leaves
   // something to save.
+  bool suggested = false;
   for (int width : {1280, 1920, 2560, 3840, 7680}) {
     if (width <= display.width_px) continue;
     const int height = std::max(
@@ -72,10 +73,12 @@ SavingsCheck check_savings(const Display& display, const AcuityModel& acuity, do
     if (b >= kLittleToSaveBound) {
       note += "; try {size} " + std::to_string(width) + "x" + std::to_string(height) + " (bound " +
               format_fixed(b, 1) + "x)";
+      suggested = true;
       break;
     }
   }
-  note += " or a display with more pixels per degree or a wider field of view (e.g. hmd-quest3)";
+  note += std::string(suggested ? " or" : "; try") +
+          " a display with more pixels per degree or a wider field of view (e.g. hmd-quest3)";
   c.note = {note, {"size"}};
   return c;
 }
