@@ -309,8 +309,7 @@ void register_rates(CLI::App& app) {
   sub->add_option("--margin", a->margin,
                   "Plan for an acuity this many times finer (1 to 4; 1 = two samples per MAR "
                   "cycle of the model itself); default: the vrs technique's own planning margin, "
-                  "the least at which its error stays within native's + 1 code (see 'foveate "
-                  "techniques')");
+                  "the one 'foveate tune' chose at perceptual parity (see 'foveate techniques')");
   sub->add_option("--latency-ms", a->latency_ms,
                   "Gaze latency: the fovea grows by latency x --max-saccade degrees")
       ->capture_default_str();

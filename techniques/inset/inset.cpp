@@ -143,7 +143,7 @@ TechniqueInfo inset_info() {
       "inset sized by the latency-aware formula, blended with a vignette.";
   t.source = "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015";
   t.params = {
-      plan_margin_param(1.0),
+      plan_margin_param(1.25),
       tuned(param("scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", "",
                   ParamType::Real, 0.05, 1.0, 0.5),
             {0.35, 0.5, 0.65}),

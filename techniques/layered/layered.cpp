@@ -304,9 +304,9 @@ TechniqueInfo layered_info() {
       "layers at half rate.";
   t.source = "Guenter et al., Foveated 3D Graphics, 2012";
   t.params = {
-      plan_margin_param(2.0),
+      plan_margin_param(1.5),
       tuned(param("layers", "number of layers n (1 = native)", "", ParamType::Integer, 1,
-                  layered::kMaxLayers, 3),
+                  layered::kMaxLayers, 2),
             {2, 3, 4}),
       tuned(
           param(
@@ -319,7 +319,7 @@ TechniqueInfo layered_info() {
                   "update outer layers at half rate, staggered, where a stale layer still lines up "
                   "(warped to the camera on mesh scenes, or a still image); a moving image without "
                   "camera and depth updates every layer every frame",
-                  "", ParamType::Boolean, 0, 1, 1),
+                  "", ParamType::Boolean, 0, 1, 0),
             {0, 1}),
       param("jitter", "jitter subsampled layers over their own updates (Halton 2, 3)", "",
             ParamType::Boolean, 0, 1, 1),

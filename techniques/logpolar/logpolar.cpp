@@ -404,7 +404,7 @@ TechniqueInfo logpolar_info() {
       "growing with eccentricity).";
   t.source = "Meng, Du, Zwicker, Varshney, Kernel Foveated Rendering, 2018";
   t.params = {
-      plan_margin_param(1.75),
+      plan_margin_param(2.5),
       param("fovea_deg",
             "smallest radius of the native disc at the gaze (it also reaches out to where the "
             "buffer's samples are no closer together than native pixels)",
@@ -433,14 +433,11 @@ TechniqueInfo logpolar_info() {
                 "alone)",
                 "texels", ParamType::Real, 0.0, 3.0, 0.4),
           {0, 0.4, 0.8}),
-      tuned(
-          param(
-              "temporal",
-              "weight of the reprojected history in the buffer's temporal antialiasing (the "
-              "paper's first level), with sub-texel jitter; 0 = off, the default: against the 4x4 "
-              "supersampled reference it adds more acuity error than it removes (docs/fidelity.md)",
-              "", ParamType::Real, 0.0, 0.95, 0.0),
-          {0, 0.5}),
+      tuned(param("temporal",
+                  "weight of the reprojected history in the buffer's temporal antialiasing (the "
+                  "paper's first level), with sub-texel jitter; 0 = off",
+                  "", ParamType::Real, 0.0, 0.95, 0.5),
+            {0, 0.5}),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "blur",
                       "inverse",  "inverse_fovea",      "inverse_outer"};

@@ -413,7 +413,7 @@ TechniqueInfo marwarp_info() {
                   "prefilter in the buffer before the inverse mapping's bilinear read: a kernel "
                   "1 + 4a at the texel, -a at its four neighbours, which lifts the response the "
                   "bilinear read attenuates below the cutoff (0 = no prefilter pass)",
-                  "", ParamType::Real, 0.0, 0.5, 0.12),
+                  "", ParamType::Real, 0.0, 0.5, 0.0),
             {0.0, 0.12, 0.25}),
       param("samples",
             "samples per texel, averaged in linear light (a box prefilter over the texel; 1, 2 "

@@ -229,6 +229,7 @@ TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
   o.passes = true;
   o.image_metrics = false;
   o.frames = 3;
+  o.params.set("layered.half_rate", 1);
   const BenchResult r = run(o);
   // layered settles in 6 frames with half-rate layers (asked for 1).
   EXPECT_EQ(r.warmup, 6);

@@ -18,7 +18,7 @@ check() {  # check NAME COMMAND...
 xvfb "$FOVEATE" view --scene cheap --size 320x180 --gaze 0.5,0.5 --technique layered \
   --param layered.transition=0.3 --param logpolar.blur=0.5 --commands "
     frames 2
-    param layers=2            # the current technique's (layered)
+    param layers=3            # the current technique's (layered)
     technique logpolar
     print-state
     param sigma=1.5
@@ -50,17 +50,17 @@ s1, s2, s3, s4, s5 = states
 # 1: logpolar keeps its --param; layered's script value is remembered.
 assert s1["technique"] == "logpolar", s1["technique"]
 assert s1["params"]["blur"] == 0.5, s1["params"]
-assert s1["overrides_by_technique"]["layered"] == {"layers": 2, "transition": 0.3}, s1
-# 2: back on layered: the script's layers=2 and --param transition=0.3 both kept.
+assert s1["overrides_by_technique"]["layered"] == {"layers": 3, "transition": 0.3}, s1
+# 2: back on layered: the script's layers=3 and --param transition=0.3 both kept.
 assert s2["technique"] == "layered"
-assert s2["params"]["layers"] == 2 and s2["params"]["transition"] == 0.3, s2["params"]
-assert s2["overrides"] == {"layers": 2, "transition": 0.3}, s2["overrides"]
+assert s2["params"]["layers"] == 3 and s2["params"]["transition"] == 0.3, s2["params"]
+assert s2["overrides"] == {"layers": 3, "transition": 0.3}, s2["overrides"]
 assert s2["frame_ms"] > 0 and s2["native_ms"] > 0, s2
 assert abs(s2["speedup"] - s2["native_ms"] / s2["frame_ms"]) < 1e-9 * s2["speedup"] + 1e-12, s2
 assert s2["shaded_pixels"] > 0 and s2["native_pixels"] == 320 * 180, s2
 assert abs(s2["shaded_share"] - s2["shaded_pixels"] / s2["native_pixels"]) < 1e-12, s2
 assert s2["quality"] == "A" and s2["slope"] == 0.0275 and s2["display"] == "desktop-1080p", s2
-assert s2["margin"] is None and s2["params"]["margin"] == 2, s2  # layered's own
+assert s2["margin"] is None and s2["params"]["margin"] == 1.5, s2  # layered's own
 assert s2["gaze"]["x_px"] == 160 and s2["gaze"]["y_px"] == 90 and s2["gaze"]["valid"], s2["gaze"]
 assert "fixed" in s2["gaze"]["source"], s2["gaze"]
 labels = [e["label"] for e in s2["legend"]]
@@ -213,7 +213,7 @@ PY
 # Frame-time graphs, the parameters saved to a file that --params-file reads,
 # and the command line the panel copies, which starts the same viewer.
 xvfb "$FOVEATE" view --scene cheap --size 320x180 --technique layered --slope 0.02 --commands "
-    param layers=2; param logpolar.sigma=1.5; measure; frames 12
+    param layers=3; param logpolar.sigma=1.5; measure; frames 12
     save-params $tmp/params.json; print-state; quit" > "$tmp/save.jsonl" 2> "$tmp/save.err" \
   || { echo "FAIL: save run: $(cat "$tmp/save.err")"; fail=1; }
 check "the parameters file holds what was set; the graphs have frames" python3 - "$tmp/save.jsonl" "$tmp/params.json" <<'PY'
@@ -221,19 +221,19 @@ import json, sys
 s = json.loads(open(sys.argv[1]).read().splitlines()[0])
 f = json.load(open(sys.argv[2]))
 assert f["schema"] == "foveate-params/1", f
-assert f["techniques"]["layered"]["layers"] == 2 and f["techniques"]["logpolar"]["sigma"] == 1.5, f
+assert f["techniques"]["layered"]["layers"] == 3 and f["techniques"]["logpolar"]["sigma"] == 1.5, f
 h = s["history_frames"]
 assert h.get("layered", 0) >= 2 and h.get("native", 0) >= 1, h
 c = s["command_line"]
 for part in ["--scene cheap", "--size 320x180", "--slope 0.02", "--technique layered",
-             "--param layered.layers=2", "--param logpolar.sigma=1.5"]:
+             "--param layered.layers=3", "--param logpolar.sigma=1.5"]:
     assert part in c, (part, c)
 PY
 xvfb "$FOVEATE" view --scene cheap --size 320x180 --technique checkerboard --params-file "$tmp/params.json" \
   --commands "frames 1; technique layered; frames 1; print-state; quit" > "$tmp/load.jsonl" 2> "$tmp/load.err"
 check "--params-file reads the saved file" python3 -c "
 import json; s = json.loads(open('$tmp/load.jsonl').read().splitlines()[0])
-assert s['overrides_by_technique']['layered'] == {'layers': 2} and s['overrides_by_technique']['logpolar'] == {'sigma': 1.5}, s"
+assert s['overrides_by_technique']['layered'] == {'layers': 3} and s['overrides_by_technique']['logpolar'] == {'sigma': 1.5}, s"
 cmd=$(python3 -c "import json; print(json.loads(open('$tmp/save.jsonl').read().splitlines()[0])['command_line'])")
 eval "xvfb \"\$FOVEATE\" ${cmd#foveate } --commands 'frames 1; print-state; quit'" > "$tmp/again.jsonl" 2> "$tmp/again.err"
 check "the copied command line starts the same viewer" python3 - "$tmp/save.jsonl" "$tmp/again.jsonl" <<'PY'

@@ -26,7 +26,7 @@ def test_a_tiny_bench_returns_native_and_a_technique(fv, tmp_path):
     assert layered["speedup"] == pytest.approx(native["mean_ms"] / layered["mean_ms"])
     assert layered["pixel_ratio"] == pytest.approx(layered["shaded_pixels"] / layered["native_pixels"])
     assert layered["native_pixels"] == 64 * 36
-    assert layered["parameters"]["layers"] == 3
+    assert layered["parameters"]["layers"] == 2  # layered's own
     assert 0.5 < layered["quality"]["ssim"] <= 1.0 and layered["quality"]["frames"] == 2
     # The frames, and the metrics on them agree with the module's own.
     assert r["native_image"].shape == (36, 64, 3) and r["native_image"].dtype == np.uint8
@@ -43,17 +43,17 @@ def test_a_tiny_bench_returns_native_and_a_technique(fv, tmp_path):
 
 
 def test_parameters_sweeps_and_video(fv, tmp_path):
-    r = tiny(fv, techniques=["layered"], params={"layered.layers": 2}, metrics=False)
+    r = tiny(fv, techniques=["layered"], params={"layered.layers": 3}, metrics=False)
     assert [x["technique"] for x in r["results"]] == ["layered"]  # native measured, not listed
-    assert r["results"][0]["parameters"]["layers"] == 2
+    assert r["results"][0]["parameters"]["layers"] == 3
     s = tiny(fv, techniques=["layered"], sweep=("slope", 0.02, 0.03, 0.01), metrics=False, frames=1)
     assert [x["sweep_value"] for x in s["results"]] == pytest.approx([0.02, 0.03])
-    m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=2.0, metrics=False, frames=1)
+    m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=1.0, metrics=False, frames=1)
     plain = tiny(fv, techniques=["checkerboard"], size=(640, 360), metrics=False, frames=1)
-    assert m["margin"] == 2.0 and plain["margin"] is None  # None: each technique's own
-    assert m["results"][0]["parameters"]["margin"] == 2.0
-    assert plain["results"][0]["parameters"]["margin"] == 1.5
-    assert m["results"][0]["parameters"]["r1"] > plain["results"][0]["parameters"]["r1"]
+    assert m["margin"] == 1.0 and plain["margin"] is None  # None: each technique's own
+    assert m["results"][0]["parameters"]["margin"] == 1.0
+    assert plain["results"][0]["parameters"]["margin"] == 3.0
+    assert m["results"][0]["parameters"]["r1"] < plain["results"][0]["parameters"]["r1"]
     video = tmp_path / "b.mp4"
     v = tiny(fv, techniques=["layered"], metrics=False, video=str(video), side_by_side=True)
     assert video.stat().st_size > 0 and "2 frame(s), 128x36" in v["video"]

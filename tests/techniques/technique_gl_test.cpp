@@ -88,6 +88,13 @@ class Techniques : public test::GlTest {
     c.params = std::move(params);
     return c;
   }
+  // Guenter et al.'s own layered plan, which these tests were written for:
+  // three layers with the periphery at half rate (the shipped defaults are
+  // tune's: two layers, every layer every frame).
+  TechniqueConfig paper_layered(std::map<std::string, double> params = {}) const {
+    params.insert({{"layers", 3}, {"half_rate", 1}});
+    return config(std::move(params));
+  }
   // The frame runner over the fixture's target: frame k is at 1 s + k / 60.
   FrameRunner runner(Scene& s, int w = kW, int h = kH) const {
     FrameRunnerOptions o;
@@ -144,7 +151,7 @@ TEST_F(Techniques, NativeShadesEveryPixelOnce) {
 TEST_F(Techniques, LayeredFoveaMatchesNativeAndCountsMatchThePlan) {
   auto scene = load_scene("detail");
   const Image ref = native(*scene);
-  auto t = make_technique("layered", config());
+  auto t = make_technique("layered", paper_layered());
   FrameStats s;
   const Vec2d gaze{kW / 2.0, kH / 2.0};
   const Image img = run(*t, *scene, gaze, &s);
@@ -200,7 +207,7 @@ TEST_F(Techniques, LayeredNeverShowsAnUnshadedHoleWhenTheGazeMoves) {
   auto scene = still_scene("guenter");
   // Two layers: the outer one (half rate, even frames) is rendered with a
   // hole on frame 0 and would be shown stale with it on frame 1.
-  auto t = make_technique("layered", config({{"layers", 2}, {"reproject", 0}}));
+  auto t = make_technique("layered", paper_layered({{"layers", 2}, {"reproject", 0}}));
   const Vec2d a{200, 180}, b{440, 180};
   double r0 = 0;  // where the inner layer begins to blend into the outer one
   for (const OverlayShape& o : t->overlay(GazeState{a}))
@@ -228,7 +235,7 @@ TEST_F(Techniques, LayeredPlannedForAFinerAcuityIsCloserToNative) {
   const Image ref = native(*scene);
   const Vec2d gaze{kW / 2.0, kH / 2.0};
   const auto frame = [&](double margin, FrameStats* s) {
-    TechniqueConfig c = config();
+    TechniqueConfig c = paper_layered();
     c.margin = margin;
     return run(*make_technique("layered", c), *scene, gaze, s);
   };
@@ -252,7 +259,7 @@ TEST_F(Techniques, LayeredConvergesOnAStaticScene) {
   // close to the supersampled reference as native is (after the eye's acuity
   // filter), within 1 code.
   auto scene = still_scene("detail");
-  auto t = make_technique("layered", config());
+  auto t = make_technique("layered", paper_layered());
   const Vec2d gaze{kW / 2.0, kH / 2.0};
   std::vector<Image> frames;
   for (int k = 0; k < 33; ++k) frames.push_back(run(*t, *scene, gaze, nullptr, k));
@@ -295,9 +302,9 @@ TEST_F(Techniques, LayeredShowsAMovingImageWithoutDepthAsRendered) {
   // shown as rendered, unjittered: the frames equal those of a layered with
   // jitter off. With screen-space history they would not.
   auto scene = load_scene("raymarch");
-  auto a = make_technique("layered", config());
-  auto b = make_technique("layered", config({{"jitter", 0}}));
-  auto c = make_technique("layered", config({{"history_screen", 0.25}}));
+  auto a = make_technique("layered", paper_layered());
+  auto b = make_technique("layered", paper_layered({{"jitter", 0}}));
+  auto c = make_technique("layered", paper_layered({{"history_screen", 0.25}}));
   const Vec2d gaze{kW / 2.0, kH / 2.0};
   double differs = 0;
   for (int k = 0; k < 4; ++k) {
@@ -335,7 +342,7 @@ TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
   // scene, warped to the camera; or an image that holds still) the outer
   // layers update at half rate, staggered.
   const auto parts = [&](Scene& scene, bool still) {
-    auto t = make_technique("layered", config());
+    auto t = make_technique("layered", paper_layered());
     std::vector<FrameStats> s(3);
     FrameRunner r = runner(scene);
     FrameInput in = r.frame_input(0);
@@ -368,7 +375,7 @@ TEST_F(Techniques, LayeredHalfRateStaggersOuterLayers) {
 TEST_F(Techniques, OneLayerIsNative) {
   auto scene = load_scene("detail");
   const Image ref = native(*scene);
-  auto t = make_technique("layered", config({{"layers", 1}}));
+  auto t = make_technique("layered", paper_layered({{"layers", 1}}));
   FrameStats s;
   const Image img = run(*t, *scene, {200, 100}, &s);
   EXPECT_MATCHES_NATIVE(compare_all(ref, img));
@@ -640,7 +647,7 @@ TEST_F(Techniques, SubsampledTechniquesKeepNativesGeometricLod) {
     EXPECT_EQ(spy.max_scale, 1.0) << name;
   }
   LodSpy spy(load_scene("guenter"));
-  auto t = make_technique("layered", config({{"lod", 1}}));
+  auto t = make_technique("layered", paper_layered({{"lod", 1}}));
   for (int k = 0; k < 3; ++k) run(*t, spy, {kW / 2.0, kH / 2.0}, nullptr, k);
   EXPECT_GT(spy.max_scale, 1.5);  // the outer layer's sampling factor (1.68 at 640x360)
 }
@@ -665,11 +672,11 @@ TEST_F(Techniques, ReverseReprojectionFollowsTheCamera) {
   // screen position, which smears (ghosts) the periphery.
   auto scene = load_scene("guenter");
   auto error_after_motion = [&](double reproject) {
-    auto t = make_technique("layered", config({{"history", 0.9},
-                                               {"history_screen", 0.9},
-                                               {"jitter", 0},
-                                               {"half_rate", 0},
-                                               {"reproject", reproject}}));
+    auto t = make_technique("layered", paper_layered({{"history", 0.9},
+                                                      {"history_screen", 0.9},
+                                                      {"jitter", 0},
+                                                      {"half_rate", 0},
+                                                      {"reproject", reproject}}));
     Image img;
     for (int k = 0; k < 8; ++k) img = run(*t, *scene, {320, 180}, nullptr, 10 * k);  // fast motion
     return compare_all(native(*scene, 70), img).mean;
@@ -687,7 +694,7 @@ TEST_F(Techniques, StaleHalfRateLayersFollowTheCamera) {
   auto scene = load_scene("guenter");
   auto frame40 = [&](std::map<std::string, double> params, FrameStats* s) {
     params.insert({{"jitter", 0}, {"history", 0}, {"history_screen", 0}});
-    auto t = make_technique("layered", config(params));
+    auto t = make_technique("layered", paper_layered(params));
     Image img;
     for (int k : {0, 39, 40}) img = run(*t, *scene, {320, 180}, s, k);
     return compare_all(native(*scene, 40), img).mean;
@@ -729,7 +736,8 @@ TEST_F(Techniques, MsaaOnMeshScenesAntialiasesLayerEdges) {
   }
   auto layered = [&](double msaa) {
     auto t = make_technique(
-        "layered", config({{"msaa", msaa}, {"jitter", 0}, {"history", 0}, {"history_screen", 0}}));
+        "layered",
+        paper_layered({{"msaa", msaa}, {"jitter", 0}, {"history", 0}, {"history_screen", 0}}));
     return run(*t, *scene, {320, 180});
   };
   const Image with = layered(4), without = layered(1);

@@ -94,9 +94,9 @@ inline ParamDecl param(std::string key, std::string help, std::string unit, Para
 inline constexpr const char* kPlanMarginKey = "margin";
 
 /// The planning margin's declaration, with the technique's own default: the
-/// least margin (in steps of 0.25) at which the technique's acuity-aware error
-/// against a 4x4 supersampled reference stays within native's own + 1 code
-/// on guenter and raymarch at 1920x1080 (docs/fidelity.md); 1 = the paper's
+/// one `foveate tune` chose, with the technique's other defaults, as its
+/// fastest setting whose FovVideoVDP JOD stays within 0.25 of native's on
+/// guenter and raymarch at 1920x1080 (docs/fidelity.md); 1 = the paper's
 /// plan.
 ParamDecl plan_margin_param(double fidelity_default);
 
