@@ -9,7 +9,8 @@ std::string& invocation_storage() {
   return s;
 }
 
-// An argument as a POSIX shell would need it to read it back unchanged.
+}  // namespace
+
 std::string shell_quote(const std::string& a) {
   if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
                                         "0123456789-_./=:,+@%") == std::string::npos)
@@ -18,8 +19,6 @@ std::string shell_quote(const std::string& a) {
   for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
-
-}  // namespace
 
 void set_invocation(int argc, const char* const* argv) {
   std::string s = "foveate";  // argv[0] is wherever the binary was

@@ -8,6 +8,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate/techniques/palette.hpp"
+#include "invocation.hpp"
 
 namespace foveate::app::viewer {
 
@@ -21,17 +22,6 @@ constexpr double kNativePeriodS = 1.0;
 
 double ema(double old, double sample, double weight, bool first) {
   return first ? sample : (1.0 - weight) * old + weight * sample;
-}
-
-// A word of a shell command line: quoted when the shell would split or
-// expand it.
-std::string shell_word(const std::string& w) {
-  if (!w.empty() && w.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                        "0123456789-_.,/:=+@%") == std::string::npos)
-    return w;
-  std::string q = "'";
-  for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
 }
 
 }  // namespace
@@ -206,9 +196,9 @@ void Viewer::save_params(const std::string& path) const {
 
 std::string Viewer::command_line() const {
   const bench::SessionOptions& o = session_.options();
-  std::string s = "foveate view --scene " + shell_word(o.scene) + " --size " +
+  std::string s = "foveate view --scene " + shell_quote(o.scene) + " --size " +
                   std::to_string(o.size.width) + "x" + std::to_string(o.size.height) +
-                  " --display " + shell_word(o.display);
+                  " --display " + shell_quote(o.display);
   if (acuity_preset_ == "custom") {
     s += " --slope " + format_number(acuity_.slope, 6);
   } else if (acuity_preset_ != "A") {
@@ -216,11 +206,11 @@ std::string Viewer::command_line() const {
   }
   if (o.margin) s += " --margin " + format_number(*o.margin, 6);
   if (o.stereo) s += " --stereo";
-  if (!o.gaze.empty() && !gaze_follows_mouse()) s += " --gaze " + shell_word(o.gaze);
-  s += " --technique " + shell_word(name_);
+  if (!o.gaze.empty() && !gaze_follows_mouse()) s += " --gaze " + shell_quote(o.gaze);
+  s += " --technique " + shell_quote(name_);
   for (const auto& [t, m] : params_) {
     for (const auto& [k, v] : m)
-      s += " --param " + shell_word(t + "." + k + "=" + format_number(v, 6));
+      s += " --param " + shell_quote(t + "." + k + "=" + format_number(v, 6));
   }
   return s;
 }

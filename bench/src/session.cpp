@@ -57,9 +57,9 @@ void Session::make_context() {
   // The window's own size when given (the front end shows the output in it,
   // scaled if need be), else the output's.
   const bool sized = options_.window_size.width > 0 && options_.window_size.height > 0;
-  auto w = gpu::create_window(sized ? options_.window_size.width : options_.size.width,
-                              sized ? options_.window_size.height : options_.size.height,
-                              "foveate");
+  auto w =
+      gpu::create_window(sized ? options_.window_size.width : options_.size.width,
+                         sized ? options_.window_size.height : options_.size.height, "foveate");
   window_ = w.get();
   context_ = std::move(w);
 }
