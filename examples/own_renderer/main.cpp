@@ -101,7 +101,9 @@ int main(int argc, char** argv) {
   try {
     register_letterbox();
     auto context = foveate::gpu::create_headless_context();
-    const int w = 640, h = 360;
+    // The display's own size: at much less a desktop display's pixels are
+    // coarser than the eye resolves, and foveation has nothing to save.
+    const int w = 1920, h = 1080;
     foveate::TechniqueConfig config;
     config.display = foveate::Display::load("desktop-1080p").resized(w, h);
     config.acuity = foveate::AcuityModel::preset("A");
@@ -117,7 +119,7 @@ int main(int argc, char** argv) {
     // "pupil" work the same way.
     foveate::gaze::GazeContext gc;
     gc.display = config.display;
-    foveate::gaze::GazeTracker tracker("200,150", gc);
+    foveate::gaze::GazeTracker tracker("600,450", gc);
 
     foveate::FrameStats stats;
     for (int frame = 0; frame < 3; ++frame) {
