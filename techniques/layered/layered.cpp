@@ -1,8 +1,8 @@
 // layered: Guenter, Finch, Drucker, Tan, Snyder, "Foveated 3D Graphics" (2012),
 // section 4. Nested eccentricity layers from the planner, each rendered with
 // an off-centre sub-frustum around the gaze at its sampling factor, bilinearly
-// upsampled and composited with smoothstep masks; outer layers are updated at
-// half rate, staggered.
+// upsampled and composited with smoothstep masks; with half_rate, outer layers
+// are updated at half rate, staggered (the paper's; off by default).
 //
 // Antialiasing (section 4.2), in linear light:
 //  * each subsampled layer is jittered over its own updates by a Halton (2, 3)
@@ -300,8 +300,8 @@ TechniqueInfo layered_info() {
   t.name = "layered";
   t.summary =
       "Nested eccentricity layers from the acuity model, composited with smoothstep masks outside "
-      "each layer's radius; per-layer jitter with temporal accumulation and reprojection; outer "
-      "layers at half rate.";
+      "each layer's radius; per-layer jitter with temporal accumulation and reprojection; the "
+      "paper's half-rate outer layers on request.";
   t.source = "Guenter et al., Foveated 3D Graphics, 2012";
   t.params = {
       plan_margin_param(1.5),
