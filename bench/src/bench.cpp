@@ -20,21 +20,25 @@ void validate(const BenchOptions& o) {
       for_field("techniques", [&] { return technique_info(t); });
   }
   o.params.validate(o.techniques.value_or(technique_names()));
-  for (size_t i = 0; i < o.runs.size(); ++i) {
-    const RunSpec& r = o.runs[i];
-    const std::string where = "runs[" + std::to_string(i) + "]";
-    const TechniqueInfo info = for_field("runs", [&] { return technique_info(r.technique); });
-    for (const auto& [key, value] : r.params) {
-      const bool known = std::any_of(info.params.begin(), info.params.end(),
-                                     [&](const ParamDecl& d) { return d.key == key; });
-      if (!known) {
-        throw OptionError("runs", where + ": " + r.technique + " has no parameter '" + key + "'");
-      }
-      if (!std::isfinite(value)) {
-        throw OptionError("runs", where + ": " + r.technique + "." + key + " is not finite");
+  const auto check_runs = [](const std::vector<RunSpec>& runs, const std::string& field) {
+    for (size_t i = 0; i < runs.size(); ++i) {
+      const RunSpec& r = runs[i];
+      const std::string where = field + "[" + std::to_string(i) + "]";
+      const TechniqueInfo info = for_field(field, [&] { return technique_info(r.technique); });
+      for (const auto& [key, value] : r.params) {
+        const bool known = std::any_of(info.params.begin(), info.params.end(),
+                                       [&](const ParamDecl& d) { return d.key == key; });
+        if (!known) {
+          throw OptionError(field, where + ": " + r.technique + " has no parameter '" + key + "'");
+        }
+        if (!std::isfinite(value)) {
+          throw OptionError(field, where + ": " + r.technique + "." + key + " is not finite");
+        }
       }
     }
-  }
+  };
+  check_runs(o.runs, "runs");
+  check_runs(o.settle_runs, "settle_runs");
   if (!o.runs.empty() && (o.techniques || !o.sweep.empty())) {
     throw OptionError("runs", FieldText{"{runs}: give explicit runs or {techniques} and "
                                         "{sweep}, not both",
@@ -82,7 +86,7 @@ BenchResult BenchRun::run() {
   // least as long as asked.
   out_.warmup = options_.warmup;
   for (const Run& r : runs_) out_.warmup = std::max(out_.warmup, r.impl.view->settle_frames());
-  out_.warmup = std::max(out_.warmup, other_shards_settle_);
+  out_.warmup = std::max(out_.warmup, unmeasured_settle_);
   open_video();
   // Steps: every frame rendered, and every frame judged (the metrics take as
   // long as the rendering on a CPU), so that the time left is honest.

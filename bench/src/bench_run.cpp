@@ -92,9 +92,10 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept, i
   }
   r.impl = session_.make(technique, params, r.acuity);
   if (!measured) {
-    // Another shard's run: only how long it needs to settle, so that every
-    // shard warms up alike and measures the same frames.
-    other_shards_settle_ = std::max(other_shards_settle_, r.impl.view->settle_frames());
+    // Another shard's run, or one made only to settle (settle_runs): only
+    // how long it needs to settle, so that every benchmark of the campaign
+    // warms up alike and measures the same frames.
+    unmeasured_settle_ = std::max(unmeasured_settle_, r.impl.view->settle_frames());
     return;
   }
   if (session_.stereo()) r.result.eyes.resize(2);
@@ -127,6 +128,10 @@ void BenchRun::add_runs() {
   // every shard. The other runs are numbered in one order for every shard
   // and dealt out in turn.
   add_run("native", 0.0, false, 0, nullptr, true);
+  for (const RunSpec& spec : options_.settle_runs) {
+    if (scene_mismatch(technique_info(spec.technique), session_.scene().info()).empty())
+      add_run(spec.technique, 0.0, false, 0, &spec, false);
+  }
   int index = 0;
   const Shard& shard = options_.shard;
   const auto mine = [&] { return (index - 1) % shard.count == shard.index; };

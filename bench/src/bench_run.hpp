@@ -73,7 +73,9 @@ class BenchRun {
   std::unique_ptr<SupersampledScene> reference_;
   std::vector<Run> runs_;
   bool native_listed_ = false;
-  int other_shards_settle_ = 0;              ///< the settle frames of runs other shards measure
+  /// The settle frames of runs made but not measured here (other shards'
+  /// runs, BenchOptions::settle_runs).
+  int unmeasured_settle_ = 0;
   std::vector<std::vector<size_t>> orders_;  ///< each measured frame's order of the runs
   std::vector<size_t> shown_;                ///< the runs the video shows, in order
   std::unique_ptr<VideoWriter> video_;

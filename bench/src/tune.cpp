@@ -28,6 +28,19 @@ std::vector<Axis> axes_of(const std::string& technique) {
   return axes;
 }
 
+// A setting's parameters without those at their declared constant defaults
+// (the margin, whose default is each technique's own, always kept), so that
+// one setting has one name: layered at margin 1.5 and at margin 1.5 with
+// layers=2 (its default) are one candidate, run once.
+Params without_defaults(const std::string& technique, Params p) {
+  for (const ParamDecl& d : technique_info(technique).params) {
+    if (d.key == kPlanMarginKey || d.derive) continue;
+    const auto it = p.find(d.key);
+    if (it != p.end() && it->second == d.value) p.erase(it);
+  }
+  return p;
+}
+
 struct Candidate {
   std::string technique;
   Params params;
@@ -46,6 +59,56 @@ std::vector<std::string> tuned_techniques(const TuneOptions& o) {
   return out;
 }
 
+// Settings within this share of the fastest one's speed are timed again
+// together (Search::retime), at most kContenders of them per technique.
+constexpr double kContenderShare = 0.85;
+constexpr size_t kContenders = 3;
+// Stage 3: a change that raises JOD by more than this is tried with the
+// others like it at up to kLowerMargins lower margins (coarser plans).
+constexpr double kJodRaise = 0.02;
+constexpr std::ptrdiff_t kLowerMargins = 2;
+
+// A setting of a technique judged on every scene it was run on: whether it
+// is within the bound on each, the geometric mean of its speedups, its worst
+// distance below native.
+struct RankedSetting {
+  Params params;
+  bool within = false;
+  double speed = 0.0;
+  double worst = 0.0;
+};
+
+// The technique's settings judged on every scene it ran on, best first: those
+// within the bound on every scene by speed, then the others by how close
+// they come.
+std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string& technique) {
+  std::map<Params, std::map<std::string, const TunePoint*>> settings;
+  std::set<std::string> scenes;
+  for (const TunePoint& p : r.points) {
+    if (p.technique != technique) continue;
+    settings[p.params][p.scene] = &p;
+    scenes.insert(p.scene);
+  }
+  std::vector<RankedSetting> out;
+  for (const auto& [params, by_scene] : settings) {
+    if (by_scene.size() != scenes.size()) continue;  // not judged on every scene
+    RankedSetting s{params, true, 0.0, -std::numeric_limits<double>::infinity()};
+    double log_speed = 0.0;
+    for (const auto& [scene, p] : by_scene) {
+      s.within = s.within && p->within_bound;
+      log_speed += std::log(p->speedup);
+      s.worst = std::max(s.worst, p->below_native);
+    }
+    s.speed = std::exp(log_speed / static_cast<double>(by_scene.size()));
+    out.push_back(s);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const RankedSetting& a, const RankedSetting& b) {
+    if (a.within != b.within) return a.within;
+    return a.within ? a.speed > b.speed : a.worst < b.worst;
+  });
+  return out;
+}
+
 class Search {
  public:
   Search(const TuneOptions& o, const TuneCallbacks& c, TuneResult& r)
@@ -53,10 +116,9 @@ class Search {
 
   void scene(const std::string& name) {
     scene_ = name;
-    cache_ = std::make_shared<ReferenceFrames>();
     techniques_ = tuned_techniques(options_);
     if (options_.grid || options_.shard.count > 1) {
-      evaluate(grid(), 1, true);
+      evaluate(grid(), 1, false);
       return;
     }
     evaluate(stage1(), 1, false);
@@ -68,7 +130,6 @@ class Search {
   void cross_check(const std::vector<std::string>& scenes) {
     for (const std::string& s : scenes) {
       scene_ = s;
-      cache_ = std::make_shared<ReferenceFrames>();
       techniques_ = tuned_techniques(options_);
       std::vector<Candidate> todo;
       for (const std::string& t : techniques_) {
@@ -79,6 +140,36 @@ class Search {
         }
       }
       evaluate(todo, 4, false);
+    }
+  }
+
+  // The settings the choice falls between, timed again side by side: a
+  // technique's best setting and the others within the bound on every scene
+  // whose speed (geometric mean) is within kContenderShare of it, at most
+  // kContenders in all. Points of one setting timed in different benchmarks
+  // differ by the machine's noise (up to 15 % on a shared one), which
+  // would decide between settings of equal quality; timed in one benchmark
+  // per scene, beside native, they are compared on equal terms. Their new
+  // points replace the earlier ones (stage 5).
+  void retime(const std::vector<std::string>& scenes) {
+    std::vector<Candidate> todo;
+    for (const std::string& t : tuned_techniques(options_)) {
+      const std::vector<RankedSetting> ranked = rank_settings(out_, t);
+      std::vector<Candidate> mine;
+      for (const RankedSetting& r : ranked) {
+        if (!r.within || r.speed < kContenderShare * ranked.front().speed ||
+            mine.size() == kContenders) {
+          break;
+        }
+        mine.push_back({t, r.params});
+      }
+      // One setting alone has nothing to be compared with.
+      if (mine.size() >= 2) todo.insert(todo.end(), mine.begin(), mine.end());
+    }
+    if (todo.empty()) return;
+    for (const std::string& s : scenes) {
+      scene_ = s;
+      evaluate(todo, 5, true);
     }
   }
 
@@ -129,29 +220,52 @@ class Search {
     return c;
   }
 
-  // The single changes that kept the bound and gained speed, together.
+  // The single changes that kept the bound and gained speed, together; and
+  // the changes that raised JOD, whatever they cost, together at the
+  // kLowerMargins margins below the best point's: quality a parameter buys
+  // can pay for a coarser plan (layered without half rate at a lower
+  // margin), which changes one at a time from the best margin never reach.
   std::vector<Candidate> stage3() const {
     std::vector<Candidate> c;
     for (const std::string& t : techniques_) {
       const TunePoint* best = best_point(scene_, t);
       if (!best) continue;
-      Params combined = best->params;
-      int changes = 0;
+      Params combined = best->params, better = best->params;
+      int changes = 0, raises = 0;
       for (const Axis& a : axes_of(t)) {
         if (a.key == kPlanMarginKey) continue;
-        const TunePoint* gain = nullptr;
+        const TunePoint *gain = nullptr, *raise = nullptr;
         for (const TunePoint& p : out_.points) {
-          if (p.scene != scene_ || p.technique != t || p.stage != 2 || !p.within_bound) continue;
-          if (p.speedup <= best->speedup || !differs_only_in(p.params, best->params, a.key))
+          if (p.scene != scene_ || p.technique != t || p.stage != 2 ||
+              !differs_only_in(p.params, best->params, a.key)) {
             continue;
-          if (!gain || p.speedup > gain->speedup) gain = &p;
+          }
+          if (p.within_bound && p.speedup > best->speedup && (!gain || p.speedup > gain->speedup))
+            gain = &p;
+          if (p.jod > best->jod + kJodRaise && (!raise || p.jod > raise->jod)) raise = &p;
         }
         if (gain) {
           combined[a.key] = gain->params.at(a.key);
           ++changes;
         }
+        if (raise) {
+          better[a.key] = raise->params.at(a.key);
+          ++raises;
+        }
       }
       if (changes >= 2) c.push_back({t, combined});
+      const auto margin = best->params.find(kPlanMarginKey);
+      if (raises == 0 || margin == best->params.end()) continue;
+      for (const Axis& a : axes_of(t)) {
+        if (a.key != kPlanMarginKey) continue;
+        const auto idx =
+            std::find(a.values.begin(), a.values.end(), margin->second) - a.values.begin();
+        for (std::ptrdiff_t j = idx - 1; j >= 0 && j >= idx - kLowerMargins; --j) {
+          Params p = better;
+          p[kPlanMarginKey] = a.values[static_cast<size_t>(j)];
+          c.push_back({t, p});
+        }
+      }
     }
     return c;
   }
@@ -179,6 +293,15 @@ class Search {
         }
       }
     }
+    // One name per setting before the slicing, so that no two shards run
+    // the same setting under different names.
+    std::set<Candidate> named;
+    std::vector<Candidate> unique;
+    for (Candidate& c : all) {
+      c.params = without_defaults(c.technique, c.params);
+      if (named.insert(c).second) unique.push_back(c);
+    }
+    all = unique;
     std::vector<Candidate> mine;
     for (size_t i = 0; i < all.size(); ++i) {
       if (static_cast<int>(i % static_cast<size_t>(options_.shard.count)) == options_.shard.index)
@@ -221,11 +344,15 @@ class Search {
     return best;
   }
 
-  void evaluate(std::vector<Candidate> candidates, int stage, bool shard_slice) {
+  // Benchmarks the candidates on the current scene; `again`: those already
+  // evaluated too, whose new points replace the old.
+  void evaluate(std::vector<Candidate> candidates, int stage, bool again) {
     std::set<Candidate> unique;
     std::vector<RunSpec> runs;
-    for (const Candidate& c : candidates) {
-      if (seen(scene_, c) || !unique.insert(c).second) continue;
+    for (Candidate& c : candidates) {
+      c.params = without_defaults(c.technique, c.params);
+      if ((!again && seen(scene_, c)) || !unique.insert(c).second) continue;
+      if (again && !seen(scene_, c)) continue;  // not run on this scene (lodmask on a shader)
       runs.push_back({c.technique, c.params, ""});
     }
     if (runs.empty()) return;
@@ -235,12 +362,14 @@ class Search {
     b.techniques.reset();
     b.sweep = {};
     b.runs = runs;
+    b.settle_runs = settle_probes();
     b.image_metrics = true;
     b.diagnostics = false;
-    b.reference_frames = cache_;
+    auto& cache = caches_[scene_];
+    if (!cache) cache = std::make_shared<ReferenceFrames>();
+    b.reference_frames = cache;
     b.skip_unrunnable = true;
     b.shard = {};
-    (void)shard_slice;
     const BenchResult r = run_bench(b, callbacks_.bench);
     if (out_.renderer.empty()) {
       out_.renderer = r.renderer;
@@ -250,10 +379,24 @@ class Search {
     for (const TechniqueResult& t : r.results) {
       if (t.run_index == 0 && t.metrics && t.metrics->fvvdp) native = t.metrics->fvvdp->jod;
     }
-    // Native's JOD is the same in every benchmark of a scene (same frames,
-    // same reference): the first one's is kept.
+    // Every benchmark warms up as long as the slowest candidate to settle
+    // (settle_probes), so that all of them measure the same frames; native's
+    // JOD is then the same in each benchmark of a scene (same frames, same
+    // reference): the first one's is kept.
+    if (out_.warmup == 0) out_.warmup = r.warmup;
+    if (r.warmup != out_.warmup) {
+      throw Error("tune: a benchmark warmed up for " + std::to_string(r.warmup) +
+                  " frames, the first for " + std::to_string(out_.warmup) +
+                  ": its candidates (a combination no single tuned value needs) would be "
+                  "measured on other frames than the rest");
+    }
     out_.native_jod.emplace(scene_, native);
     native = out_.native_jod.at(scene_);
+    if (again) {
+      std::erase_if(out_.points, [&](const TunePoint& p) {
+        return p.scene == scene_ && unique.count({p.technique, p.params});
+      });
+    }
     for (const TechniqueResult& t : r.results) {
       if (t.run_index == 0) continue;
       TunePoint p;
@@ -270,11 +413,27 @@ class Search {
     }
   }
 
+  // Every tuned value of every technique, one at a time from its defaults:
+  // made (never rendered) in each benchmark so that the warm-up lasts as
+  // long as any candidate of any stage needs to settle (layered's half rate
+  // needs longer), and every benchmark measures the same frames.
+  std::vector<RunSpec> settle_probes() const {
+    std::vector<RunSpec> probes;
+    for (const std::string& t : tuned_techniques(options_)) {
+      probes.push_back({t, {}, ""});
+      for (const Axis& a : axes_of(t)) {
+        for (double v : a.values) probes.push_back({t, {{a.key, v}}, ""});
+      }
+    }
+    return probes;
+  }
+
   const TuneOptions& options_;
   const TuneCallbacks& callbacks_;
   TuneResult& out_;
   std::string scene_;
-  std::shared_ptr<ReferenceFrames> cache_;
+  // Each scene's reference frames, rendered once for every stage.
+  std::map<std::string, std::shared_ptr<ReferenceFrames>> caches_;
   std::vector<std::string> techniques_;
 };
 
@@ -317,8 +476,9 @@ TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks) 
   out.settings_key = tune_settings_key(options);
   Search search(options, callbacks, out);
   for (const std::string& scene : options.scenes) search.scene(scene);
-  if (options.scenes.size() > 1 && !options.grid && options.shard.count == 1) {
-    search.cross_check(options.scenes);
+  if (!options.grid && options.shard.count == 1) {
+    if (options.scenes.size() > 1) search.cross_check(options.scenes);
+    search.retime(options.scenes);
   }
   choose_parameters(out);
   return out;
@@ -348,47 +508,18 @@ void choose_parameters(TuneResult& r) {
   std::set<std::string> techniques;
   for (const TunePoint& p : r.points) techniques.insert(p.technique);
   for (const std::string& t : techniques) {
-    // Every setting of t, with its points on each scene.
-    std::map<Params, std::map<std::string, const TunePoint*>> settings;
-    std::set<std::string> scenes;
-    for (const TunePoint& p : r.points) {
-      if (p.technique != t) continue;
-      settings[p.params][p.scene] = &p;
-      scenes.insert(p.scene);
-    }
-    const Params* best = nullptr;
-    double best_speed = 0.0, best_margin = std::numeric_limits<double>::infinity();
-    bool best_within = false;
-    for (const auto& [params, by_scene] : settings) {
-      if (by_scene.size() != scenes.size()) continue;  // not judged on every scene
-      bool within = true;
-      double log_speed = 0.0, worst = -std::numeric_limits<double>::infinity();
-      for (const auto& [scene, p] : by_scene) {
-        within = within && p->within_bound;
-        log_speed += std::log(p->speedup);
-        worst = std::max(worst, p->below_native);
-      }
-      const double speed = std::exp(log_speed / static_cast<double>(by_scene.size()));
-      const bool better =
-          !best || (within && !best_within) ||
-          (within == best_within && (within ? speed > best_speed : worst < best_margin));
-      if (better) {
-        best = &params;
-        best_speed = speed;
-        best_margin = worst;
-        best_within = within;
-      }
-    }
+    const std::vector<RankedSetting> ranked = rank_settings(r, t);
+    const RankedSetting* best = ranked.empty() ? nullptr : &ranked.front();
     if (!best) {
       r.verdict[t] = "no setting was judged on every scene";
       continue;
     }
-    r.chosen[t] = *best;
+    r.chosen[t] = best->params;
     r.verdict[t] =
-        best_within
+        best->within
             ? "within " + format_fixed(r.options.bound_jod, 2) + " JOD of native on every scene, " +
-                  format_fixed(best_speed, 2) + "x (geometric mean)"
-            : "no setting within the bound; the closest: " + format_fixed(best_margin, 3) +
+                  format_fixed(best->speed, 2) + "x (geometric mean)"
+            : "no setting within the bound; the closest: " + format_fixed(best->worst, 3) +
                   " JOD below native at worst";
   }
 }

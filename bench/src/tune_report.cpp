@@ -97,6 +97,7 @@ nlohmann::json tune_json(const TuneResult& r) {
                                         : nlohmann::json{{"index", r.options.shard.index},
                                                          {"count", r.options.shard.count}}},
           {"native_jod", native},
+          {"warmup_frames", r.warmup},
           {"points", points},
           {"chosen", chosen},
           {"verdict", r.verdict}};
@@ -134,6 +135,7 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
   r.environment.cpu_model = env.value("cpu_model", "");
   r.environment.cores = env.value("cpu_cores", 0u);
   r.renderer = j.value("renderer", "");
+  r.warmup = j.value("warmup_frames", 0);
   const nlohmann::json native_jod = j.value("native_jod", nlohmann::json::object());
   for (const auto& [scene, jod] : native_jod.items())
     r.native_jod[scene] = jod.is_number() ? jod.get<double>() : std::nan("");
@@ -200,7 +202,12 @@ std::string tune_markdown(const TuneResult& r) {
     << (r.options.bench.reference > 1
             ? "ssaa:" + std::to_string(r.options.bench.reference) + " reference"
             : std::string("native frames"))
-    << "), the fastest setting per technique:\n\n| technique | chosen | verdict |\n|---|---|---|\n";
+    << "), the fastest setting per technique";
+  if (r.warmup > 0) {
+    s << " (every candidate judged on frames " << r.warmup << "-"
+      << r.warmup + r.options.bench.frames - 1 << ", after " << r.warmup << " of warm-up)";
+  }
+  s << ":\n\n| technique | chosen | verdict |\n|---|---|---|\n";
   for (const std::string& t : techniques_of(r)) {
     const auto c = r.chosen.find(t);
     s << "| " << t << " | " << (c == r.chosen.end() ? "-" : params_text(c->second)) << " | "

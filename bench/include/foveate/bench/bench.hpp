@@ -54,6 +54,11 @@ struct BenchOptions {
   ParamOverrides params;
   /// Explicit runs instead of `techniques` x `sweep` (native is added).
   std::vector<RunSpec> runs;
+  /// Runs made only for how long they take to settle, never rendered: the
+  /// warm-up lasts as long as theirs too, so that benchmarks of different
+  /// runs measure the same frames (tune's stages). Those the scene cannot
+  /// run are left out.
+  std::vector<RunSpec> settle_runs;
   /// Explicit runs of a technique the scene cannot run (lodmask without
   /// meshes) are left out with a note instead of failing the benchmark.
   bool skip_unrunnable = false;

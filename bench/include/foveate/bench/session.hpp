@@ -18,9 +18,9 @@
 #include "foveate/core/stereo.hpp"
 #include "foveate/gaze/tracker.hpp"
 #include "foveate/gpu/context.hpp"
-#include "foveate/techniques/supersampled_native.hpp"
 #include "foveate/techniques/frame_runner.hpp"
 #include "foveate/techniques/stereo_frame_runner.hpp"
+#include "foveate/techniques/supersampled_native.hpp"
 
 namespace foveate::bench {
 
@@ -68,7 +68,9 @@ class Session {
   [[nodiscard]] const Display& display() const { return display_; }
   [[nodiscard]] const SessionOptions& options() const { return options_; }
   /// The frame runner; in stereo the left eye's (its clock is both eyes').
-  [[nodiscard]] FrameRunner& frame_runner() { return stereo_ ? stereo_->eye(Eye::Left) : *frame_runner_; }
+  [[nodiscard]] FrameRunner& frame_runner() {
+    return stereo_ ? stereo_->eye(Eye::Left) : *frame_runner_;
+  }
   /// Stereo sessions: both eyes and the frame runner that puts them side by side; null otherwise.
   [[nodiscard]] StereoFrameRunner* stereo() { return stereo_.get(); }
   [[nodiscard]] const StereoDisplay& stereo_display() const { return stereo_display_; }

@@ -11,7 +11,15 @@
 //  2. from each technique's best point (the fastest within the bound, else the
 //     closest to it), every other tuned parameter's values one at a time, and
 //     the margin one step either side;
-//  3. the changes of stage 2 that kept the bound and gained speed, combined.
+//  3. the changes of stage 2 that kept the bound and gained speed, combined;
+//     and those that raised JOD, combined, at the two margins below the best
+//     point's (quality one parameter buys can pay for a coarser plan);
+//  4. (several scenes) each scene's best settings on the other scenes;
+//  5. the settings the choice falls between (within the bound, within 15 %
+//     of the fastest one's speed, at most three per technique) timed again
+//     side by side in one benchmark per scene, replacing their earlier
+//     points: timings of different benchmarks differ by the machine's noise.
+// Every stage of a scene shares its reference frames.
 // A shard (TuneOptions::shard) runs a fixed grid instead (stage 1 crossed with
 // stage 2's one-at-a-time changes at every margin), its slice of it, so that
 // shards need nothing from each other; merge_tune_shards joins them.
@@ -63,6 +71,10 @@ struct TuneResult {
   RunEnvironment environment;
   std::string renderer;
   std::map<std::string, double> native_jod;  ///< per scene
+  /// Warm-up frames of every benchmark of the run (the measured frames
+  /// follow): the most any candidate needs to settle, at least
+  /// options.bench.warmup.
+  int warmup = 0;
   std::vector<TunePoint> points;
   /// Per technique: the fastest setting within the bound on every scene (by
   /// the geometric mean of its speedups); a technique with none keeps its
