@@ -25,14 +25,20 @@
 //    radially: the two balance near 1.25 at 1080p.
 //  * Two-level antialiasing (Meng et al.), in linear light: temporal
 //    antialiasing in the buffer (jittered samples, reprojected history,
-//    neighbourhood clamping; off by default, `temporal` 0, since against a
-//    supersampled reference it adds more error than it removes), then a
+//    neighbourhood clamping; off by default, `temporal` 0: with the edges
+//    supersampled, FovVideoVDP against a supersampled reference finds it
+//    adds more error than it removes, docs/fidelity.md), then a
 //    Gaussian whose width grows from zero
 //    at the native disc with eccentricity. Its width depends only on the
 //    buffer column, so it is applied in the buffer (blur.frag) and the
 //    inverse mapping reads the result once per pixel; the inverse mapping's
 //    bilinear read is itself a blur of sigma 0.41 texel, so only a wider
 //    Gaussian than that is a pass of its own (the default 0.4 is not).
+//  * Antialiasing in the buffer: texels that differ from a neighbour by
+//    more than `edge_contrast` are reshaded with four samples
+//    (PassKit::supersample_edges, as marwarp's): a cell's one sample
+//    aliases small objects, highlights and procedural texture and steps
+//    silhouettes, which is where FovVideoVDP finds the error.
 //  * The inverse mapping is split into regions (native disc, blend band,
 //    the rest) so that each pixel reads only what it shows.
 #include <algorithm>
@@ -72,7 +78,8 @@ class LogPolar final : public Technique {
         blur_(v.real("blur")),
         blur_pass_(needs_blur_pass(blur_)),
         fovea_deg_(v.real("fovea_deg")),
-        history_(v.real("temporal")) {
+        history_(v.real("temporal")),
+        edge_(v.real("edge_contrast")) {
     model_ =
         KernelLogPolar{double(c.display.width_px), double(c.display.height_px), sigma_, alpha_};
     model_.validate();
@@ -111,11 +118,14 @@ class LogPolar final : public Technique {
     const bool still = key && key == last_key_;
     const bool temporal = history_ > 0.0 && (vp.has_value() || still);
     last_key_ = key;
-    const double shaded = shade_buffer(scene, native, m, d, temporal, frame.frame);
+    double edges = 0.0;
+    const double shaded = shade_buffer(scene, native, m, d, temporal, frame.frame, edges);
     stats.parts.push_back({"log-polar buffer", shaded});
     const double disc = shade_native_disc(scene, native, d);
     stats.parts.push_back({"native disc", disc});
-    stats.shaded_pixels = shaded + disc;
+    // Each supersampled texel's four samples count as shaded pixels.
+    if (edge_ > 0.0) stats.parts.push_back({"supersampled edges", 4.0 * edges});
+    stats.shaded_pixels = shaded + disc + 4.0 * edges;
     const gpu::RenderTarget& shown = resolve_temporal(scene, native, m, temporal, vp);
     const gpu::RenderTarget& read = blur(shown, m, d);
     inverse(target, m, d, read);
@@ -225,10 +235,11 @@ class LogPolar final : public Technique {
   //    antialiasing, when `jitter`); alpha 0 where nothing is shaded.
   //    Returns the texels shaded.
   double shade_buffer(Scene& scene, const View& native, const Mapping& m, const NativeDisc& d,
-                      bool jitter, int frame) {
+                      bool jitter, int frame, double& edges) {
     const int W = native.target_width, H = native.target_height;
     const int bw = m.buffer_w, bh = m.buffer_h;
-    buffer_.ensure(bw, bh);
+    // The stencil marks the texels to supersample (edge_contrast).
+    buffer_.ensure(bw, bh, GL_SRGB8_ALPHA8, edge_ > 0.0);
     buffer_.clear(0, 0, 0, 0);
     const double jx = jitter ? halton(frame, 2) - 0.5 : 0.0;
     const double jy = jitter ? halton(frame, 3) - 0.5 : 0.0;
@@ -248,14 +259,24 @@ class LogPolar final : public Technique {
     const std::vector<PixelRect> cover =
         log_polar_cover(m.gaze, m.L, alpha_, bw, bh, skip,
                         {-past_edge_px, -past_edge_px, W + past_edge_px, H + past_edge_px});
-    return kit_.shade(
-        scene, native, "logpolar/map_logpolar.glsl", buffer_,
-        [&](const gpu::Program& p, gpu::Samplers&) {
-          set_mapping(p, m);
-          p.set("u_lp_jitter", float(jx), float(jy));
-          p.set("u_lp_screen", float(W), float(H));
-        },
-        {}, false, &cover);
+    const auto set_shade = [&](const gpu::Program& p, gpu::Samplers&) {
+      set_mapping(p, m);
+      p.set("u_lp_jitter", float(jx), float(jy));
+      p.set("u_lp_screen", float(W), float(H));
+    };
+    const double shaded = kit_.shade(scene, native, "logpolar/map_logpolar.glsl", buffer_,
+                                     set_shade, {}, false, &cover);
+    // Antialiasing in the buffer: the cells' stair-steps on silhouettes and
+    // the small objects and highlights one sample per cell aliases, reshaded
+    // with four samples where a texel differs from a neighbour by more than
+    // edge_contrast.
+    edges = 0.0;
+    if (edge_ > 0.0 && !cover.empty()) {
+      scratch_.ensure(bw, bh, GL_SRGB8_ALPHA8);
+      edges = kit_.supersample_edges(scene, native, "logpolar/map_logpolar.glsl", buffer_,
+                                     scratch_.color(), cover, 0, bw, edge_, set_shade);
+    }
+    return shaded;
   }
 
   // 2. The native disc and its blend band, clipped to the screen, shaded
@@ -375,11 +396,11 @@ class LogPolar final : public Technique {
   Display display_;
   double sigma_, alpha_, blur_;
   bool blur_pass_;  // the second level's Gaussian is wider than the bilinear read (blur.frag)
-  double fovea_deg_, history_;
+  double fovea_deg_, history_, edge_;
   KernelLogPolar model_;
   KernelPlan plan_;
   PassKit kit_;
-  gpu::RenderTarget buffer_, fovea_;
+  gpu::RenderTarget buffer_, scratch_, fovea_;
   gpu::RenderTarget blurred_;  // the shown buffer with the second level's Gaussian
   std::array<gpu::RenderTarget, 2> history_targets_;
   int latest_ = 0;
@@ -436,8 +457,15 @@ TechniqueInfo logpolar_info() {
       tuned(param("temporal",
                   "weight of the reprojected history in the buffer's temporal antialiasing (the "
                   "paper's first level), with sub-texel jitter; 0 = off",
-                  "", ParamType::Real, 0.0, 0.95, 0.5),
+                  "", ParamType::Real, 0.0, 0.95, 0.0),
             {0, 0.5}),
+      tuned(param("edge_contrast",
+                  "antialiasing of silhouettes and small objects in the buffer: texels whose "
+                  "linear luminance differs from a neighbour's by more than this share of the "
+                  "brighter are reshaded with four samples, averaged (each sample counted as a "
+                  "shaded pixel); 0 = off",
+                  "", ParamType::Real, 0.0, 1.0, 0.25),
+            {0.0, 0.25}),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "blur",
                       "inverse",  "inverse_fovea",      "inverse_outer"};

@@ -16,8 +16,8 @@
 //    level has native's projection, so the native disc is native's pixels
 //    exactly.
 //  * Antialiasing in the buffer: texels that differ from a neighbour by
-//    more than `edge_contrast` are reshaded with four samples (edges.frag
-//    marks them in the stencil, shade_edges.frag reshades them).
+//    more than `edge_contrast` are reshaded with four samples
+//    (PassKit::supersample_edges).
 //  * Resolve, in linear light: a sharpening prefilter in the buffer
 //    (sharpen.frag) that undoes what the bilinear read of the inverse
 //    mapping attenuates below the cutoff, then one bilinear read per screen
@@ -230,7 +230,9 @@ class MarWarp final : public Technique {
       shaded.buffer += samples_ * cover_texels(coarsen_runs(level_cover, 0.08));
     }
     if (!level_cover.empty() && edge_ > 0.0)
-      shaded.edges += supersample_edges(scene, view, level_cover, first, last, set_shade);
+      shaded.edges +=
+          kit_.supersample_edges(scene, view, "marwarp/map_warp.glsl", buffer_, sharpened_.color(),
+                                 level_cover, first, last, edge_, set_shade);
     if (shades_disc) {
       // At the screen's own pixel centres, from native's grid.
       const std::vector<PixelRect> disc_cover =
@@ -303,47 +305,6 @@ class MarWarp final : public Technique {
                           "marwarp/resolve.frag", "marwarp/resolve_outer.frag", set_resolve);
   }
 
-  // Marks the texels of `cover` (columns [first, last)) where one sample
-  // aliases (edges.frag) and reshades them with four (shade_edges.frag);
-  // returns how many were reshaded.
-  double supersample_edges(Scene& scene, const View& view, const std::vector<PixelRect>& cover,
-                           int first, int last, const SetUniforms& set_shade) {
-    // The marks go into the buffer's own stencil, so the pass renders into
-    // its framebuffer: it reads a copy of the colour (sampling a texture
-    // attached to the framebuffer drawn into is a feedback loop, which
-    // llvmpipe's threads resolve differently from run to run).
-    glCopyImageSubData(buffer_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, sharpened_.color().id(),
-                       GL_TEXTURE_2D, 0, 0, 0, 0, buffer_.width(), buffer_.height(), 1);
-    gpu::PassState mark;
-    mark.stencil_func = GL_ALWAYS;
-    mark.stencil_ref = 1;
-    mark.stencil_pass_op = GL_REPLACE;
-    mark.stencil_write = true;
-    mark.color_off = true;
-    kit_.rect_pass(kit_.over_rects("marwarp/edges.frag"), cover, buffer_, mark,
-                   [&](const gpu::Program& p, gpu::Samplers& samplers) {
-                     samplers.bind(p, "u_buffer", sharpened_.color());
-                     p.set("u_edge", float(edge_));
-                     p.set("u_columns", float(first), float(std::min(last, buffer_.width())));
-                   });
-    gpu::PassState reshade;
-    reshade.stencil_func = GL_EQUAL;
-    reshade.stencil_ref = 1;
-    if (!query_.id()) query_ = gpu::Query::create(GL_SAMPLES_PASSED);
-    glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-    kit_.scene_pass(
-        scene, view, kit_.scene_program(scene, "marwarp/shade_edges.frag"), buffer_, reshade,
-        [&](const gpu::Program& p, gpu::Samplers& samplers) {
-          set_shade(p, samplers);
-          p.set("u_edge_samples", 4);
-        },
-        &cover);
-    glEndQuery(GL_SAMPLES_PASSED);
-    GLuint64 n = 0;
-    glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &n);
-    return double(n);
-  }
-
   std::vector<OverlayShape> overlay(const GazeState& gaze) const override {
     // The native disc, then rings where the buffer's samples lie 2, 4 and 8
     // pixels apart.
@@ -389,7 +350,6 @@ class MarWarp final : public Technique {
   bool has_mapping_ = false;
   PassKit kit_;
   gpu::RenderTarget buffer_, sharpened_, fovea_;
-  gpu::Query query_;
 };
 
 }  // namespace

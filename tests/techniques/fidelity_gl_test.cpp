@@ -250,7 +250,12 @@ TEST_F(Fidelity, LogpolarFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
       EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea))) << name;
       const double periphery = mean_linear_luminance(ref, gaze, fovea);
       EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
-      EXPECT_LT(s.shaded_pixels, 0.25 * W * H);
+      // The buffer and the disc shade under a quarter of the pixels; the
+      // edges' four samples per reshaded texel add up to a third more on
+      // "detail", the aliasing worst case.
+      ASSERT_EQ(s.parts.size(), 3u);
+      EXPECT_LT(s.parts[0].pixels + s.parts[1].pixels, 0.25 * W * H) << name;
+      EXPECT_LT(s.shaded_pixels, 0.4 * W * H) << name;
     }
   }
 }

@@ -92,6 +92,20 @@ class PassKit {
                const gpu::RenderTarget& target, const SetUniforms& set,
                const gpu::PassState& state = {}, bool early = false,
                const std::vector<PixelRect>* cover = nullptr);
+  /// Antialiasing in a warped buffer (marwarp, logpolar): marks in
+  /// `buffer`'s stencil the texels of `cover` (columns [first, last); rows
+  /// wrap) whose linear luminance differs from a neighbour's by more than
+  /// `contrast` of the brighter (pass_kit/edges.frag, reading a copy of the
+  /// colour in `scratch`, a texture of the buffer's size and format: reading
+  /// the framebuffer drawn into is a feedback loop, which llvmpipe's threads
+  /// resolve differently from run to run), then reshades those with four
+  /// samples on a rotated grid through `mapping` (pass_kit/shade_edges.frag;
+  /// `set` sets the mapping's uniforms). The buffer needs a stencil, cleared
+  /// to 0. Returns the texels reshaded (each costs four samples).
+  double supersample_edges(Scene& scene, const View& view, const std::string& mapping,
+                           const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
+                           const std::vector<PixelRect>& cover, int first, int last,
+                           double contrast, const SetUniforms& set);
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.

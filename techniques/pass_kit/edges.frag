@@ -1,9 +1,11 @@
-// Marks for supersampling (stencil 1; everything else is discarded) the
-// texels whose linear luminance differs from their four neighbours' by more
-// than u_edge of the brighter (a silhouette, a small object, a sharp
-// highlight: where one sample per texel aliases). Neighbours are taken
-// within the columns this pass covers (u_columns); one not shaded this
-// frame (alpha 0: the buffer is cleared) counts as the texel itself.
+// PassKit::supersample_edges: marks for supersampling (stencil 1;
+// everything else is discarded) the texels of a warped buffer whose linear
+// luminance differs from their four neighbours' by more than u_edge of the
+// brighter (a silhouette, a small object, a sharp highlight: where one
+// sample per texel aliases). Neighbours are taken within the columns this
+// pass covers (u_columns); rows wrap (they are angles around the gaze). One
+// not shaded this frame (alpha 0: the buffer is cleared) counts as the
+// texel itself.
 uniform sampler2D u_buffer;
 uniform float u_edge;
 uniform vec2 u_columns;  // the first column and one past the last

@@ -1,9 +1,10 @@
 // Reshades the texels edges.frag marked (stencil test before the shader:
 // the others are never run) with four samples on a rotated grid in the
-// texel, averaged in linear light. The count is a uniform (4) so that the
-// loop is not unrolled: the scene's shading is compiled once, not four times.
+// texel, each mapped to the screen by the technique's foveate_map (the
+// mapping file comes first, as for shade_main.frag), averaged in linear
+// light. The count is a uniform (4) so that the loop is not unrolled: the
+// scene's shading is compiled once, not four times.
 #include "color.glsl"
-#include "marwarp/map_warp.glsl"
 layout(early_fragment_tests) in;
 uniform int u_edge_samples;
 out vec4 o_color;
