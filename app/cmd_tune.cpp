@@ -84,8 +84,11 @@ void run(const TuneArgs& a) {
   c.bench.session = session_callbacks();
   c.stage = [&](const std::string& scene, int stage, int candidates) {
     if (!quiet() && !a.json) {
+      // Stage 5 times again settings already measured (tune.hpp).
       std::cerr << "tune: " << scene << ", stage " << stage << ": " << candidates
-                << " candidates beside native" << std::endl;
+                << (candidates == 1 ? " candidate" : " candidates")
+                << (stage == 5 ? " timed again side by side" : "") << " beside native"
+                << std::endl;
     }
   };
   c.bench.start = [&](int steps, int metrics_steps) {

@@ -264,7 +264,7 @@ TechniqueInfo checkerboard_info() {
       "; default where the MAR in pixels, w(e) ppd(e), reaches twice the largest gap the region's "
       "pattern leaves between kept pixels: two samples per resolvable cycle across the holes";
   t.params = {
-      plan_margin_param(3.0),
+      plan_margin_param(2.0),
       param("block", "quad size n (tiles are 2n x 2n); 4 matches llvmpipe's 4x4 rejection", "px",
             ParamType::Integer, 1, 256, 4),
       param("fractions",

@@ -425,7 +425,7 @@ TechniqueInfo logpolar_info() {
       "growing with eccentricity).";
   t.source = "Meng, Du, Zwicker, Varshney, Kernel Foveated Rendering, 2018";
   t.params = {
-      plan_margin_param(2.5),
+      plan_margin_param(1.5),
       param("fovea_deg",
             "smallest radius of the native disc at the gaze (it also reaches out to where the "
             "buffer's samples are no closer together than native pixels)",

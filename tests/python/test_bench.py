@@ -52,7 +52,7 @@ def test_parameters_sweeps_and_video(fv, tmp_path):
     plain = tiny(fv, techniques=["checkerboard"], size=(640, 360), metrics=False, frames=1)
     assert m["margin"] == 1.0 and plain["margin"] is None  # None: each technique's own
     assert m["results"][0]["parameters"]["margin"] == 1.0
-    assert plain["results"][0]["parameters"]["margin"] == 3.0
+    assert plain["results"][0]["parameters"]["margin"] == 2.0
     assert m["results"][0]["parameters"]["r1"] < plain["results"][0]["parameters"]["r1"]
     video = tmp_path / "b.mp4"
     v = tiny(fv, techniques=["layered"], metrics=False, video=str(video), side_by_side=True)

@@ -165,9 +165,9 @@ def test_techniques_and_their_derived_defaults(fv):
     assert (layers["min"], layers["max"], layers["default"], layers["type"]) == (1, 6, 2, "integer")
     assert ts["lodmask"]["needs_meshes"]
     # Each technique's planning margin comes first; logpolar's sigma at
-    # 1920x1080 is derived for it (1.99 at the paper's plan, margin 1; 1 at
-    # its own 2.5, where the MAR allows no coarser buffer).
+    # 1920x1080 is derived for it (1.99 at the paper's plan, margin 1; 1.28
+    # at its own 1.5).
     margin = ts["logpolar"]["params"][0]
-    assert margin["key"] == "margin" and margin["default"] == 2.5
+    assert margin["key"] == "margin" and margin["default"] == 1.5
     sigma = next(p for p in ts["logpolar"]["params"] if p["key"] == "sigma")
     assert 1.0 <= sigma["default"] < 1.99

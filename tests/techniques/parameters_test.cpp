@@ -84,7 +84,7 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   // Declared first by every built-in technique but native, with the margin
   // `foveate tune` chose at 1920x1080 (docs/fidelity.md).
   const std::map<std::string, double> own = {
-      {"layered", 1.5}, {"logpolar", 2.5}, {"checkerboard", 3.0}, {"vrs", 3.0},
+      {"layered", 1.5}, {"logpolar", 1.5}, {"checkerboard", 2.0}, {"vrs", 3.0},
       {"inset", 1.25},  {"lodmask", 2.0},  {"marwarp", 2.0}};
   for (const auto& [name, margin] : own) {
     const TechniqueInfo& t = technique_info(name);
@@ -107,12 +107,12 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   EXPECT_EQ(error_of([&] { resolve_parameters(layered, c); }),
             "layered parameter margin=0.5: out of range [1, 4]");
   // The plan is for the acuity made finer by the margin, and so are the
-  // defaults derived from the acuity model: checkerboard at its own 3 has
-  // the regions of the paper's plan (margin 1) for the model made 3 times finer.
+  // defaults derived from the acuity model: checkerboard at its own 2 has
+  // the regions of the paper's plan (margin 1) for the model made 2 times finer.
   const TechniqueInfo& cb = technique_info("checkerboard");
   TechniqueConfig paper = config(1920, 1080);
   paper.margin = 1.0;
-  paper.acuity = paper.acuity.finer(3.0);
+  paper.acuity = paper.acuity.finer(2.0);
   const ParamValues own_values = resolve_parameters(cb, config(1920, 1080));
   for (const char* key : {"r1", "r2", "r3"}) {
     EXPECT_EQ(own_values.real(key), resolve_parameters(cb, paper).real(key)) << key;
@@ -126,8 +126,8 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
         << key;
   }
   const TechniqueConfig planned = planning_config(config(1920, 1080), own_values);
-  EXPECT_DOUBLE_EQ(planned.acuity.slope, AcuityModel::preset("A").slope / 3.0);
-  EXPECT_DOUBLE_EQ(planned.acuity.w0_deg, AcuityModel::preset("A").w0_deg / 3.0);
+  EXPECT_DOUBLE_EQ(planned.acuity.slope, AcuityModel::preset("A").slope / 2.0);
+  EXPECT_DOUBLE_EQ(planned.acuity.w0_deg, AcuityModel::preset("A").w0_deg / 2.0);
 }
 
 TEST(Parameters, BadParametersAreErrorsBeforeAnythingIsMade) {
