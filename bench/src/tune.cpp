@@ -64,10 +64,6 @@ std::vector<std::string> tuned_techniques(const TuneOptions& o) {
 // together (Search::retime), at most kContenders of them per technique.
 constexpr double kContenderShare = 0.85;
 constexpr size_t kContenders = 3;
-// Stage 3: a change that raises JOD by more than this is tried with the
-// others like it at up to kLowerMargins lower margins (coarser plans).
-constexpr double kJodRaise = 0.02;
-constexpr std::ptrdiff_t kLowerMargins = 2;
 
 class Search {
  public:
@@ -180,52 +176,19 @@ class Search {
     return c;
   }
 
-  // The single changes that kept the bound and gained speed, together; and
-  // the changes that raised JOD, whatever they cost, together at the
-  // kLowerMargins margins below the best point's: quality a parameter buys
-  // can pay for a coarser plan (layered without half rate at a lower
-  // margin), which changes one at a time from the best margin never reach.
+  // The combinations of stage 2's changes (tune_combinations).
   std::vector<Candidate> stage3() const {
     std::vector<Candidate> c;
     for (const std::string& t : techniques_) {
       const TunePoint* best = best_point(scene_, t);
       if (!best) continue;
-      Params combined = best->params, better = best->params;
-      int changes = 0, raises = 0;
-      for (const Axis& a : axes_of(t)) {
-        if (a.key == kPlanMarginKey) continue;
-        const TunePoint *gain = nullptr, *raise = nullptr;
-        for (const TunePoint& p : out_.points) {
-          if (p.scene != scene_ || p.technique != t || p.stage != 2 ||
-              !differs_only_in(p.params, best->params, a.key)) {
-            continue;
-          }
-          if (p.within_bound && p.speedup > best->speedup && (!gain || p.speedup > gain->speedup))
-            gain = &p;
-          if (p.jod > best->jod + kJodRaise && (!raise || p.jod > raise->jod)) raise = &p;
-        }
-        if (gain) {
-          combined[a.key] = gain->params.at(a.key);
-          ++changes;
-        }
-        if (raise) {
-          better[a.key] = raise->params.at(a.key);
-          ++raises;
-        }
+      std::vector<TunePoint> stage2;
+      for (const TunePoint& p : out_.points) {
+        if (p.scene == scene_ && p.technique == t && p.stage == 2) stage2.push_back(p);
       }
-      if (changes >= 2) c.push_back({t, combined});
-      const auto margin = best->params.find(kPlanMarginKey);
-      if (raises == 0 || margin == best->params.end()) continue;
-      for (const Axis& a : axes_of(t)) {
-        if (a.key != kPlanMarginKey) continue;
-        const auto idx =
-            std::find(a.values.begin(), a.values.end(), margin->second) - a.values.begin();
-        for (std::ptrdiff_t j = idx - 1; j >= 0 && j >= idx - kLowerMargins; --j) {
-          Params p = better;
-          p[kPlanMarginKey] = a.values[static_cast<size_t>(j)];
-          c.push_back({t, p});
-        }
-      }
+      std::vector<std::pair<std::string, std::vector<double>>> axes;
+      for (const Axis& a : axes_of(t)) axes.emplace_back(a.key, a.values);
+      for (Params& p : tune_combinations(stage2, *best, axes)) c.push_back({t, std::move(p)});
     }
     return c;
   }
@@ -268,18 +231,6 @@ class Search {
         mine.push_back(all[i]);
     }
     return mine;
-  }
-
-  static bool differs_only_in(const Params& a, const Params& b, const std::string& key) {
-    std::set<std::string> keys;
-    for (const auto& [k, v] : a) keys.insert(k);
-    for (const auto& [k, v] : b) keys.insert(k);
-    for (const std::string& k : keys) {
-      const auto ia = a.find(k), ib = b.find(k);
-      const bool same = ia != a.end() && ib != b.end() && ia->second == ib->second;
-      if (!same && k != key) return false;
-    }
-    return a.count(key) && (!b.count(key) || a.at(key) != b.at(key));
   }
 
   bool seen(const std::string& scene, const Candidate& c) const {

@@ -1,5 +1,6 @@
 // The choice of foveate tune (tune.hpp): each technique's settings ranked
-// over every scene it ran on, and its front per scene.
+// over every scene it ran on, its front per scene, and the combinations of
+// single changes its search tries in stage 3.
 #include "tune_choice.hpp"
 
 #include <algorithm>
@@ -12,6 +13,78 @@
 namespace foveate::bench {
 
 using Params = std::map<std::string, double>;
+
+namespace {
+
+// Stage 3: a change that raises JOD by more than this is tried with the
+// others like it at up to kLowerMargins lower margins (coarser plans).
+constexpr double kJodRaise = 0.02;
+constexpr std::ptrdiff_t kLowerMargins = 2;
+
+// Whether `a` differs from `b` in `key` alone.
+bool differs_only_in(const Params& a, const Params& b, const std::string& key) {
+  std::set<std::string> keys;
+  for (const auto& [k, v] : a) keys.insert(k);
+  for (const auto& [k, v] : b) keys.insert(k);
+  for (const std::string& k : keys) {
+    const auto ia = a.find(k), ib = b.find(k);
+    const bool same = ia != a.end() && ib != b.end() && ia->second == ib->second;
+    if (!same && k != key) return false;
+  }
+  // (A key absent from one is at its default there.)
+  return a.count(key) != b.count(key) || (a.count(key) && a.at(key) != b.at(key));
+}
+
+// `to`'s `key` as in `from` (absent there: at its default, so absent here).
+void take(Params& to, const Params& from, const std::string& key) {
+  const auto it = from.find(key);
+  if (it == from.end()) {
+    to.erase(key);
+  } else {
+    to[key] = it->second;
+  }
+}
+
+}  // namespace
+
+std::vector<Params> tune_combinations(
+    const std::vector<TunePoint>& stage2, const TunePoint& best,
+    const std::vector<std::pair<std::string, std::vector<double>>>& axes) {
+  std::vector<Params> out;
+  Params combined = best.params, better = best.params;
+  int changes = 0, raises = 0;
+  for (const auto& [key, values] : axes) {
+    if (key == kPlanMarginKey) continue;
+    const TunePoint *gain = nullptr, *raise = nullptr;
+    for (const TunePoint& p : stage2) {
+      if (!differs_only_in(p.params, best.params, key)) continue;
+      if (p.within_bound && p.speedup > best.speedup && (!gain || p.speedup > gain->speedup))
+        gain = &p;
+      if (p.jod > best.jod + kJodRaise && (!raise || p.jod > raise->jod)) raise = &p;
+    }
+    if (gain) {
+      take(combined, gain->params, key);
+      ++changes;
+    }
+    if (raise) {
+      take(better, raise->params, key);
+      ++raises;
+    }
+  }
+  if (changes >= 2) out.push_back(combined);
+  const auto margin = best.params.find(kPlanMarginKey);
+  if (raises == 0 || margin == best.params.end()) return out;
+  for (const auto& [key, values] : axes) {
+    if (key != kPlanMarginKey) continue;
+    const auto idx = std::find(values.begin(), values.end(), margin->second) - values.begin();
+    for (std::ptrdiff_t j = idx - 1; j >= 0 && j >= idx - kLowerMargins; --j) {
+      Params p = better;
+      p[kPlanMarginKey] = values[static_cast<size_t>(j)];
+      out.push_back(p);
+    }
+  }
+  return out;
+}
 
 // The technique's settings judged on every scene it ran on, best first: those
 // within the bound on every scene by speed, then the others by how close

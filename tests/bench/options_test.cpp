@@ -299,3 +299,52 @@ TEST(Report, MarksRunsWithLittleToSaveAndFramesInFallback) {
   EXPECT_EQ(j["savings"]["little_to_save"], true);
   EXPECT_DOUBLE_EQ(j["savings"]["pixel_bound"].get<double>(), 1.04);
 }
+
+// tune's stage 3 (no GL: points written by hand). From the best point
+// (margin 2), stage 2 found two changes that kept the bound and gained speed
+// (transition, layers), and one that raised JOD at a cost (half_rate 0); a
+// fourth change (jitter) did neither.
+TEST(Tune, CombinesTheChangesThatPaidAndSpendsQualityOnCoarserPlans) {
+  const auto point = [](std::map<std::string, double> params, double speedup, double jod) {
+    TunePoint p;
+    p.scene = "guenter";
+    p.technique = "layered";
+    p.params = std::move(params);
+    p.stage = 2;
+    p.speedup = speedup;
+    p.jod = jod;
+    p.within_bound = jod >= 9.5;
+    return p;
+  };
+  const TunePoint best = point({{"margin", 2.0}, {"half_rate", 1.0}}, 1.5, 9.55);
+  const std::vector<std::pair<std::string, std::vector<double>>> axes = {
+      {"margin", {1.0, 1.25, 1.5, 2.0, 2.5, 3.0}},
+      {"transition", {0.1, 0.2, 0.4}},
+      {"layers", {2, 3}},
+      {"half_rate", {0, 1}},
+      {"jitter", {0, 1}}};
+  const std::vector<TunePoint> stage2 = {
+      point({{"margin", 2.0}, {"half_rate", 1.0}, {"transition", 0.1}}, 1.6, 9.52),
+      point({{"margin", 2.0}, {"half_rate", 1.0}, {"transition", 0.4}}, 1.55, 9.56),
+      point({{"margin", 2.0}, {"half_rate", 1.0}, {"layers", 3}}, 1.7, 9.50),
+      // Faster, but over the bound: not combined.
+      point({{"margin", 2.0}, {"half_rate", 1.0}, {"jitter", 0}}, 1.9, 9.40),
+      // Slower and better by 0.15 JOD (half rate at its default, 0: absent).
+      point({{"margin", 2.0}}, 1.2, 9.70),
+      // Another margin: not a single change of the best point.
+      point({{"margin", 1.5}, {"half_rate", 1.0}, {"transition", 0.1}}, 2.5, 9.6)};
+  const std::vector<std::map<std::string, double>> c = tune_combinations(stage2, best, axes);
+  ASSERT_EQ(c.size(), 3u);
+  // The fastest speed-gaining value of each parameter, together.
+  EXPECT_EQ(c[0], (std::map<std::string, double>{
+                      {"margin", 2.0}, {"half_rate", 1.0}, {"transition", 0.1}, {"layers", 3}}));
+  // The JOD-raising change at the two margins below 2.
+  EXPECT_EQ(c[1], (std::map<std::string, double>{{"margin", 1.5}}));
+  EXPECT_EQ(c[2], (std::map<std::string, double>{{"margin", 1.25}}));
+  // Nothing paid: nothing to combine. At the lowest margin there is no
+  // coarser plan to spend quality on.
+  EXPECT_TRUE(tune_combinations({}, best, axes).empty());
+  TunePoint lowest = best;
+  lowest.params["margin"] = 1.0;
+  EXPECT_TRUE(tune_combinations({point({{"margin", 1.0}}, 1.2, 9.70)}, lowest, axes).empty());
+}

@@ -28,6 +28,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foveate/bench/bench.hpp"
@@ -100,6 +101,16 @@ TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks =
 /// beats in both speed and JOD, by speedup.
 std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
                                   const std::string& technique);
+/// Stage 3 of the search for one technique on one scene, from its best point
+/// and its stage-2 points (one tuned parameter changed at a time from the
+/// best): the changes that kept the bound and gained speed, together (when
+/// there are two or more), and the changes that raised JOD by more than 0.02,
+/// together at the two margins below the best point's (quality one parameter
+/// buys can pay for a coarser plan). `axes`: each tuned key and its values,
+/// the margin's ascending.
+std::vector<std::map<std::string, double>> tune_combinations(
+    const std::vector<TunePoint>& stage2, const TunePoint& best,
+    const std::vector<std::pair<std::string, std::vector<double>>>& axes);
 /// Chooses `chosen` and `verdict` from the points (run_tune and merging do).
 void choose_parameters(TuneResult& r);
 
