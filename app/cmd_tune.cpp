@@ -87,8 +87,7 @@ void run(const TuneArgs& a) {
       // Stage 5 times again settings already measured (tune.hpp).
       std::cerr << "tune: " << scene << ", stage " << stage << ": " << candidates
                 << (candidates == 1 ? " candidate" : " candidates")
-                << (stage == 5 ? " timed again side by side" : "") << " beside native"
-                << std::endl;
+                << (stage == 5 ? " timed again side by side" : "") << " beside native" << std::endl;
     }
   };
   c.bench.start = [&](int steps, int metrics_steps) {
