@@ -9,6 +9,7 @@
 #include "convert.hpp"
 #include "foveate/bench/report.hpp"
 #include "foveate/bench/session.hpp"
+#include "foveate/bench/tune.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
 #include "foveate/core/parse.hpp"
@@ -207,6 +208,46 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
   return d;
 }
 
+// `foveate tune` in this process: the search, its tune.json as a dict and,
+// with `out`, its files (params.json for params_file= of the command line).
+py::dict tune(const std::vector<std::string>& scenes,
+              std::optional<std::vector<std::string>> techniques, double bound, py::handle size,
+              int frames, int warmup, const std::string& display, const std::string& acuity_preset,
+              std::optional<double> slope, const std::string& gaze, const std::string& reference,
+              double fps, bool grid, const std::string& out, bool overwrite,
+              double frame_timeout_s) {
+  bench::TuneOptions o;
+  keywords([&] {
+    o.bench.session =
+        session_from(scenes.empty() ? std::string() : scenes.front(), size, display, acuity_preset,
+                     "", slope, std::nullopt, gaze, fps, false, py::none(), frame_timeout_s);
+    o.scenes = scenes;
+    o.techniques = std::move(techniques);
+    o.bound_jod = bound;
+    o.bench.frames = frames;
+    o.bench.warmup = warmup;
+    o.bench.reference = bench::for_field("reference", [&] { return parse_reference(reference); });
+    o.bench.command = "foveate.tune (Python)";
+    o.grid = grid;
+    bench::validate(o);
+  });
+  prepare_out(out, overwrite);
+  bench::TuneResult r;
+  Notices notices;
+  {
+    py::gil_scoped_release unlocked;
+    bench::TuneCallbacks callbacks;
+    callbacks.bench.session.notice = notices.collect();
+    keywords([&] {
+      r = bench::run_tune(o, callbacks);
+      if (!out.empty()) bench::write_tune_report(r, out);
+    });
+  }
+  auto d = to_python(bench::tune_json(r)).cast<py::dict>();
+  d["notes"] = notices.emit();
+  return d;
+}
+
 // Frames of one technique, as `foveate render` renders them, read back.
 py::dict render(const std::string& scene, const std::string& technique, py::handle size, int frames,
                 const std::string& display, const std::string& acuity_preset,
@@ -360,6 +401,28 @@ side by side); "shaded_pixels" and "native_pixels" per frame; "gaze_report";
 "notes" (also given as warnings, e.g. that the size leaves foveation little
 to save). Keywords as in bench(); technique one name; overlay=True draws the
 technique's layers or regions and the gaze.)");
+  const bench::TuneOptions tune_defaults;
+  m.def("tune", &tune, py::kw_only(), py::arg("scenes") = tune_defaults.scenes,
+        py::arg("techniques") = py::none(), py::arg("bound") = tune_defaults.bound_jod,
+        py::arg("size") = size_text(tune_defaults.bench.session.size),
+        py::arg("frames") = tune_defaults.bench.frames,
+        py::arg("warmup") = tune_defaults.bench.warmup,
+        py::arg("display") = tune_defaults.bench.session.display, py::arg("acuity_preset") = "",
+        py::arg("slope") = py::none(), py::arg("gaze") = "", py::arg("reference") = "ssaa:4",
+        py::arg("fps") = tune_defaults.bench.session.fps, py::arg("grid") = false,
+        py::arg("out") = "", py::arg("overwrite") = false,
+        py::arg("frame_timeout_s") = tune_defaults.bench.session.frame_timeout_s,
+        R"(Runs `foveate tune` in this process: for every technique (techniques: a list,
+None = every one but native) the fastest setting of its tuned parameters whose
+FovVideoVDP JOD stays within `bound` of native's on every scene, judged against
+`reference` over `frames` frames of a moving camera. Returns tune.json as a
+dict: "points" (every candidate: scene, technique, params, stage, speedup, jod,
+below_native, pixel_ratio, within_bound), "chosen" (technique -> parameters),
+"verdict", "native_jod" per scene, "warmup_frames" (every candidate is judged on
+the frames after them), and "notes". out: a folder for tune.json, tune.md,
+params.json (for --params-file) and report.html, refused if it holds an earlier
+run's output unless overwrite=True. grid=True evaluates the fixed grid instead
+of the staged search. Other keywords as in bench().)");
   m.def("read_results", &read_results, py::arg("path"),
         "results.json of a bench run (the file or its folder) as a dict");
   m.def("techniques", &technique_list, py::arg("display") = "desktop-1080p",

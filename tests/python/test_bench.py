@@ -115,3 +115,29 @@ def test_a_stereo_bench_reports_each_eye(fv):
     assert left["quality"]["frames"] == 2 and layered["quality"]["frames"] == 4
     with pytest.raises(fv.Error, match="not a stereo head-mounted display"):
         tiny(fv, display="hmd-quest3", stereo=True)
+
+
+def test_tune_chooses_within_the_bound_and_writes_its_files(fv, tmp_path):
+    t = fv.tune(scenes=["cheap"], techniques=["inset"], size=(96, 54), frames=2, warmup=1,
+                reference="ssaa:2", bound=0.5, out=str(tmp_path))
+    assert set(t["native_jod"]) == {"cheap"}
+    points = [p for p in t["points"] if p["technique"] == "inset"]
+    margins = [p for p in points if set(p["params"]) == {"margin"}]
+    assert len(margins) == 6  # every tuned margin, the rest at their defaults
+    for p in points:
+        assert p["within_bound"] == (p["below_native"] <= 0.5)
+    # On the cheap scene every margin is within the bound; the choice is one of them.
+    within = [p for p in points if p["within_bound"]]
+    assert within and any(p["params"] == t["chosen"]["inset"] for p in within)
+    assert t["warmup_frames"] >= 1
+    params = json.loads((tmp_path / "params.json").read_text())
+    assert params["techniques"]["inset"] == t["chosen"]["inset"]
+    assert (tmp_path / "tune.md").read_text().startswith("Within 0.50 JOD of native")
+    with pytest.raises(fv.Error, match="holds the output of an earlier run"):
+        fv.tune(scenes=["cheap"], techniques=["inset"], size=(96, 54), out=str(tmp_path))
+    with pytest.raises(fv.Error, match="techniques: native is the baseline"):
+        fv.tune(scenes=["cheap"], techniques=["native"])
+    with pytest.raises(fv.Error, match="bound_jod: expected a JOD distance"):
+        fv.tune(scenes=["cheap"], bound=0)
+    with pytest.raises(fv.Error, match="scenes: give at least one scene"):
+        fv.tune(scenes=[])
