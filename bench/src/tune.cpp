@@ -1,12 +1,12 @@
 // The search of foveate tune (tune.hpp): candidates as explicit benchmark
-// runs, stage by stage, per scene; then the choice over every scene.
+// runs, stage by stage, per scene (the choice over every scene and stage
+// 3's combinations: tune_choice.cpp).
 #include "foveate/bench/tune.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 
-#include "foveate/core/stats.hpp"
 #include "tune_choice.hpp"
 
 namespace foveate::bench {

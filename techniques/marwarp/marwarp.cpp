@@ -112,11 +112,9 @@ class MarWarp final : public Technique {
     stats.native_pixels = double(f.W) * f.H;
     if (f.has_buffer) {
       // Texels left unshaded this frame read as alpha 0 (the prefilter and
-      // the edge marks leave them out), never as an earlier frame's.
-      gpu::open_write_masks();
-      const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-      glClearNamedFramebufferfv(buffer_.framebuffer(), GL_COLOR, 0, clear);
-      glClearNamedFramebufferfi(buffer_.framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+      // the edge marks leave them out), never as an earlier frame's; the
+      // stencil's marks are cleared with it.
+      buffer_.clear(0, 0, 0, 0);
     }
     // Shading, level by level: level k's G-buffer has pixels of 2^k native
     // ones and shades the texels whose spacing is at least gbuffer_ratio
