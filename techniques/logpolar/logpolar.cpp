@@ -238,8 +238,7 @@ class LogPolar final : public Technique {
                       bool jitter, int frame, double& edges) {
     const int W = native.target_width, H = native.target_height;
     const int bw = m.buffer_w, bh = m.buffer_h;
-    // The stencil marks the texels to supersample (edge_contrast).
-    buffer_.ensure(bw, bh, GL_SRGB8_ALPHA8, edge_ > 0.0);
+    buffer_.ensure(bw, bh, GL_SRGB8_ALPHA8);
     buffer_.clear(0, 0, 0, 0);
     const double jx = jitter ? halton(frame, 2) - 0.5 : 0.0;
     const double jy = jitter ? halton(frame, 3) - 0.5 : 0.0;

@@ -112,8 +112,7 @@ class MarWarp final : public Technique {
     stats.native_pixels = double(f.W) * f.H;
     if (f.has_buffer) {
       // Texels left unshaded this frame read as alpha 0 (the prefilter and
-      // the edge marks leave them out), never as an earlier frame's; the
-      // stencil's marks are cleared with it.
+      // the edge marks leave them out), never as an earlier frame's.
       buffer_.clear(0, 0, 0, 0);
     }
     // Shading, level by level: level k's G-buffer has pixels of 2^k native
@@ -157,7 +156,7 @@ class MarWarp final : public Technique {
     if (f.has_buffer) {
       const int bw = std::max({buffer_.width(), columns, 1});
       if (buffer_.width() != bw || buffer_.height() != f.m.rows) {
-        buffer_.ensure(bw, f.m.rows, GL_RGBA16F, true);  // stencil: the texels to supersample
+        buffer_.ensure(bw, f.m.rows, GL_RGBA16F);
         sharpened_.ensure(bw, f.m.rows, GL_RGBA16F);
         for (gpu::RenderTarget* t : {&buffer_, &sharpened_}) {
           t->color().set_wrap(GL_CLAMP_TO_EDGE);

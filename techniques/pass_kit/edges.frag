@@ -1,11 +1,12 @@
-// PassKit::supersample_edges: marks for supersampling (stencil 1;
-// everything else is discarded) the texels of a warped buffer whose linear
-// luminance differs from their four neighbours' by more than u_edge of the
-// brighter (a silhouette, a small object, a sharp highlight: where one
-// sample per texel aliases). Neighbours are taken within the columns this
-// pass covers (u_columns); rows wrap (they are angles around the gaze). One
-// not shaded this frame (alpha 0: the buffer is cleared) counts as the
-// texel itself.
+// PassKit::supersample_edges: marks for supersampling (bit x % 32 of word
+// (x / 32, y) of u_marks, so that listing them reads a 32nd as much) the
+// texels of a warped buffer whose linear luminance differs from their four
+// neighbours' by more than u_edge of the brighter (a silhouette, a small
+// object, a sharp highlight: where one sample per texel aliases).
+// Neighbours are taken within the columns this pass covers (u_columns); rows
+// wrap (they are angles around the gaze). One not shaded this frame (alpha
+// 0: the buffer is cleared) counts as the texel itself.
+layout(r32ui, binding = 0) uniform coherent uimage2D u_marks;
 uniform sampler2D u_buffer;
 uniform float u_edge;
 uniform vec2 u_columns;  // the first column and one past the last
@@ -24,5 +25,6 @@ void main() {
   float d = luma(ivec2(p.x, (p.y + size.y - 1) % size.y), c);
   float lo = min(c, min(min(l, r), min(u, d)));
   float hi = max(c, max(max(l, r), max(u, d)));
-  if (hi - lo <= u_edge * (hi + 0.02)) discard;
+  if (hi - lo > u_edge * (hi + 0.02))
+    imageAtomicOr(u_marks, ivec2(p.x >> 5, p.y), 1u << uint(p.x & 31));
 }

@@ -199,41 +199,6 @@ double PassKit::shade(Scene& scene, const View& view, const std::string& mapping
   return static_cast<double>(samples);
 }
 
-double PassKit::supersample_edges(Scene& scene, const View& view, const std::string& mapping,
-                                  const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
-                                  const std::vector<PixelRect>& cover, int first, int last,
-                                  double contrast, const SetUniforms& set) {
-  glCopyImageSubData(buffer.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, scratch.id(), GL_TEXTURE_2D, 0,
-                     0, 0, 0, buffer.width(), buffer.height(), 1);
-  gpu::PassState mark;
-  mark.stencil_func = GL_ALWAYS;
-  mark.stencil_ref = 1;
-  mark.stencil_pass_op = GL_REPLACE;
-  mark.stencil_write = true;
-  mark.color_off = true;
-  rect_pass(over_rects("pass_kit/edges.frag"), cover, buffer, mark,
-            [&](const gpu::Program& p, gpu::Samplers& samplers) {
-              samplers.bind(p, "u_buffer", scratch);
-              p.set("u_edge", float(contrast));
-              p.set("u_columns", float(first), float(std::min(last, buffer.width())));
-            });
-  gpu::PassState reshade;
-  reshade.stencil_func = GL_EQUAL;
-  reshade.stencil_ref = 1;
-  glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-  scene_pass(
-      scene, view, scene_program_with(scene, mapping, "pass_kit/shade_edges.frag"), buffer, reshade,
-      [&](const gpu::Program& p, gpu::Samplers& samplers) {
-        set(p, samplers);
-        p.set("u_edge_samples", 4);
-      },
-      &cover);
-  glEndQuery(GL_SAMPLES_PASSED);
-  GLuint64 n = 0;
-  glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &n);
-  return static_cast<double>(n);
-}
-
 void set_rect_mapping(const gpu::Program& p, const View& v) {
   p.set("u_map_rect", float(v.x0), float(v.y0), float(v.x1 - v.x0), float(v.y1 - v.y0));
   p.set("u_map_target", float(v.target_width), float(v.target_height));

@@ -1,19 +1,25 @@
-// Reshades the texels edges.frag marked (stencil test before the shader:
-// the others are never run) with four samples on a rotated grid in the
-// texel, each mapped to the screen by the technique's foveate_map (the
-// mapping file comes first, as for shade_main.frag), averaged in linear
-// light. The count is a uniform (4) so that the loop is not unrolled: the
-// scene's shading is compiled once, not four times.
+// Reshades the texels edges.frag marked, packed: fragment (x, y) of this
+// pass shades entry x + y * width of the list (edges_list.comp), so every
+// fragment run is a marked texel (a pass over the buffer itself, stencil
+// tested, runs whole 4x4 blocks wherever one texel in them is marked). Four
+// samples on a rotated grid in the texel, each mapped to the screen by the
+// technique's foveate_map (the mapping file comes first, as for
+// shade_main.frag), averaged in linear light. The count is a uniform (4) so
+// that the loop is not unrolled: the scene's shading is compiled once, not
+// four times. Neighbouring fragments are unrelated texels: a scene's
+// screen-space derivatives mean nothing here.
 #include "color.glsl"
-layout(early_fragment_tests) in;
+uniform usampler2D u_edge_list;
 uniform int u_edge_samples;
 out vec4 o_color;
 const vec2 kOffsets[4] =
     vec2[4](vec2(0.125, 0.375), vec2(0.375, -0.125), vec2(-0.125, -0.375), vec2(-0.375, 0.125));
 void main() {
+  uint e = texelFetch(u_edge_list, ivec2(gl_FragCoord.xy), 0).r;
+  vec2 texel = vec2(float(e & 0xFFFFu), float(e >> 16)) + 0.5;
   vec3 sum = vec3(0.0);
   for (int i = 0; i < u_edge_samples; ++i) {
-    sum += foveate_linear(scene_shade(foveate_map(gl_FragCoord.xy + kOffsets[i & 3])).rgb);
+    sum += foveate_linear(scene_shade(foveate_map(texel + kOffsets[i & 3])).rgb);
   }
   o_color = vec4(sum / float(u_edge_samples), 1.0);
 }

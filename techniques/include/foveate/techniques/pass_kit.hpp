@@ -92,16 +92,19 @@ class PassKit {
                const gpu::RenderTarget& target, const SetUniforms& set,
                const gpu::PassState& state = {}, bool early = false,
                const std::vector<PixelRect>* cover = nullptr);
-  /// Antialiasing in a warped buffer (marwarp, logpolar): marks in
-  /// `buffer`'s stencil the texels of `cover` (columns [first, last); rows
-  /// wrap) whose linear luminance differs from a neighbour's by more than
-  /// `contrast` of the brighter (pass_kit/edges.frag, reading a copy of the
-  /// colour in `scratch`, a texture of the buffer's size and format: reading
-  /// the framebuffer drawn into is a feedback loop, which llvmpipe's threads
-  /// resolve differently from run to run), then reshades those with four
-  /// samples on a rotated grid through `mapping` (pass_kit/shade_edges.frag;
-  /// `set` sets the mapping's uniforms). The buffer needs a stencil, cleared
-  /// to 0. Returns the texels reshaded (each costs four samples).
+  /// Antialiasing in a warped buffer (marwarp, logpolar): marks the texels
+  /// of `cover` (columns [first, last); rows wrap) whose linear luminance
+  /// differs from a neighbour's by more than `contrast` of the brighter
+  /// (pass_kit/edges.frag, reading a copy of the colour in `scratch`, a
+  /// texture of the buffer's size and format: reading the framebuffer drawn
+  /// into is a feedback loop, which llvmpipe's threads resolve differently
+  /// from run to run), lists them in order (edges_list.comp), reshades them
+  /// packed side by side with four samples on a rotated grid through
+  /// `mapping` (shade_edges.frag; `set` sets the mapping's uniforms), and
+  /// writes each back to its texel (edges_scatter). Packed, only marked
+  /// texels are shaded: over the buffer itself a stencil test leaves whole
+  /// 4x4 blocks (llvmpipe) or 2x2 quads (GPUs) running for one marked texel.
+  /// Returns the texels reshaded (each costs four samples).
   double supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                            const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                            const std::vector<PixelRect>& cover, int first, int last,
@@ -124,6 +127,15 @@ class PassKit {
   DepthRegions regions_;  ///< pass_around_disc's
   std::map<std::string, gpu::Program> programs_;
   std::map<GLuint, std::string> pass_names_;  ///< by program id
+  /// supersample_edges' working storage, of the buffer's size.
+  struct EdgeScratch {
+    gpu::Texture marks;         ///< R32UI: a bit per texel, 1 = reshade
+    gpu::Texture list;          ///< R32UI: the marked texels, packed
+    gpu::RenderTarget shaded;   ///< their four-sample means, packed as the list
+    gpu::Buffer rows;           ///< total, then each row's first entry
+    gpu::Program list_program;  ///< edges_list.comp
+  };
+  EdgeScratch edges_;
 };
 
 /// GL coordinates (origin bottom-left) of a top-left-origin point.

@@ -1,0 +1,99 @@
+// PassKit::supersample_edges: mark, list, shade packed, write back.
+#include <algorithm>
+
+#include "foveate/gpu/profiler.hpp"
+#include "foveate/techniques/pass_kit.hpp"
+
+namespace foveate::tech {
+
+namespace {
+
+// 4x4 blocks of the packed pass (llvmpipe's unit) are filled row by row:
+// the rectangles that hold `count` fragments in rows of `width`.
+std::vector<PixelRect> packed_cover(int count, int width) {
+  std::vector<PixelRect> out;
+  const int full = count / width, rest = count % width;
+  if (full > 0) out.push_back({0, 0, width, full});
+  if (rest > 0) out.push_back({0, full, rest, full + 1});
+  return out;
+}
+
+}  // namespace
+
+double PassKit::supersample_edges(Scene& scene, const View& view, const std::string& mapping,
+                                  const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
+                                  const std::vector<PixelRect>& cover, int first, int last,
+                                  double contrast, const SetUniforms& set) {
+  const int w = buffer.width(), h = buffer.height();
+  EdgeScratch& e = edges_;
+  if (!e.list || e.list.width() != w || e.list.height() != h) {
+    e.marks = gpu::Texture::create_2d(GL_R32UI, (w + 31) / 32, h);
+    e.list = gpu::Texture::create_2d(GL_R32UI, w, h);
+    for (const gpu::Texture* t : {&e.marks, &e.list}) t->set_filter(GL_NEAREST, GL_NEAREST);
+    e.rows = gpu::Buffer::create(static_cast<GLsizeiptr>(sizeof(GLuint)) * (h + 1), nullptr);
+  }
+  e.shaded.ensure(w, h, GL_RGBA16F);
+  if (!e.list_program) {
+    e.list_program =
+        compiler_.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"pass_kit/edges_list.comp", {}}}}},
+                        "pass_kit/edges_list.comp");
+  }
+  GLuint count = 0;
+  {
+    const gpu::ProfileScope timed("edges");
+    glCopyImageSubData(buffer.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, scratch.id(), GL_TEXTURE_2D,
+                       0, 0, 0, 0, w, h, 1);
+    const GLuint zero = 0;
+    glClearTexImage(e.marks.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gpu::PassState mark;
+    mark.color_off = true;
+    rect_pass(over_rects("pass_kit/edges.frag"), cover, buffer, mark,
+              [&](const gpu::Program& p, gpu::Samplers& samplers) {
+                samplers.bind(p, "u_buffer", scratch);
+                p.set("u_edge", float(contrast));
+                p.set("u_columns", float(first), float(std::min(last, w)));
+              });
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(1, e.list.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, e.rows.id());
+    e.list_program.use();
+    const auto groups = static_cast<GLuint>((h + 63) / 64);
+    for (int step = 0; step < 3; ++step) {
+      e.list_program.set("u_step", step);
+      glDispatchCompute(step == 1 ? 1 : groups, 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                      GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glGetNamedBufferSubData(e.rows.id(), 0, sizeof(GLuint), &count);
+  }
+  if (count == 0) return 0.0;
+  const gpu::ProfileScope timed("shade_edges");
+  const std::vector<PixelRect> packed = packed_cover(static_cast<int>(count), w);
+  scene_pass(
+      scene, view, scene_program_with(scene, mapping, "pass_kit/shade_edges.frag"), e.shaded, {},
+      [&](const gpu::Program& p, gpu::Samplers& samplers) {
+        set(p, samplers);
+        samplers.bind(p, "u_edge_list", e.list);
+        p.set("u_edge_samples", 4);
+      },
+      &packed);
+  const gpu::Program& scatter =
+      built("pass_kit/edges_scatter", "pass_kit/edges_scatter.vert", "pass_kit/edges_scatter.frag");
+  buffer.bind();
+  gpu::apply({});
+  gpu::Samplers samplers;
+  scatter.use();
+  samplers.bind(scatter, "u_edge_list", e.list);
+  samplers.bind(scatter, "u_shaded", e.shaded.color());
+  scatter.set("u_buffer_size", float(w), float(h));
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+  return static_cast<double>(count);
+}
+
+}  // namespace foveate::tech

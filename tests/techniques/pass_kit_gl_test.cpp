@@ -1,0 +1,148 @@
+// PassKit::supersample_edges with a GL context: which texels it reshades,
+// what it writes there, and what it leaves alone.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "foveate/scenes/scene.hpp"
+#include "foveate/techniques/pass_kit.hpp"
+#include "gl_fixture.hpp"
+
+namespace foveate::tech {
+namespace {
+
+constexpr int kW = 40, kH = 24;
+// The pass covers columns [0, 36) only: marks in two words of 32 per row.
+constexpr int kLast = 36;
+
+using Texels = std::vector<std::array<float, 4>>;
+
+// A scene whose colour at screen position p is (p.x / 64, p.y / 64, 0.25),
+// sRGB-encoded as Shadertoy's output is.
+std::unique_ptr<Scene> gradient_scene() {
+  const auto path = std::filesystem::temp_directory_path() / "foveate_edges_gradient.glsl";
+  std::ofstream(path) << "void mainImage(out vec4 c, in vec2 p) {\n"
+                         "  c = vec4(p.x / 64.0, p.y / 64.0, 0.25, 1.0);\n}\n";
+  auto scene = load_scene(path.string());
+  FrameInput f;
+  f.width = kW;
+  f.height = kH;
+  scene->update(f);
+  return scene;
+}
+
+double linear(double s) { return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4); }
+
+// The mean of the four rotated-grid samples in texel (x, y), in linear light.
+std::array<double, 3> four_sample_mean(int x, int y) {
+  const double off[4][2] = {{0.125, 0.375}, {0.375, -0.125}, {-0.125, -0.375}, {-0.375, 0.125}};
+  std::array<double, 3> m{0, 0, linear(0.25)};
+  for (const auto& o : off) {
+    m[0] += linear((x + 0.5 + o[0]) / 64.0) / 4;
+    m[1] += linear((y + 0.5 + o[1]) / 64.0) / 4;
+  }
+  return m;
+}
+
+// edges.frag's rule, on the CPU: luminance against the four neighbours
+// (columns clamped to the covered ones, rows wrapping).
+bool marked(const Texels& t, int x, int y, double contrast) {
+  const auto luma = [&](int px, int py) {
+    const auto& v = t[size_t(py * kW + px)];
+    return 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2];
+  };
+  const double c = luma(x, y);
+  const double n[4] = {luma(std::max(x - 1, 0), y), luma(std::min(x + 1, kLast - 1), y),
+                       luma(x, (y + 1) % kH), luma(x, (y + kH - 1) % kH)};
+  const double lo = std::min({c, n[0], n[1], n[2], n[3]});
+  const double hi = std::max({c, n[0], n[1], n[2], n[3]});
+  return hi - lo > contrast * (hi + 0.02);
+}
+
+Texels read(const gpu::RenderTarget& t) {
+  Texels out(size_t(kW * kH));
+  glGetTextureImage(t.color().id(), 0, GL_RGBA, GL_FLOAT,
+                    static_cast<GLsizei>(out.size() * sizeof(out[0])), out.data());
+  return out;
+}
+
+class SupersampleEdgesTest : public test::GlTest {
+ protected:
+  // Runs the pass over `grey` (a luminance per texel, row 0 at the bottom)
+  // and checks every texel: the marked ones hold the scene's four-sample
+  // mean, the rest what they held. Returns the count the pass reported.
+  double run(const std::vector<float>& grey, Texels* after = nullptr) {
+    Texels before(size_t(kW * kH));
+    for (size_t i = 0; i < before.size(); ++i) before[i] = {grey[i], grey[i], grey[i], 1.0f};
+    gpu::RenderTarget buffer;
+    buffer.ensure(kW, kH, GL_RGBA16F);
+    glTextureSubImage2D(buffer.color().id(), 0, 0, 0, kW, kH, GL_RGBA, GL_FLOAT, before.data());
+    gpu::RenderTarget scratch;
+    scratch.ensure(kW, kH, GL_RGBA16F);
+    const View view = View::full(kW, kH);
+    const double n = kit_.supersample_edges(
+        *scene_, view, kMapRect, buffer, scratch.color(), {{0, 0, kLast, kH}}, 0, kLast, 0.25,
+        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
+    const Texels got = read(buffer);
+    int expected = 0;
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        const auto& g = got[size_t(y * kW + x)];
+        if (x < kLast && marked(before, x, y, 0.25)) {
+          ++expected;
+          const auto m = four_sample_mean(x, y);
+          for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(g[size_t(c)], m[size_t(c)], 2e-3) << x << "," << y;
+        } else {
+          for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(g[size_t(c)], before[size_t(y * kW + x)][size_t(c)], 1e-3) << x << "," << y;
+        }
+      }
+    }
+    EXPECT_EQ(n, double(expected));
+    if (after) *after = got;
+    return n;
+  }
+
+  PassKit kit_;
+  std::unique_ptr<Scene> scene_ = gradient_scene();
+};
+
+TEST_F(SupersampleEdgesTest, ReshadesTheContrastyTexelsOfTheCoverOnly) {
+  // A step from 0.2 to 0.8 between columns 23 and 24, one bright texel at
+  // (6, 8), and one at (38, 4), outside the covered columns.
+  std::vector<float> grey(size_t(kW * kH), 0.2f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 24; x < kW; ++x) grey[size_t(y * kW + x)] = 0.8f;
+  grey[size_t(8 * kW + 6)] = 0.9f;
+  grey[size_t(4 * kW + 38)] = 0.1f;
+  Texels first, second;
+  // Both sides of the step in every row, the bright texel and its four
+  // neighbours.
+  EXPECT_EQ(run(grey, &first), 2 * kH + 5);
+  // The same again, texel for texel (the list's order does not depend on
+  // the threads').
+  run(grey, &second);
+  EXPECT_EQ(first, second);
+}
+
+TEST_F(SupersampleEdgesTest, EveryTexelOfACheckerboardIsReshaded) {
+  // Rows of many marks each: the list spans many of its own rows.
+  std::vector<float> grey(size_t(kW * kH));
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) grey[size_t(y * kW + x)] = (x + y) % 2 ? 0.9f : 0.1f;
+  EXPECT_EQ(run(grey), kLast * kH);
+}
+
+TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
+  EXPECT_EQ(run(std::vector<float>(size_t(kW * kH), 0.5f)), 0);
+}
+
+}  // namespace
+}  // namespace foveate::tech
