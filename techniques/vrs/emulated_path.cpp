@@ -39,6 +39,7 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   upload_classes(classes_, grid_, gx, gy, classes.of_tile);
   FrameStats s;
   s.native_pixels = double(W) * H;
+  if (scene.info().has_meshes) scene.prepass(View::full(W, H));
   for (int k = 0; k < kClasses; ++k) {
     if (!present[static_cast<size_t>(k)]) continue;
     const double n = shade_class(kit, scene, grid, k, W, H);
@@ -86,24 +87,23 @@ double EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, i
   gpu::PassState draw = gpu::PassState::stencil_equal();
   draw.scissor = {int(box.x0) / r.width, int(box.y0) / r.height, int(box.x1 - box.x0) / r.width,
                   int(box.y1 - box.y0) / r.height};
-  if (scene.info().has_meshes) {
-    // The G-buffer is filled only where this class shades: the same texels,
-    // marked in the G-buffer's stencil before the geometry, and the geometry
-    // is culled and scissored to their bounding box. (The box is not the
-    // view itself: a sub-frustum's projection rounds differently, and the
-    // 1x1 class must rasterise exactly as native.)
-    scene.prepass_begin(view);
-    kit.rect_pass_in_bound(mask_program, texels, tw, th, mark);
-    gpu::apply(draw);
-    scene.prepass_draw(box, -1);
-    gpu::apply({});
-    scene.prepass_end();
-  } else {
-    scene.prepass(view);
-  }
+  // A mesh scene's classes all shade from native's G-buffer (render() fills
+  // it once), as hardware VRS shades coarse pixels over full-rate geometry:
+  // a G-buffer per class drew the geometry once per class, and the geometry
+  // is what a G-buffer costs here. A screen-space scene has none.
+  const View shade_view = scene.info().has_meshes ? View::full(W, H) : view;
+  if (!scene.info().has_meshes) scene.prepass(view);
+  // Texel i samples the centre of its block's first pixel, i rw + 0.5, not
+  // the block's centre: that is a native pixel, whose G-buffer surface is
+  // exact (the block's centre is a pixel corner, and the nearest G-buffer
+  // pixel displaced every coarse class by half a pixel: 0.08 JOD on
+  // guenter). The reconstruction reads at the same place (u_shift).
+  View at = view;
+  const double sx = 0.5 * (r.width - 1), sy = 0.5 * (r.height - 1);
+  at.x0 -= sx, at.x1 -= sx, at.y0 -= sy, at.y1 -= sy;
   return kit.shade(
-      scene, view, kMapRect, t,
-      [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, draw, true);
+      scene, shade_view, kMapRect, t,
+      [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, at); }, draw, true);
 }
 
 void EmulatedPath::reconstruct(PassKit& kit, const Grid& grid,
@@ -124,10 +124,13 @@ void EmulatedPath::reconstruct(PassKit& kit, const Grid& grid,
         plain[static_cast<size_t>(c)].push_back(p);
     }
   }
-  // A class target's size in screen pixels (its texels times its rate).
-  const auto set_extent = [&](const gpu::Program& p, const char* name, ShadingRate r) {
+  // A class target's size in screen pixels (its texels times its rate), and
+  // where its samples sit (shade_class).
+  const auto set_extent = [&](const gpu::Program& p, const std::string& extent,
+                              const std::string& shift, ShadingRate r) {
     const auto [tw, th] = class_size(r, W, H);
-    p.set(name, float(tw * r.width), float(th * r.height));
+    p.set(extent.c_str(), float(tw * r.width), float(th * r.height));
+    p.set(shift.c_str(), 0.5f * float(r.width - 1), 0.5f * float(r.height - 1));
   };
   const gpu::Program& copy = kit.over_rects("vrs/reconstruct_copy.frag");
   for (int k = 0; k < kClasses; ++k) {
@@ -140,7 +143,7 @@ void EmulatedPath::reconstruct(PassKit& kit, const Grid& grid,
     kit.rect_pass(copy, merge_runs(plain[i]), target, {},
                   [&](const gpu::Program& p, gpu::Samplers& smp) {
                     smp.bind(p, "u_src", targets_[i].color());
-                    set_extent(p, "u_extent", kShadingRates[i]);
+                    set_extent(p, "u_extent", "u_shift", kShadingRates[i]);
                   });
   }
   const size_t first =
@@ -153,8 +156,8 @@ void EmulatedPath::reconstruct(PassKit& kit, const Grid& grid,
                     const gpu::RenderTarget& t = targets_[present[i] ? i : first];
                     const std::string name = "u_class" + std::to_string(k);
                     smp.bind(p, name.c_str(), t.color());
-                    const std::string e = "u_extent[" + std::to_string(k) + "]";
-                    set_extent(p, e.c_str(), kShadingRates[i]);
+                    const std::string at = "[" + std::to_string(k) + "]";
+                    set_extent(p, "u_extent" + at, "u_shift" + at, kShadingRates[i]);
                   }
                   p.set("u_tile", tile_);
                 });

@@ -119,6 +119,7 @@ void copy_native_tiles(PassKit& kit, const std::vector<PixelRect>& rects,
                 [&](const gpu::Program& p, gpu::Samplers& smp) {
                   smp.bind(p, "u_src", src.color());
                   p.set("u_extent", float(src.width()), float(src.height()));
+                  p.set("u_shift", 0.0f, 0.0f);  // rate 1: samples at the pixel centres
                 });
 }
 

@@ -7,11 +7,12 @@
 uniform usampler2D u_classes;  // one texel per tile: index into the rates (GL rows)
 uniform sampler2D u_class0, u_class1, u_class2, u_class3, u_class4, u_class5, u_class6;
 uniform vec2 u_extent[7];  // per class: its target's size in screen pixels (texels x rate)
+uniform vec2 u_shift[7];   // per class: (rate - 1) / 2, where its samples sit (vrs.cpp)
 uniform int u_tile;
 out vec4 o_color;
 
 vec3 class_colour(int c, vec2 p) {
-  vec2 uv = p / u_extent[c];
+  vec2 uv = (p + u_shift[c]) / u_extent[c];
   if (c == 0) return texture(u_class0, uv).rgb;
   if (c == 1) return texture(u_class1, uv).rgb;
   if (c == 2) return texture(u_class2, uv).rgb;

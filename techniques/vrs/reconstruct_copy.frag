@@ -3,5 +3,6 @@
 // tiles only; the tiles next to a finer class run reconstruct.frag.
 uniform sampler2D u_src;
 uniform vec2 u_extent;  // the class target's size in screen pixels (texels x rate)
+uniform vec2 u_shift;   // (rate - 1) / 2: texel i's sample is at pixel centre i * rate + 0.5
 out vec4 o_color;
-void main() { o_color = vec4(texture(u_src, gl_FragCoord.xy / u_extent).rgb, 1.0); }
+void main() { o_color = vec4(texture(u_src, (gl_FragCoord.xy + u_shift) / u_extent).rgb, 1.0); }

@@ -132,8 +132,8 @@ TechniqueInfo vrs_info() {
       param(
           "min_class",
           "a rate class with fewer than this fraction of the tiles is shaded at a finer class "
-          "present (each class costs the emulation a pass, and on mesh scenes the geometry, of its "
-          "own; 0 = every class as the model gives it)",
+          "present (each class costs the emulation a pass of its own; 0 = every class as the model "
+          "gives it)",
           "", ParamType::Real, 0.0, 0.5, 0.02),
       {0.0, 0.02, 0.05}));
   t.params.push_back(param("hardware",

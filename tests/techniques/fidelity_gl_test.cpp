@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -462,6 +464,29 @@ TEST_F(Fidelity, VrsShadesSmallRateClassesAtAFinerRate) {
   EXPECT_LT(merged.shaded_pixels, 1.05 * all.shaded_pixels);
   const Image ref = native(*scene, W, H);
   EXPECT_TRUE(within_golden(compare_disc(ref, img, gaze, fovea_px(*t, gaze))));
+}
+
+TEST_F(Fidelity, VrsEmulationShadesAtNativePixelCentres) {
+  // A scene that is (0.5, 0.5, 0.5) at every pixel centre and differs
+  // everywhere else: the emulation's coarse texels sample the centre of
+  // their block's first pixel (the block's centre is a pixel corner, where
+  // a deferred scene's nearest G-buffer pixel is half a pixel off), so every
+  // class shows what native shows.
+  const int W = 640, H = 360;
+  const auto path = std::filesystem::temp_directory_path() / "foveate_pixel_centres.glsl";
+  std::ofstream(path) << "void mainImage(out vec4 c, in vec2 p) {\n"
+                         "  c = vec4(fract(p.x), fract(p.y), 0.5, 1.0);\n}\n";
+  auto scene = load_scene(path.string());
+  const Image ref = native(*scene, W, H);
+  FrameStats s;
+  auto t = make_technique("vrs", config(W, H, {{"hardware", 0.0}}));
+  const Image img = run(*t, *scene, {W / 2.0, H / 2.0}, 0, &s);
+  EXPECT_LT(s.shaded_pixels, 0.8 * W * H);  // coarse classes were there
+  int off = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      for (int c = 0; c < 3; ++c) off += std::abs(int(img.at(x, y)[c]) - int(ref.at(x, y)[c])) > 1;
+  EXPECT_EQ(off, 0);
 }
 
 TEST_F(Fidelity, VrsShowsNoTileStructure) {

@@ -626,11 +626,12 @@ TEST_F(Techniques, LodmaskFoveaMatchesNativeOnMeshes) {
 }
 
 // A scene that forwards to another and records the geometric LOD scale of
-// every view it is asked to draw.
+// every view it is asked to draw, and how many times it drew its geometry.
 class LodSpy final : public Scene {
  public:
   explicit LodSpy(std::unique_ptr<Scene> inner) : inner_(std::move(inner)) {}
   double max_scale = 0;
+  int draws = 0;
   SceneInfo info() const override { return inner_->info(); }
   std::vector<gpu::StageSource::Piece> shade_source() const override {
     return inner_->shade_source();
@@ -642,6 +643,7 @@ class LodSpy final : public Scene {
   void update(const FrameInput& f) override { inner_->update(f); }
   void prepass(const View& v) override {
     note(v);
+    ++draws;
     inner_->prepass(v);
   }
   void prepass_begin(const View& v) override {
@@ -650,6 +652,7 @@ class LodSpy final : public Scene {
   }
   void prepass_draw(const View& v, int lod) override {
     note(v);
+    ++draws;
     inner_->prepass_draw(v, lod);
   }
   void prepass_end() override { inner_->prepass_end(); }
@@ -685,6 +688,19 @@ TEST_F(Techniques, SubsampledTechniquesKeepNativesGeometricLod) {
   auto t = make_technique("layered", paper_layered({{"lod", 1}}));
   for (int k = 0; k < 3; ++k) run(*t, spy, {kW / 2.0, kH / 2.0}, nullptr, k);
   EXPECT_GT(spy.max_scale, 1.5);  // the outer layer's sampling factor (1.68 at 640x360)
+}
+
+// On a mesh scene the G-buffer's cost is its geometry: vrs's rate classes
+// all shade from one native G-buffer, as hardware VRS shades coarse pixels
+// over full-rate geometry (a G-buffer per class drew the geometry once per
+// class: 3-5 times a frame).
+TEST_F(Techniques, VrsDrawsTheGeometryOncePerFrame) {
+  LodSpy spy(load_scene("guenter"));
+  auto t = make_technique("vrs", config({{"hardware", 0.0}, {"min_class", 0.0}}));
+  FrameStats s;
+  for (int k = 0; k < 3; ++k) run(*t, spy, {kW / 2.0, kH / 2.0}, &s, k);
+  EXPECT_GE(s.parts.size(), 3u);  // several classes
+  EXPECT_EQ(spy.draws, 3);
 }
 
 TEST_F(Techniques, EveryTechniqueOnAMeshFile) {
