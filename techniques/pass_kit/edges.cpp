@@ -23,7 +23,7 @@ std::vector<PixelRect> packed_cover(int count, int width) {
 double PassKit::supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                                   const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                                   const std::vector<PixelRect>& cover, int first, int last,
-                                  double contrast, const SetUniforms& set) {
+                                  double contrast, const SetUniforms& set, bool wrap_rows) {
   const int w = buffer.width(), h = buffer.height();
   EdgeScratch& e = edges_;
   if (!e.list || e.list.width() != w || e.list.height() != h) {
@@ -53,6 +53,7 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
                 samplers.bind(p, "u_buffer", scratch);
                 p.set("u_edge", float(contrast));
                 p.set("u_columns", float(first), float(std::min(last, w)));
+                p.set("u_wrap_rows", wrap_rows ? 1 : 0);
               });
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);

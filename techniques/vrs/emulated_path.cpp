@@ -40,18 +40,21 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   FrameStats s;
   s.native_pixels = double(W) * H;
   if (scene.info().has_meshes) scene.prepass(View::full(W, H));
+  double edges = 0;
   for (int k = 0; k < kClasses; ++k) {
     if (!present[static_cast<size_t>(k)]) continue;
-    const double n = shade_class(kit, scene, grid, k, W, H);
-    s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), n});
-    s.shaded_pixels += n;
+    const Shaded n = shade_class(kit, scene, grid, k, W, H);
+    s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), n.texels});
+    s.shaded_pixels += n.texels + 4.0 * n.edges;
+    edges += n.edges;
   }
+  if (edge_ > 0.0) s.parts.push_back({"supersampled edges", 4.0 * edges});
   reconstruct(kit, grid, present, target);
   return s;
 }
 
-double EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int W,
-                                 int H) {
+EmulatedPath::Shaded EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k,
+                                               int W, int H) {
   const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
   const auto [tw, th] = class_size(r, W, H);
   // The texels the reconstruction may read from this class: over its own
@@ -73,10 +76,10 @@ double EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, i
   t.ensure(tw, th, GL_SRGB8_ALPHA8, true);
   t.color().set_filter(GL_LINEAR, GL_LINEAR);
   t.color().set_wrap(GL_CLAMP_TO_EDGE);
-  // Only the stencil needs clearing: the reconstruction reads no texel that
-  // this frame's mask leaves unshaded.
-  gpu::open_write_masks();
-  glClearNamedFramebufferfi(t.framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  // The reconstruction reads no texel that this frame's mask leaves
+  // unshaded, but the edge marks compare neighbours: those left unshaded
+  // read as alpha 0 (not shaded), never as an earlier frame's.
+  t.clear(0, 0, 0, 0);
   const gpu::Program& mask_program = kit.over_rects("vrs/mask.frag");
   const gpu::PassState mark = gpu::PassState::stencil_mark();
   kit.rect_pass(mask_program, texels, t, mark);
@@ -101,9 +104,17 @@ double EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, i
   View at = view;
   const double sx = 0.5 * (r.width - 1), sy = 0.5 * (r.height - 1);
   at.x0 -= sx, at.x1 -= sx, at.y0 -= sy, at.y1 -= sy;
-  return kit.shade(
-      scene, shade_view, kMapRect, t,
-      [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, at); }, draw, true);
+  const auto set_mapping = [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, at); };
+  Shaded shaded;
+  shaded.texels = kit.shade(scene, shade_view, kMapRect, t, set_mapping, draw, true);
+  // The 1x1 class is native's pixels, which native does not supersample.
+  if (edge_ > 0.0 && k > 0) {
+    gpu::RenderTarget& copy = scratch_[static_cast<size_t>(k)];
+    copy.ensure(tw, th, GL_SRGB8_ALPHA8);
+    shaded.edges = kit.supersample_edges(scene, shade_view, kMapRect, t, copy.color(), texels, 0,
+                                         tw, edge_, set_mapping, false);
+  }
+  return shaded;
 }
 
 void EmulatedPath::reconstruct(PassKit& kit, const Grid& grid,

@@ -2,10 +2,14 @@
 // vrs's emulation, for drivers without variable-rate shading (llvmpipe):
 // every rate class present is shaded into a target of its own reduced
 // resolution (W / rw x H / rh), limited by a stencil mask to its tiles and the
-// coarser tiles next to them, and on mesh scenes its G-buffer is filled only
-// there too. The masks are drawn over those tiles alone (RectPass), and
+// coarser tiles next to them; on mesh scenes every class shades from one
+// native G-buffer. The masks are drawn over those tiles alone (RectPass), and
 // llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
-// nothing. Then the frame is put together in linear light: each pixel reads
+// nothing. In the coarse classes, texels that differ from a neighbour by more
+// than `edge_contrast` are reshaded with four samples
+// (PassKit::supersample_edges): one sample per coarse pixel aliases small
+// objects, highlights and procedural texture, which is where FovVideoVDP
+// finds vrs's error. Then the frame is put together in linear light: each pixel reads
 // its class bilinearly, and a tile next to a finer one fades into it over one
 // tile, so the 1x1 fovea is native and no tile edge shows. Every pass is
 // drawn over the tiles that need it, so each output pixel runs one shader
@@ -18,7 +22,7 @@ namespace foveate::tech::vrs {
 
 class EmulatedPath {
  public:
-  explicit EmulatedPath(int tile) : tile_(tile) {}
+  EmulatedPath(int tile, double edge_contrast) : tile_(tile), edge_(edge_contrast) {}
   /// Renders with `classes` (merged: merge_small_classes) of a gx x gy grid.
   FrameStats render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx, int gy,
                     const gpu::RenderTarget& target);
@@ -36,17 +40,24 @@ class EmulatedPath {
       return near[static_cast<size_t>(ty) * size_t(gx) + size_t(tx)];
     }
   };
+  /// What one class's shading cost: its texels, and those reshaded with
+  /// four samples.
+  struct Shaded {
+    double texels = 0, edges = 0;
+  };
   /// Shades class `k` into its own target over the texels the
-  /// reconstruction reads of it; returns the fragments shaded.
-  double shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int width, int height);
+  /// reconstruction reads of it.
+  Shaded shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int width, int height);
   /// Puts the frame together from the class targets into `target`.
   void reconstruct(PassKit& kit, const Grid& grid, const std::array<bool, kClasses>& present,
                    const gpu::RenderTarget& target);
 
   int tile_;
+  double edge_;
   gpu::Texture classes_;
   std::array<int, 2> grid_{};
   std::array<gpu::RenderTarget, kClasses> targets_;
+  std::array<gpu::RenderTarget, kClasses> scratch_;  ///< supersample_edges' copies
 };
 
 }  // namespace foveate::tech::vrs

@@ -30,7 +30,7 @@ class Vrs final : public Technique {
                   (simulate_ || vrs::hardware_available(v.integer("tile")))),
         fixed_(v.boolean("fixed")),
         hardware_path_(tile_, simulate_),
-        emulated_path_(tile_) {
+        emulated_path_(tile_, v.real("edge_contrast")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
     o.validate();
@@ -136,6 +136,14 @@ TechniqueInfo vrs_info() {
           "gives it)",
           "", ParamType::Real, 0.0, 0.5, 0.02),
       {0.0, 0.02, 0.05}));
+  t.params.push_back(tuned(
+      param("edge_contrast",
+            "antialiasing in the emulation's coarse classes (the driver's rates have none): "
+            "coarse pixels whose linear luminance differs from a neighbour's by more than this "
+            "share of the brighter are reshaded with four samples, averaged (each sample counted "
+            "as a shaded pixel); 0 = off",
+            "", ParamType::Real, 0.0, 1.0, 0.25),
+      {0.0, 0.25}));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

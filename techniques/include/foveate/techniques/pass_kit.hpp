@@ -92,8 +92,9 @@ class PassKit {
                const gpu::RenderTarget& target, const SetUniforms& set,
                const gpu::PassState& state = {}, bool early = false,
                const std::vector<PixelRect>* cover = nullptr);
-  /// Antialiasing in a warped buffer (marwarp, logpolar): marks the texels
-  /// of `cover` (columns [first, last); rows wrap) whose linear luminance
+  /// Antialiasing in a subsampled buffer (marwarp, logpolar, vrs): marks the
+  /// texels of `cover` (columns [first, last); rows wrap with `wrap_rows`,
+  /// as a polar buffer's angles do) whose linear luminance
   /// differs from a neighbour's by more than `contrast` of the brighter
   /// (pass_kit/edges.frag, reading a copy of the colour in `scratch`, a
   /// texture of the buffer's size and format: reading the framebuffer drawn
@@ -108,7 +109,7 @@ class PassKit {
   double supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                            const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                            const std::vector<PixelRect>& cover, int first, int last,
-                           double contrast, const SetUniforms& set);
+                           double contrast, const SetUniforms& set, bool wrap_rows = true);
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.
