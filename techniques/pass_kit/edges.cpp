@@ -8,13 +8,13 @@ namespace foveate::tech {
 
 namespace {
 
-// 4x4 blocks of the packed pass (llvmpipe's unit) are filled row by row:
-// the rectangles that hold `count` fragments in rows of `width`.
-std::vector<PixelRect> packed_cover(int count, int width) {
+// The packed pass's 4x4 blocks of 16 entries each (shade_edges.frag), in
+// rows of `columns` blocks: the rectangles that hold `count` entries.
+std::vector<PixelRect> packed_cover(int count, int columns) {
   std::vector<PixelRect> out;
-  const int full = count / width, rest = count % width;
-  if (full > 0) out.push_back({0, 0, width, full});
-  if (rest > 0) out.push_back({0, full, rest, full + 1});
+  const int blocks = (count + 15) / 16, full = blocks / columns, rest = blocks % columns;
+  if (full > 0) out.push_back({0, 0, 4 * columns, 4 * full});
+  if (rest > 0) out.push_back({0, 4 * full, 4 * rest, 4 * full + 4});
   return out;
 }
 
@@ -32,7 +32,10 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
     for (const gpu::Texture* t : {&e.marks, &e.list}) t->set_filter(GL_NEAREST, GL_NEAREST);
     e.rows = gpu::Buffer::create(static_cast<GLsizeiptr>(sizeof(GLuint)) * (h + 1), nullptr);
   }
-  e.shaded.ensure(w, h, GL_RGBA16F);
+  // Room for every texel of the buffer in 4x4 blocks, `columns` to a row.
+  const int columns = std::max(1, w / 4);
+  const int most_blocks = (w * h + 15) / 16;
+  e.shaded.ensure(4 * columns, 4 * ((most_blocks + columns - 1) / columns), GL_RGBA16F);
   if (!e.list_program) {
     e.list_program =
         compiler_.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"pass_kit/edges_list.comp", {}}}}},
@@ -74,13 +77,15 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
   }
   if (count == 0) return 0.0;
   const gpu::ProfileScope timed("shade_edges");
-  const std::vector<PixelRect> packed = packed_cover(static_cast<int>(count), w);
+  const std::vector<PixelRect> packed = packed_cover(static_cast<int>(count), columns);
   scene_pass(
       scene, view, scene_program_with(scene, mapping, "pass_kit/shade_edges.frag"), e.shaded, {},
       [&](const gpu::Program& p, gpu::Samplers& samplers) {
         set(p, samplers);
         samplers.bind(p, "u_edge_list", e.list);
         p.set("u_edge_samples", 4);
+        p.set("u_block_columns", columns);
+        p.set("u_count", static_cast<int>(count));
       },
       &packed);
   const gpu::Program& scatter =
@@ -92,6 +97,7 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
   samplers.bind(scatter, "u_edge_list", e.list);
   samplers.bind(scatter, "u_shaded", e.shaded.color());
   scatter.set("u_buffer_size", float(w), float(h));
+  scatter.set("u_block_columns", columns);
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
   return static_cast<double>(count);
