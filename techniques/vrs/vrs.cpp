@@ -24,16 +24,22 @@ class Vrs final : public Technique {
         acuity_(c.acuity),
         tile_(v.integer("tile")),
         min_class_(v.real("min_class")),
-        simulate_(v.boolean("hardware") && v.boolean("simulate_driver") &&
+        // The driver's coarse pixels cannot be reshaded at their edges: the
+        // edges ask for the emulation (else the same plan would lose the
+        // JOD they buy on a GPU only).
+        simulate_(driver_rates(v) && v.boolean("simulate_driver") &&
                   !vrs::hardware_available(v.integer("tile"))),
-        hardware_(v.boolean("hardware") &&
-                  (simulate_ || vrs::hardware_available(v.integer("tile")))),
+        hardware_(driver_rates(v) && (simulate_ || vrs::hardware_available(v.integer("tile")))),
         fixed_(v.boolean("fixed")),
         hardware_path_(tile_, simulate_),
         emulated_path_(tile_, v.real("edge_contrast")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
     o.validate();
+  }
+
+  static bool driver_rates(const ParamValues& v) {
+    return v.boolean("hardware") && v.real("edge_contrast") == 0.0;
   }
 
   // The rates for this gaze (GL grid: rows from the bottom, as the shaders
@@ -138,16 +144,16 @@ TechniqueInfo vrs_info() {
       {0.0, 0.02, 0.05}));
   t.params.push_back(tuned(
       param("edge_contrast",
-            "antialiasing in the emulation's coarse classes (the driver's rates have none): "
-            "coarse pixels whose linear luminance differs from a neighbour's by more than this "
-            "share of the brighter are reshaded with four samples, averaged (each sample counted "
-            "as a shaded pixel); 0 = off",
+            "antialiasing in the coarse classes: coarse pixels whose linear luminance differs "
+            "from a neighbour's by more than this share of the brighter are reshaded with four "
+            "samples, averaged (each sample counted as a shaded pixel); the emulation's only, so "
+            "above 0 it takes the emulation on every driver; 0 = off",
             "", ParamType::Real, 0.0, 1.0, 0.25),
       {0.0, 0.25}));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "
-                           "tile size; 0 = always the emulation",
+                           "tile size and edge_contrast is 0; 0 = always the emulation",
                            "", ParamType::Boolean, 0, 1, 1));
   t.params.push_back(param("simulate_driver",
                            "with hardware=1 where the driver has no shading-rate image "

@@ -409,7 +409,10 @@ TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
     const Image ref = native(*scene, W, H);
     for (const double simulate : {0.0, 1.0}) {
       SCOPED_TRACE(simulate);
-      auto t = make_technique("vrs", config(W, H, {{"simulate_driver", simulate}}));
+      // (The driver's rates come without edge reshading.)
+      auto t = make_technique("vrs", config(W, H,
+                                            {{"simulate_driver", simulate},
+                                             {"edge_contrast", simulate > 0 ? 0.0 : 0.25}}));
       for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{400, 300}}) {
         FrameStats s;
         const Image img = run(*t, *scene, gaze, 0, &s);
@@ -433,6 +436,22 @@ TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
       }
     }
   }
+}
+
+TEST_F(Fidelity, VrsEdgesTakeTheEmulation) {
+  // The driver's coarse pixels cannot be reshaded at their edges, so a plan
+  // with edges takes the emulation wherever it runs; without them the
+  // driver's rates (simulated where there are none).
+  auto scene = load_scene("cheap");
+  FrameStats with, without;
+  auto t = make_technique("vrs", config(640, 360, {{"simulate_driver", 1}}));
+  run(*t, *scene, {320, 180}, 0, &with);
+  auto u = make_technique("vrs", config(640, 360, {{"simulate_driver", 1}, {"edge_contrast", 0}}));
+  run(*u, *scene, {320, 180}, 0, &without);
+  ASSERT_FALSE(with.parts.empty());
+  EXPECT_NE(with.parts[0].name, "hardware rates");
+  ASSERT_EQ(without.parts.size(), 1u);
+  EXPECT_EQ(without.parts[0].name, "hardware rates");
 }
 
 TEST_F(Fidelity, VrsShadesSmallRateClassesAtAFinerRate) {
