@@ -80,9 +80,14 @@ void run(const TuneArgs& a) {
   const bench::TuneOptions o = to_options(a);
   const OutputDirLock out_lock(a.out, "--out", a.overwrite);
   std::optional<Progress> progress;
+  // Each stage is a benchmark of its own, whose progress counts its own
+  // steps and time: the label says which one, lest its time left read as
+  // the whole search's.
+  std::string label = "tune";
   bench::TuneCallbacks c;
   c.bench.session = session_callbacks();
   c.stage = [&](const std::string& scene, int stage, int candidates) {
+    label = "tune (" + scene + ", stage " + std::to_string(stage) + ")";
     if (!quiet() && !a.json) {
       // Stage 5 times again settings already measured (tune.hpp).
       std::cerr << "tune: " << scene << ", stage " << stage << ": " << candidates
@@ -91,7 +96,7 @@ void run(const TuneArgs& a) {
     }
   };
   c.bench.start = [&](int steps, int metrics_steps) {
-    progress.emplace("tune", "steps", steps, !quiet() && !a.json);
+    progress.emplace(label, "steps", steps, !quiet() && !a.json);
     progress->expect("metrics", metrics_steps);
   };
   c.bench.step = [&](const std::string& d, const std::string& k) { progress->step(d, k); };

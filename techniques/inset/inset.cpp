@@ -80,18 +80,22 @@ class Inset final : public Technique {
     }
     s.parts.push_back({"inset", ni});
     s.shaded_pixels = np + ni;
-    // Composite: the periphery blurred at its own resolution, upscaled over
-    // the screen (one fetch per pixel), then the inset blended over its own
-    // rectangle only.
-    blurred_.ensure(pw, ph);
-    kit_.pass(kit_.fullscreen("inset/blur.frag"), blurred_, {},
-              [&](const gpu::Program& c, gpu::Samplers& samplers) {
-                samplers.bind(c, "u_periphery", periphery_.color());
-                c.set("u_blur", float(blur_));
-              });
+    // Composite: the periphery blurred at its own resolution (no pass at
+    // blur 0), upscaled over the screen (one fetch per pixel), then the inset
+    // blended over its own rectangle only.
+    const gpu::RenderTarget* shown = &periphery_;
+    if (blur_ > 0.0) {
+      blurred_.ensure(pw, ph);
+      kit_.pass(kit_.fullscreen("inset/blur.frag"), blurred_, {},
+                [&](const gpu::Program& c, gpu::Samplers& samplers) {
+                  samplers.bind(c, "u_periphery", periphery_.color());
+                  c.set("u_blur", float(blur_));
+                });
+      shown = &blurred_;
+    }
     kit_.pass(kit_.fullscreen("inset/upscale.frag"), target, {},
               [&](const gpu::Program& c, gpu::Samplers& samplers) {
-                samplers.bind(c, "u_periphery", blurred_.color());
+                samplers.bind(c, "u_periphery", shown->color());
               });
     if (has_inset) {
       gpu::PassState over;
@@ -164,8 +168,9 @@ TechniqueInfo inset_info() {
             ParamType::Real, 0.0, 1000.0, 0.0),
       param("max_saccade_deg_per_s", "maximal saccade speed S_max of eq. 1", "deg/s",
             ParamType::Real, 0.0, 1000.0, 200.0),
-      tuned(param("blur", "upscale blur radius in periphery texels (0 = plain bilinear)", "texels",
-                  ParamType::Real, 0.0, 4.0, 1.0),
+      tuned(param("blur",
+                  "upscale blur radius in periphery texels (0 = plain bilinear, no blur pass)",
+                  "texels", ParamType::Real, 0.0, 4.0, 0.0),
             {0, 0.5, 1}),
   };
   t.resolve_passes = {"blur", "upscale", "composite"};

@@ -126,7 +126,7 @@ TechniqueInfo vrs_info() {
       "reduced resolution over its tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
-      plan_margin_param(3.0),
+      plan_margin_param(1.5),
       tuned(param("tile", "shading-rate tile size (8, 16 or 32)", "px", ParamType::Integer, 8, 32,
                   16),
             {8, 16}),
