@@ -17,11 +17,11 @@
 #include "foveate/core/models.hpp"
 #include "foveate/core/shading_rate.hpp"
 #include "foveate/techniques/frame_runner.hpp"
-#include "foveate/techniques/supersampled_native.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 #include "srgb.hpp"
+#include "supersampled.hpp"
 
 using namespace foveate;
 
@@ -520,17 +520,10 @@ TEST_F(Fidelity, VrsReshadedEdgesComeCloserToTheSupersampledScene) {
   // pixels that differ from a neighbour, reshaded with four samples, bring
   // the means over 6x6 blocks (linear light, beyond the 1x1 disc) closer to
   // those of a 4x4 supersampled frame (0.0035 against 0.0039 in linear
-  // light when this was written), and the
-  // reshaded samples are counted.
+  // light when this was written), and the reshaded samples are counted.
   const int W = 1280, H = 720;  // below that the classes are mostly fine
-  auto scene = load_scene("guenter"), reference_scene = load_scene("guenter");
-  FrameRunnerOptions o;
-  o.width = W;
-  o.height = H;
-  o.start_time_s = 1.0;
-  SupersampledNative reference(config(W, H).display, 4);
-  reference.render(*reference_scene, FrameRunner(*scene, o).frame_input(0));
-  const Image truth = reference.read();
+  auto scene = load_scene("guenter");
+  const Image truth = test::supersampled_frame("guenter", config(W, H).display);
   auto with = make_technique("vrs", config(W, H, {{"hardware", 0.0}, {"margin", 1.0}}));
   auto without = make_technique(
       "vrs", config(W, H, {{"hardware", 0.0}, {"margin", 1.0}, {"edge_contrast", 0.0}}));

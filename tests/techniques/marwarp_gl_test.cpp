@@ -12,11 +12,11 @@
 
 #include "foveate/core/acuity_warp.hpp"
 #include "foveate/techniques/frame_runner.hpp"
-#include "foveate/techniques/supersampled_native.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
 #include "image_compare.hpp"
 #include "srgb.hpp"
+#include "supersampled.hpp"
 
 using namespace foveate;
 
@@ -175,14 +175,8 @@ TEST_F(Marwarp, ReshadedEdgesComeCloserToTheSupersampledScene) {
   // codes to a neighbouring pixel) closer to a 4x4 supersampled frame
   // (11.8 codes against 13.2 when this was written).
   const int W = 640, H = 360;
-  auto scene = load_scene("guenter"), reference_scene = load_scene("guenter");
-  FrameRunnerOptions o;
-  o.width = W;
-  o.height = H;
-  o.start_time_s = 1.0;
-  SupersampledNative reference(config(W, H).display, 4);
-  reference.render(*reference_scene, FrameRunner(*scene, o).frame_input(0));
-  const Image truth = reference.read();
+  auto scene = load_scene("guenter");
+  const Image truth = test::supersampled_frame("guenter", config(W, H).display);
   // (With the buffer's prefilter, which the reshaded texels' four samples
   // feed; without it the reshaded edges are no closer.)
   auto with = make_technique("marwarp", config(W, H, {{"sharpen", 0.12}}));
