@@ -89,7 +89,7 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   o.video = a.video;
   o.side_by_side = a.side_by_side;
   if (!a.sweep.empty()) o.sweep = parse_sweep(a.sweep);
-  if (!a.shard.empty()) o.shard = parse_shard(a.shard, "--shard");
+  if (!a.shard.empty()) o.shard = bench::parse_shard(a.shard);
   bench::validate(o);
   return o;
 }

@@ -29,53 +29,18 @@ struct MergeArgs {
   bool overwrite = false;
 };
 
-// A shard given as its --out folder or its results.json.
-std::string results_path(const std::string& shard) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(shard, ec)) {
-    for (const char* name : {"results.json", "tune.json"}) {
-      const fs::path p = fs::path(shard) / name;
-      if (fs::exists(p, ec)) return p.string();
-    }
-    throw Error(shard + ": a folder without results.json or tune.json (a bench or tune --out)");
-  }
-  return shard;
-}
-
 void run_merge(const MergeArgs& a) {
-  std::vector<nlohmann::json> files;
-  std::vector<std::string> names;
-  for (const std::string& s : a.shards) {
-    const std::string path = results_path(s);
-    files.push_back(read_json_file(path, "shard results"));
-    names.push_back(path);
-  }
-  const bool tune = files.front().value("schema", "") == bench::kTuneSchema;
-  for (size_t i = 1; i < files.size(); ++i) {
-    if ((files[i].value("schema", "") == bench::kTuneSchema) != tune) {
-      throw Error(names[i] + ": a " + (tune ? "benchmark" : "tune run") + "'s results, but " +
-                  names[0] + " is a " + (tune ? "tune run" : "benchmark") + "'s");
-    }
-  }
+  const bench::MergedShards merged = bench::merge_shard_files(a.shards);
   const OutputDirLock out_lock(a.out, "--out", a.overwrite);
-  if (tune) {
-    std::vector<bench::TuneResult> shards;
-    for (size_t i = 0; i < files.size(); ++i)
-      shards.push_back(bench::read_tune_results(files[i], names[i]));
-    const bench::TuneResult merged = bench::merge_tune_shards(shards, names);
-    bench::write_tune_report(merged, a.out);
-    std::cout << bench::tune_markdown(merged);
+  if (merged.tune) {
+    bench::write_tune_report(*merged.tune, a.out);
+    std::cout << bench::tune_markdown(*merged.tune);
   } else {
-    std::vector<bench::BenchResult> shards;
-    for (size_t i = 0; i < files.size(); ++i)
-      shards.push_back(bench::read_bench_results(files[i], names[i]));
-    const bench::BenchResult merged = bench::merge_shards(shards, names);
-    bench::write_bench_report(merged, a.out);
-    std::cout << bench::bench_markdown(merged);
+    bench::write_bench_report(*merged.bench, a.out);
+    std::cout << bench::bench_markdown(*merged.bench);
   }
   if (!quiet()) {
-    std::cerr << "merged " << files.size() << " shards into "
+    std::cerr << "merged " << a.shards.size() << " shards into "
               << (std::filesystem::path(a.out) / "report.html").string() << "\n";
   }
 }
@@ -99,7 +64,7 @@ Benchmarks read_benchmarks(const std::vector<std::string>& given) {
   std::vector<std::vector<bench::BenchResult>> groups;
   std::vector<std::vector<std::string>> group_names;
   for (const std::string& g : given) {
-    const std::string path = results_path(g);
+    const std::string path = bench::shard_results_file(g);
     const nlohmann::json j = read_json_file(path, "benchmark results");
     if (j.value("schema", "") == bench::kTuneSchema) {
       throw Error(path +

@@ -71,7 +71,7 @@ bench::TuneOptions to_options(const TuneArgs& a) {
   o.bench.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.bench.command = invocation();
   o.grid = a.grid;
-  if (!a.shard.empty()) o.shard = parse_shard(a.shard, "--shard");
+  if (!a.shard.empty()) o.shard = bench::parse_shard(a.shard);
   bench::validate(o);
   return o;
 }

@@ -31,17 +31,6 @@ bench::ParamOverrides parse_params(const std::vector<std::string>& items) {
   return out;
 }
 
-bench::Shard parse_shard(const std::string& text, const std::string& flag) {
-  const auto slash = text.find('/');
-  double k = 0, n = 0;
-  const bool numbers = slash != std::string::npos && parse_number(text.substr(0, slash), k) &&
-                       parse_number(text.substr(slash + 1), n);
-  if (!numbers || k != std::floor(k) || n != std::floor(n) || n < 1 || k < 1 || k > n || n > 1000) {
-    throw Error(flag + ": expected K/N, job K of N (1 <= K <= N <= 1000), got '" + text + "'");
-  }
-  return {static_cast<int>(k) - 1, static_cast<int>(n)};
-}
-
 bench::ParamOverrides session_params(const SessionArgs& a,
                                      const std::vector<std::string>& techniques) {
   bench::ParamOverrides out;

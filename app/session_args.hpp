@@ -63,8 +63,6 @@ bench::SessionOptions to_session_options(const SessionArgs& args,
 /// --param values: "KEY=VALUE" applies to every technique that has KEY;
 /// "TECHNIQUE.KEY=VALUE" to that technique only.
 bench::ParamOverrides parse_params(const std::vector<std::string>& items);
-/// "K/N" (1-based job K of N) for --shard; errors name `flag`.
-bench::Shard parse_shard(const std::string& text, const std::string& flag);
 /// --params-file's values for `techniques` (the techniques the command
 /// runs), then --param's over them; a --param value for a technique not
 /// among them, or a key none of them declares, is an OptionError of "params".

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "convert.hpp"
+#include "foveate/bench/merge.hpp"
 #include "foveate/bench/report.hpp"
 #include "foveate/bench/session.hpp"
 #include "foveate/bench/tune.hpp"
@@ -174,7 +175,7 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
              const std::string& gaze, const std::string& reference, bool metrics, py::handle sweep,
              double fps, const std::string& out, bool overwrite, const std::string& video,
              bool side_by_side, bool images, bool stereo, py::handle vergence,
-             double frame_timeout_s) {
+             double frame_timeout_s, const std::string& shard) {
   bench::BenchOptions o;
   keywords([&] {
     o.session = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps,
@@ -189,6 +190,7 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
     o.video = video;
     o.side_by_side = side_by_side;
     o.sweep = sweep_from(sweep);
+    if (!shard.empty()) o.shard = bench::parse_shard(shard);
     bench::validate(o);
   });
   prepare_out(out, overwrite);
@@ -214,8 +216,8 @@ py::dict tune(const std::vector<std::string>& scenes,
               std::optional<std::vector<std::string>> techniques, double bound, py::handle size,
               int frames, int warmup, const std::string& display, const std::string& acuity_preset,
               std::optional<double> slope, const std::string& gaze, const std::string& reference,
-              double fps, bool grid, const std::string& out, bool overwrite,
-              double frame_timeout_s) {
+              double fps, bool grid, const std::string& out, bool overwrite, double frame_timeout_s,
+              const std::string& shard) {
   bench::TuneOptions o;
   keywords([&] {
     o.bench.session =
@@ -229,6 +231,7 @@ py::dict tune(const std::vector<std::string>& scenes,
     o.bench.reference = bench::for_field("reference", [&] { return parse_reference(reference); });
     o.bench.command = "foveate.tune (Python)";
     o.grid = grid;
+    if (!shard.empty()) o.shard = bench::parse_shard(shard);
     bench::validate(o);
   });
   prepare_out(out, overwrite);
@@ -336,6 +339,20 @@ py::list technique_list(py::handle display, py::handle size, const AcuityModel& 
   return out;
 }
 
+// `foveate merge` in this process: the shards' files joined, written to
+// `out` when given, returned as results.json or tune.json is.
+py::dict merge(const std::vector<std::string>& shards, const std::string& out, bool overwrite) {
+  bench::MergedShards merged;
+  keywords([&] { merged = bench::merge_shard_files(shards); });
+  prepare_out(out, overwrite);
+  if (merged.tune) {
+    if (!out.empty()) bench::write_tune_report(*merged.tune, out);
+    return to_python(bench::tune_json(*merged.tune)).cast<py::dict>();
+  }
+  if (!out.empty()) bench::write_bench_report(*merged.bench, out);
+  return result_dict(*merged.bench, false);
+}
+
 py::object read_results(const std::string& path) {
   std::error_code ec;
   const std::string file = std::filesystem::is_directory(path, ec)
@@ -364,7 +381,7 @@ void bind_bench(py::module_& m) {
         py::arg("fps") = defaults.session.fps, py::arg("out") = "", py::arg("overwrite") = false,
         py::arg("video") = "", py::arg("side_by_side") = false, py::arg("images") = false,
         py::arg("stereo") = false, py::arg("vergence") = py::none(),
-        py::arg("frame_timeout_s") = defaults.session.frame_timeout_s,
+        py::arg("frame_timeout_s") = defaults.session.frame_timeout_s, py::arg("shard") = "",
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
 entry per technique (mean_ms, median_ms, speedup (mean over mean), speedup_ci95,
@@ -380,7 +397,8 @@ presets; quality= is the same, its former name) or slope a MAR slope; sweep
 ("margin", 1, 2, 0.5); out a folder for
 results.json, .csv, .md, report.html (one holding an earlier run's output is
 refused unless overwrite=True, which removes those files first); video a
-file (.mp4) of the frames.
+file (.mp4) of the frames. shard "K/N": job K of N (every N-th run, native in
+each), as --shard; merge() joins the jobs' outputs.
 images=True adds each technique's last frame ("image", HxWx3 uint8) and
 "native_image". stereo=True renders both eyes of a stereo display
 (display="hmd-quest2"; size is one eye's; vergence in metres, 2 or "inf"):
@@ -412,6 +430,7 @@ technique's layers or regions and the gaze.)");
         py::arg("fps") = tune_defaults.bench.session.fps, py::arg("grid") = false,
         py::arg("out") = "", py::arg("overwrite") = false,
         py::arg("frame_timeout_s") = tune_defaults.bench.session.frame_timeout_s,
+        py::arg("shard") = "",
         R"(Runs `foveate tune` in this process: for every technique (techniques: a list,
 None = every one but native) the fastest setting of its tuned parameters whose
 FovVideoVDP JOD stays within `bound` of native's on every scene, judged against
@@ -422,7 +441,16 @@ below_native, pixel_ratio, within_bound), "chosen" (technique -> parameters),
 the frames after them), and "notes". out: a folder for tune.json, tune.md,
 params.json (for --params-file) and report.html, refused if it holds an earlier
 run's output unless overwrite=True. grid=True evaluates the fixed grid instead
-of the staged search. Other keywords as in bench().)");
+of the staged search; shard "K/N" its K-th slice of N (merge() joins them).
+Other keywords as in bench().)");
+  m.def("merge", &merge, py::arg("shards"), py::kw_only(), py::arg("out") = "",
+        py::arg("overwrite") = false,
+        R"(Runs `foveate merge` in this process: the shards of one benchmark or one tune
+run (bench(shard=...) or tune(shard=...); each its out folder or its
+results.json / tune.json) joined into one result, refused for shards of
+different versions or settings, a missing or repeated job, or a mix of
+benchmarks and tune runs. Returns results.json or tune.json as a dict; out: a
+folder for the merged files and report.)");
   m.def("read_results", &read_results, py::arg("path"),
         "results.json of a bench run (the file or its folder) as a dict");
   m.def("techniques", &technique_list, py::arg("display") = "desktop-1080p",

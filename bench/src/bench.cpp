@@ -6,9 +6,22 @@
 #include "bench_run.hpp"
 #include "foveate/bench/frame_order.hpp"
 #include "foveate/bench/statistics.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/core/stats.hpp"
 
 namespace foveate::bench {
+
+Shard parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  double k = 0, n = 0;
+  const bool numbers = slash != std::string::npos && parse_number(text.substr(0, slash), k) &&
+                       parse_number(text.substr(slash + 1), n);
+  if (!numbers || k != std::floor(k) || n != std::floor(n) || n < 1 || k < 1 || k > n || n > 1000) {
+    throw OptionError("shard",
+                      "expected K/N, job K of N (1 <= K <= N <= 1000), got '" + text + "'");
+  }
+  return {static_cast<int>(k) - 1, static_cast<int>(n)};
+}
 
 void validate(const BenchOptions& o) {
   validate(o.session);

@@ -141,3 +141,37 @@ def test_tune_chooses_within_the_bound_and_writes_its_files(fv, tmp_path):
         fv.tune(scenes=["cheap"], bound=0)
     with pytest.raises(fv.Error, match="scenes: give at least one scene"):
         fv.tune(scenes=[])
+
+
+def test_shards_merged_equal_one_run(fv, tmp_path):
+    small = dict(scene="cheap", techniques=["native", "layered", "inset", "checkerboard"],
+                 size=(96, 54), frames=2, warmup=1, metrics=False)
+    whole = fv.bench(**small)
+    for k in (1, 2):
+        fv.bench(**small, shard=f"{k}/2", out=str(tmp_path / f"s{k}"))
+    merged = fv.merge([str(tmp_path / "s1"), str(tmp_path / "s2" / "results.json")],
+                      out=str(tmp_path / "m"))
+    assert merged["shard"] == {"merged": 2}
+    assert (tmp_path / "m" / "report.html").exists()
+    runs = lambda r: [(t["technique"], t["shaded_pixels"]) for t in r["results"]]
+    assert runs(merged) == runs(whole)
+    with pytest.raises(fv.Error, match="missing"):
+        fv.merge([str(tmp_path / "s1")])
+    with pytest.raises(fv.Error, match="shard: expected K/N"):
+        fv.bench(**small, shard="3/2")
+    with pytest.raises(fv.Error, match="shard: expected K/N"):
+        fv.tune(scenes=["cheap"], shard="x")
+
+
+def test_tune_shards_merge(fv, tmp_path):
+    small = dict(scenes=["cheap"], techniques=["inset"], size=(96, 54), frames=2, warmup=1,
+                 reference="ssaa:2", bound=0.5)
+    for k in (1, 2):
+        fv.tune(**small, shard=f"{k}/2", out=str(tmp_path / f"t{k}"))
+    merged = fv.merge([str(tmp_path / "t1"), str(tmp_path / "t2")])
+    assert merged["shard"] == {"merged": 2}
+    assert "inset" in merged["chosen"]
+    fv.bench(scene="cheap", techniques=["inset"], size=(96, 54), frames=2, warmup=1,
+             metrics=False, out=str(tmp_path / "b"))
+    with pytest.raises(fv.Error, match="a benchmark's results, but .* is a tune run's"):
+        fv.merge([str(tmp_path / "t1"), str(tmp_path / "b")])

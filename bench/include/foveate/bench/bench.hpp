@@ -38,6 +38,9 @@ struct Shard {
   int index = 0;
   int count = 1;
 };
+/// "K/N" (job K of N, 1-based, as `--shard` takes it); throws OptionError
+/// (field "shard") for other text. validate() checks the range.
+Shard parse_shard(const std::string& text);
 
 /// Supersampled reference frames kept between benchmarks of the same frames
 /// (tune's stages): frame k's image, rendered once.

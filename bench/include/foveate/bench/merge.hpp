@@ -4,10 +4,12 @@
 // foveate version and settings, each job once) become one result, written
 // like any other.
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "foveate/bench/bench.hpp"
+#include "foveate/bench/tune.hpp"
 
 namespace foveate::bench {
 
@@ -27,5 +29,20 @@ BenchResult merge_shards(const std::vector<BenchResult>& shards,
 
 /// The settings that shards must share (bench_json's "settings").
 nlohmann::json bench_settings_json(const BenchResult& b);
+
+/// A shard's results file: its output folder (the results.json or tune.json
+/// in it) or the file itself. Throws foveate::Error for a folder with neither.
+std::string shard_results_file(const std::string& shard);
+
+/// Shards joined from their files: a benchmark's or a tune run's, whichever
+/// the shards are.
+struct MergedShards {
+  std::optional<BenchResult> bench;
+  std::optional<TuneResult> tune;
+};
+/// Reads each shard (a folder or file, shard_results_file) and joins them
+/// (merge_shards or merge_tune_shards); refuses a benchmark's shards mixed
+/// with a tune run's, naming the files, and an empty list (field "shards").
+MergedShards merge_shard_files(const std::vector<std::string>& shards);
 
 }  // namespace foveate::bench
