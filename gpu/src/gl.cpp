@@ -123,6 +123,17 @@ Texture Texture::create_2d_array(GLenum internal_format, int width, int height, 
   return t;
 }
 
+Texture Texture::view(const Texture& of, GLenum internal_format) {
+  GLuint id = 0;
+  glGenTextures(1, &id);  // a view needs a name never bound (not glCreateTextures')
+  Texture t(id);
+  glTextureView(id, GL_TEXTURE_2D, of.id(), internal_format, 0, 1, 0, 1);
+  t.width_ = of.width_;
+  t.height_ = of.height_;
+  t.format_ = internal_format;
+  return t;
+}
+
 Texture Texture::create_2d(GLenum internal_format, int width, int height, int levels) {
   GLint max = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);

@@ -458,13 +458,7 @@ TechniqueInfo logpolar_info() {
                   "paper's first level), with sub-texel jitter; 0 = off",
                   "", ParamType::Real, 0.0, 0.95, 0.0),
             {0, 0.5}),
-      tuned(param("edge_contrast",
-                  "antialiasing of silhouettes and small objects in the buffer: texels whose "
-                  "linear luminance differs from a neighbour's by more than this share of the "
-                  "brighter are reshaded with four samples, averaged (each sample counted as a "
-                  "shaded pixel); 0 = off",
-                  "", ParamType::Real, 0.0, 1.0, 0.25),
-            {0.0, 0.25}),
+      edge_contrast_param("in the log-polar buffer"),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "blur",
                       "inverse",  "inverse_fovea",      "inverse_outer"};

@@ -376,14 +376,7 @@ TechniqueInfo marwarp_info() {
             "samples per texel, averaged in linear light (a box prefilter over the texel; 1, 2 "
             "or 4, each counted as a shaded pixel)",
             "", ParamType::Integer, 1.0, 4.0, 1.0),
-      tuned(
-          param(
-              "edge_contrast",
-              "texels whose linear luminance differs from a neighbour's by more than this share "
-              "of the brighter are reshaded with four samples, averaged (silhouettes and small "
-              "objects antialiased in the buffer; each sample counted as a shaded pixel); 0 = off",
-              "", ParamType::Real, 0.0, 1.0, 0.25),
-          {0.0, 0.25}),
+      edge_contrast_param("in the buffer"),
       param("gbuffer_levels",
             "mesh scenes: G-buffers at 1, 1/2, 1/4 ... of native resolution from which the "
             "buffer is shaded, each over the texels that sample at least gbuffer_ratio of its "

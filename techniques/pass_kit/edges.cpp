@@ -25,19 +25,23 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
                                   const std::vector<PixelRect>& cover, int first, int last,
                                   double contrast, const SetUniforms& set, bool wrap_rows) {
   const int w = buffer.width(), h = buffer.height();
-  EdgeScratch& e = edges_;
-  if (!e.list || e.list.width() != w || e.list.height() != h) {
+  // A window resized again and again would add a size each time: the
+  // storage is dropped when more sizes than a frame needs pile up.
+  constexpr size_t kMostSizes = 8;
+  if (edges_.size() >= kMostSizes && !edges_.count({w, h})) edges_.clear();
+  EdgeScratch& e = edges_[{w, h}];
+  // Room for every texel of the buffer in 4x4 blocks, `columns` to a row.
+  const int columns = std::max(1, w / 4);
+  if (!e.list) {
     e.marks = gpu::Texture::create_2d(GL_R32UI, (w + 31) / 32, h);
     e.list = gpu::Texture::create_2d(GL_R32UI, w, h);
     for (const gpu::Texture* t : {&e.marks, &e.list}) t->set_filter(GL_NEAREST, GL_NEAREST);
     e.rows = gpu::Buffer::create(static_cast<GLsizeiptr>(sizeof(GLuint)) * (h + 1), nullptr);
+    const int most_blocks = (w * h + 15) / 16;
+    e.shaded.ensure(4 * columns, 4 * ((most_blocks + columns - 1) / columns), GL_RGBA16F);
   }
-  // Room for every texel of the buffer in 4x4 blocks, `columns` to a row.
-  const int columns = std::max(1, w / 4);
-  const int most_blocks = (w * h + 15) / 16;
-  e.shaded.ensure(4 * columns, 4 * ((most_blocks + columns - 1) / columns), GL_RGBA16F);
-  if (!e.list_program) {
-    e.list_program =
+  if (!edge_list_) {
+    edge_list_ =
         compiler_.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"pass_kit/edges_list.comp", {}}}}},
                         "pass_kit/edges_list.comp");
   }
@@ -62,10 +66,10 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
     glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glBindImageTexture(1, e.list.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, e.rows.id());
-    e.list_program.use();
+    edge_list_.use();
     const auto groups = static_cast<GLuint>((h + 63) / 64);
     for (int step = 0; step < 3; ++step) {
-      e.list_program.set("u_step", step);
+      edge_list_.set("u_step", step);
       glDispatchCompute(step == 1 ? 1 : groups, 1, 1);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                       GL_TEXTURE_FETCH_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -88,18 +92,31 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
         p.set("u_count", static_cast<int>(count));
       },
       &packed);
-  const gpu::Program& scatter =
-      built("pass_kit/edges_scatter", "pass_kit/edges_scatter.vert", "pass_kit/edges_scatter.frag");
-  buffer.bind();
-  gpu::apply({});
+  if (!edge_scatter_) {
+    edge_scatter_ = compiler_.build(
+        {gpu::StageSource{GL_COMPUTE_SHADER, {{"pass_kit/edges_scatter.comp", {}}}}},
+        "pass_kit/edges_scatter.comp");
+  }
+  // One invocation per entry stores its texel: drawn as points instead, a
+  // rasteriser's cost per point outweighed the packed shading on a cheap
+  // scene whose every texel is an edge (detail).
+  const bool srgb = buffer.color().format() == GL_SRGB8_ALPHA8;
+  const gpu::Texture bytes = srgb ? gpu::Texture::view(buffer.color(), GL_RGBA8) : gpu::Texture();
+  const gpu::Texture& out = srgb ? bytes : buffer.color();
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   gpu::Samplers samplers;
-  scatter.use();
-  samplers.bind(scatter, "u_edge_list", e.list);
-  samplers.bind(scatter, "u_shaded", e.shaded.color());
-  scatter.set("u_buffer_size", float(w), float(h));
-  scatter.set("u_block_columns", columns);
-  glBindVertexArray(vao_.id());
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+  edge_scatter_.use();
+  samplers.bind(edge_scatter_, "u_shaded", e.shaded.color());
+  glBindImageTexture(1, e.list.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindImageTexture(2, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, out.format());
+  edge_scatter_.set("u_count", static_cast<int>(count));
+  edge_scatter_.set("u_block_columns", columns);
+  edge_scatter_.set("u_srgb", srgb ? 1 : 0);
+  glDispatchCompute((count + 63) / 64, 1, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   return static_cast<double>(count);
 }
 

@@ -96,6 +96,17 @@ ParamDecl plan_margin_param(double fidelity_default) {
                {1.0, 1.25, 1.5, 2.0, 2.5, 3.0});
 }
 
+ParamDecl edge_contrast_param(const std::string& note) {
+  return tuned(param("edge_contrast",
+                     "antialiasing of silhouettes, small objects and highlights: texels whose "
+                     "linear luminance differs from a neighbour's by more than this share of the "
+                     "brighter are reshaded with four samples, averaged (each sample counted as a "
+                     "shaded pixel)" +
+                         (note.empty() ? std::string() : "; " + note) + "; 0 = off",
+                     "", ParamType::Real, 0.0, 1.0, 0.25),
+               {0.0, 0.25});
+}
+
 TechniqueConfig planning_config(const TechniqueConfig& config, const ParamValues& values) {
   TechniqueConfig c = config;
   if (values.has(kPlanMarginKey)) c.acuity = config.acuity.finer(values.real(kPlanMarginKey));

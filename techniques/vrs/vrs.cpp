@@ -142,14 +142,9 @@ TechniqueInfo vrs_info() {
           "gives it)",
           "", ParamType::Real, 0.0, 0.5, 0.02),
       {0.0, 0.02, 0.05}));
-  t.params.push_back(tuned(
-      param("edge_contrast",
-            "antialiasing in the coarse classes: coarse pixels whose linear luminance differs "
-            "from a neighbour's by more than this share of the brighter are reshaded with four "
-            "samples, averaged (each sample counted as a shaded pixel); the emulation's only, so "
-            "above 0 it takes the emulation on every driver; 0 = off",
-            "", ParamType::Real, 0.0, 1.0, 0.25),
-      {0.0, 0.25}));
+  t.params.push_back(edge_contrast_param(
+      "in the coarse classes, the emulation's only: above 0 vrs takes the emulation on every "
+      "driver"));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

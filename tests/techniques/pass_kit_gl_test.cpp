@@ -38,6 +38,9 @@ std::unique_ptr<Scene> gradient_scene() {
 }
 
 double linear(double s) { return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4); }
+double encode(double l) {
+  return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
+}
 
 // The mean of the four rotated-grid samples in texel (x, y), in linear light.
 std::array<double, 3> four_sample_mean(int x, int y) {
@@ -74,22 +77,34 @@ Texels read(const gpu::RenderTarget& t) {
 
 class SupersampleEdgesTest : public test::GlTest {
  protected:
-  // Runs the pass over `grey` (a luminance per texel, row 0 at the bottom)
-  // and checks every texel: the marked ones hold the scene's four-sample
-  // mean, the rest what they held. Returns the count the pass reported.
-  double run(const std::vector<float>& grey, Texels* after = nullptr) {
-    Texels before(size_t(kW * kH));
-    for (size_t i = 0; i < before.size(); ++i) before[i] = {grey[i], grey[i], grey[i], 1.0f};
+  // Runs the pass over `grey` (a linear luminance per texel, row 0 at the
+  // bottom) in a buffer of `format` (RGBA16F, or GL_SRGB8_ALPHA8, which
+  // stores sRGB-encoded bytes) and checks every texel: the marked ones hold
+  // the scene's four-sample mean, the rest what they held. Returns the count
+  // the pass reported.
+  double run(const std::vector<float>& grey, Texels* after = nullptr, GLenum format = GL_RGBA16F) {
+    const bool srgb = format == GL_SRGB8_ALPHA8;
+    // An 8-bit code's worth in linear light at the brightest, else fp16's.
+    const double tolerance = srgb ? 6e-3 : 2e-3;
+    Texels before(size_t(kW * kH)), stored(size_t(kW * kH));
+    for (size_t i = 0; i < before.size(); ++i) {
+      before[i] = {grey[i], grey[i], grey[i], 1.0f};
+      const float v = srgb ? float(encode(grey[i])) : grey[i];
+      stored[i] = {v, v, v, 1.0f};
+    }
     gpu::RenderTarget buffer;
-    buffer.ensure(kW, kH, GL_RGBA16F);
-    glTextureSubImage2D(buffer.color().id(), 0, 0, 0, kW, kH, GL_RGBA, GL_FLOAT, before.data());
+    buffer.ensure(kW, kH, format);
+    glTextureSubImage2D(buffer.color().id(), 0, 0, 0, kW, kH, GL_RGBA, GL_FLOAT, stored.data());
     gpu::RenderTarget scratch;
-    scratch.ensure(kW, kH, GL_RGBA16F);
+    scratch.ensure(kW, kH, format);
     const View view = View::full(kW, kH);
     const double n = kit_.supersample_edges(
         *scene_, view, kMapRect, buffer, scratch.color(), {{0, 0, kLast, kH}}, 0, kLast, 0.25,
         [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
-    const Texels got = read(buffer);
+    Texels got = read(buffer);  // as stored: decoded here
+    if (srgb)
+      for (auto& t : got)
+        for (int c = 0; c < 3; ++c) t[size_t(c)] = float(linear(t[size_t(c)]));
     int expected = 0;
     for (int y = 0; y < kH; ++y) {
       for (int x = 0; x < kW; ++x) {
@@ -98,10 +113,11 @@ class SupersampleEdgesTest : public test::GlTest {
           ++expected;
           const auto m = four_sample_mean(x, y);
           for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(g[size_t(c)], m[size_t(c)], 2e-3) << x << "," << y;
+            EXPECT_NEAR(g[size_t(c)], m[size_t(c)], tolerance) << x << "," << y;
         } else {
           for (int c = 0; c < 4; ++c)
-            EXPECT_NEAR(g[size_t(c)], before[size_t(y * kW + x)][size_t(c)], 1e-3) << x << "," << y;
+            EXPECT_NEAR(g[size_t(c)], before[size_t(y * kW + x)][size_t(c)], tolerance)
+                << x << "," << y;
         }
       }
     }
@@ -138,6 +154,15 @@ TEST_F(SupersampleEdgesTest, EveryTexelOfACheckerboardIsReshaded) {
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) grey[size_t(y * kW + x)] = (x + y) % 2 ? 0.9f : 0.1f;
   EXPECT_EQ(run(grey), kLast * kH);
+}
+
+TEST_F(SupersampleEdgesTest, AnSrgbBufferGetsItsReshadedTexelsEncoded) {
+  // logpolar's and vrs's buffers store sRGB-encoded bytes, which image
+  // stores do not encode by themselves.
+  std::vector<float> grey(size_t(kW * kH), 0.2f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 24; x < kW; ++x) grey[size_t(y * kW + x)] = 0.8f;
+  EXPECT_EQ(run(grey, nullptr, GL_SRGB8_ALPHA8), 2 * kH);
 }
 
 TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {

@@ -84,6 +84,10 @@ class Texture : public Handle<detail::delete_texture> {
   static Texture create_2d_multisample(GLenum internal_format, int width, int height, int samples);
   /// 2D array texture of `layers` layers (nearest filtering, clamp to edge).
   static Texture create_2d_array(GLenum internal_format, int width, int height, int layers);
+  /// A view of a 2D texture's first level as `internal_format`, of the same
+  /// view class (GL_SRGB8_ALPHA8 as GL_RGBA8: image stores, which do not
+  /// encode, into an sRGB texture's bytes). It shares `of`'s storage.
+  static Texture view(const Texture& of, GLenum internal_format);
   void set_filter(GLenum min, GLenum mag) const;
   void set_wrap(GLenum wrap) const;
   void upload(int width, int height, GLenum format, GLenum type, const void* pixels) const;

@@ -10,6 +10,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foveate/gpu/pass.hpp"
@@ -102,7 +103,8 @@ class PassKit {
   /// from run to run), lists them in order (edges_list.comp), reshades them
   /// packed side by side with four samples on a rotated grid through
   /// `mapping` (shade_edges.frag; `set` sets the mapping's uniforms), and
-  /// writes each back to its texel (edges_scatter). Packed, only marked
+  /// stores each back into its texel (edges_scatter.comp). `buffer`'s
+  /// colour is RGBA16F or GL_SRGB8_ALPHA8 (immutable storage). Packed, only marked
   /// texels are shaded: over the buffer itself a stencil test leaves whole
   /// 4x4 blocks (llvmpipe) or 2x2 quads (GPUs) running for one marked texel.
   /// Returns the texels reshaded (each costs four samples).
@@ -128,15 +130,18 @@ class PassKit {
   DepthRegions regions_;  ///< pass_around_disc's
   std::map<std::string, gpu::Program> programs_;
   std::map<GLuint, std::string> pass_names_;  ///< by program id
-  /// supersample_edges' working storage, of the buffer's size.
+  /// supersample_edges' working storage, of one buffer's size.
   struct EdgeScratch {
-    gpu::Texture marks;         ///< R32UI: a bit per texel, 1 = reshade
-    gpu::Texture list;          ///< R32UI: the marked texels, packed
-    gpu::RenderTarget shaded;   ///< their four-sample means, packed as the list
-    gpu::Buffer rows;           ///< total, then each row's first entry
-    gpu::Program list_program;  ///< edges_list.comp
+    gpu::Texture marks;        ///< R32UI: a bit per texel, 1 = reshade
+    gpu::Texture list;         ///< R32UI: the marked texels, packed
+    gpu::RenderTarget shaded;  ///< their four-sample means, packed as the list
+    gpu::Buffer rows;          ///< total, then each row's first entry
   };
-  EdgeScratch edges_;
+  /// One per buffer size, kept: vrs reshades several class targets of
+  /// different sizes every frame.
+  std::map<std::pair<int, int>, EdgeScratch> edges_;
+  gpu::Program edge_list_;     ///< edges_list.comp
+  gpu::Program edge_scatter_;  ///< edges_scatter.comp
 };
 
 /// GL coordinates (origin bottom-left) of a top-left-origin point.

@@ -100,6 +100,13 @@ inline constexpr const char* kPlanMarginKey = "margin";
 /// plan.
 ParamDecl plan_margin_param(double fidelity_default);
 
+/// The declaration of `edge_contrast`, the threshold of
+/// PassKit::supersample_edges (texels reshaded with four samples where
+/// their luminance differs from a neighbour's by more than this share of the
+/// brighter; 0 = off), for the techniques that use it; `note` says what is
+/// particular to the technique (may be empty).
+ParamDecl edge_contrast_param(const std::string& note = {});
+
 /// What a technique needs from a scene.
 struct SceneNeeds {
   bool meshes = false;     ///< rasterised geometry with a G-buffer prepass
