@@ -39,8 +39,10 @@ void validate(const BenchOptions& o) {
       const std::string where = field + "[" + std::to_string(i) + "]";
       const TechniqueInfo info = for_field(field, [&] { return technique_info(r.technique); });
       for (const auto& [key, value] : r.params) {
+        // (A named copy: clang 15 cannot capture a structured binding.)
+        const std::string& name = key;
         const bool known = std::any_of(info.params.begin(), info.params.end(),
-                                       [&](const ParamDecl& d) { return d.key == key; });
+                                       [&](const ParamDecl& d) { return d.key == name; });
         if (!known) {
           throw OptionError(field, where + ": " + r.technique + " has no parameter '" + key + "'");
         }

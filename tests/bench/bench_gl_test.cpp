@@ -483,12 +483,12 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
   b.techniques = std::vector<std::string>{"native", "layered"};
   b.params = params.only(*b.techniques);
   const BenchResult with_params = run(b);
-  for (const auto& [key, value] : r.chosen.at("layered")) {
+  for (const auto& chosen : r.chosen.at("layered")) {
     const auto& ps = with_params.results[1].parameters;
-    const auto it =
-        std::find_if(ps.begin(), ps.end(), [&](const auto& kv) { return kv.first == key; });
+    const auto it = std::find_if(ps.begin(), ps.end(),
+                                 [&](const auto& kv) { return kv.first == chosen.first; });
     ASSERT_NE(it, ps.end());
-    EXPECT_EQ(it->second, value);
+    EXPECT_EQ(it->second, chosen.second);
   }
   std::filesystem::remove_all(out);
 }
