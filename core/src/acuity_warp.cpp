@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "foveate/core/error.hpp"
@@ -24,25 +25,49 @@ double model_spacing_px(double focal, double slope, double w0, double e_deg) {
 }
 
 // Screen points at which a gaze's sampling is checked: rays every 1/64 of a
-// turn, radii growing by 6 % from `from` out to the farthest corner, on the
-// screen only.
-template <class F>
-void for_screen_samples(const Display& d, Vec2d gaze, double from, F&& f) {
-  const double W = d.width_px, H = d.height_px;
-  double far = 0.0;
-  for (double cx : {0.0, W}) {
-    for (double cy : {0.0, H}) far = std::max(far, std::hypot(cx - gaze.x, cy - gaze.y));
-  }
-  constexpr int kRays = 64;
-  for (double r = std::max(from, 0.5); r <= far * 1.06; r *= 1.06) {
+// turn (their directions computed once), on the screen only.
+constexpr int kRays = 64;
+// Check rings grow by this factor out to past the farthest corner.
+constexpr double kRingStep = 1.06;
+
+const std::array<Vec2d, kRays>& ray_directions() {
+  static const std::array<Vec2d, kRays> dirs = [] {
+    std::array<Vec2d, kRays> d{};
     for (int i = 0; i < kRays; ++i) {
       const double th = kTwoPi * (i + 0.5) / kRays;
-      const Vec2d dir{std::cos(th), std::sin(th)};
-      const Vec2d p{gaze.x + r * dir.x, gaze.y + r * dir.y};
-      if (p.x < 0.0 || p.x > W || p.y < 0.0 || p.y > H) continue;
-      f(p, dir, r);
+      d[static_cast<size_t>(i)] = {std::cos(th), std::sin(th)};
     }
+    return d;
+  }();
+  return dirs;
+}
+
+double farthest_corner(const Display& d, Vec2d gaze) {
+  double far = 0.0;
+  for (double cx : {0.0, double(d.width_px)}) {
+    for (double cy : {0.0, double(d.height_px)})
+      far = std::max(far, std::hypot(cx - gaze.x, cy - gaze.y));
   }
+  return far;
+}
+
+// `f(p, dir)` for the on-screen points of the ring of radius r.
+template <class F>
+void for_ring(const Display& d, Vec2d gaze, double r, F&& f) {
+  const double W = d.width_px, H = d.height_px;
+  for (const Vec2d& dir : ray_directions()) {
+    const Vec2d p{gaze.x + r * dir.x, gaze.y + r * dir.y};
+    if (p.x < 0.0 || p.x > W || p.y < 0.0 || p.y > H) continue;
+    f(p, dir);
+  }
+}
+
+// The radii of the rings from `from` (at least half a pixel) out to past the
+// farthest corner.
+std::vector<double> rings_from(double from, double far) {
+  std::vector<double> out;
+  for (double r = std::max(from, 0.5); r <= far * kRingStep; r *= kRingStep) out.push_back(r);
+  return out;
 }
 
 Vec2d clamp_to_screen(const Display& d, Vec2d g) {
@@ -115,19 +140,6 @@ AcuityWarpMapping AcuityWarp::centred(int rows) const {
   return m;
 }
 
-double AcuityWarp::kappa_for(Vec2d gaze, double focal_px) const {
-  const double e0 = acuity_warp_start_deg(focal_px, acuity_.slope, acuity_.w0_deg);
-  double kappa = 1.0;
-  for_screen_samples(display_, gaze, focal_px * std::tan(e0 * kRad),
-                     [&](Vec2d p, Vec2d dir, double r) {
-                       const double allowed = mar_half_spacing_px(display_, acuity_, p, dir, gaze);
-                       const double model = model_spacing_px(
-                           focal_px, acuity_.slope, acuity_.w0_deg, std::atan(r / focal_px) * kDeg);
-                       kappa = std::min(kappa, allowed / model);
-                     });
-  return std::max(kappa, 0.02);
-}
-
 int AcuityWarp::rows_for(Vec2d gaze) const {
   gaze = clamp_to_screen(display_, gaze);
   // From where the closed form's native disc ends (a gaze elsewhere, whose
@@ -135,10 +147,12 @@ int AcuityWarp::rows_for(Vec2d gaze) const {
   const double f = display_.eye_distance_px();
   const double from = f * std::tan(acuity_warp_start_deg(f, acuity_.slope, acuity_.w0_deg) * kRad);
   double need = 4.0;
-  for_screen_samples(display_, gaze, from, [&](Vec2d p, Vec2d dir, double r) {
-    const double across = mar_half_spacing_px(display_, acuity_, p, {-dir.y, dir.x}, gaze);
-    need = std::max(need, kTwoPi * r / across);
-  });
+  for (double r : rings_from(from, farthest_corner(display_, gaze))) {
+    for_ring(display_, gaze, r, [&](Vec2d p, Vec2d dir) {
+      const double across = mar_half_spacing_px(display_, acuity_, p, {-dir.y, dir.x}, gaze);
+      need = std::max(need, kTwoPi * r / across);
+    });
+  }
   // Whole bands of 4 rows (the cover's), rounded up.
   // (0.5 % over what the samples found: the largest need may lie between them.)
   return 4 * static_cast<int>(std::ceil(1.005 * need / 4.0));
@@ -157,16 +171,49 @@ AcuityWarpMapping AcuityWarp::mapping(Vec2d gaze) const {
     return m;
   }
   // Elsewhere the focal length whose mapping shades the fewest texels on
-  // the screen, each made finer by its kappa.
+  // the screen, each made finer by its kappa: the largest (at most 1) for
+  // which the radial spacing stays within half the MAR on every ring from
+  // where its native disc ends. The allowed spacing does not depend on the
+  // candidate, so each ring's tightest is found once (a ring at each
+  // candidate's start, then rings growing by 6 % from the nearest start),
+  // and a candidate costs one comparison per ring.
+  constexpr std::array<double, 6> kScales{1.0, 1.1, 1.2, 1.35, 1.5, 1.7};
+  std::array<double, kScales.size()> starts{};
+  for (size_t i = 0; i < kScales.size(); ++i) {
+    const double F = f * kScales[i];
+    starts[i] = F * std::tan(acuity_warp_start_deg(F, acuity_.slope, acuity_.w0_deg) * kRad);
+  }
+  std::vector<double> radii =
+      rings_from(*std::min_element(starts.begin(), starts.end()), farthest_corner(display_, gaze));
+  radii.insert(radii.end(), starts.begin(), starts.end());
+  struct Ring {
+    double r, along;
+  };
+  std::vector<Ring> rings;
+  rings.reserve(radii.size());
+  for (double r : radii) {
+    double along = std::numeric_limits<double>::infinity();
+    for_ring(display_, gaze, r, [&](Vec2d p, Vec2d dir) {
+      along = std::min(along, mar_half_spacing_px(display_, acuity_, p, dir, gaze));
+    });
+    if (std::isfinite(along)) rings.push_back({r, along});
+  }
   AcuityWarpMapping best;
   double best_texels = 0.0;
   const std::array<double, 4> screen{0.0, 0.0, double(display_.width_px),
                                      double(display_.height_px)};
-  for (double scale : {1.0, 1.1, 1.2, 1.35, 1.5, 1.7}) {
+  for (size_t i = 0; i < kScales.size(); ++i) {
     AcuityWarpMapping m;
     m.gaze = gaze;
-    m.focal_px = f * scale;
-    m.kappa = kappa_for(gaze, m.focal_px);
+    m.focal_px = f * kScales[i];
+    double kappa = 1.0;
+    for (const Ring& ring : rings) {
+      if (ring.r < starts[i]) continue;
+      const double model = model_spacing_px(m.focal_px, acuity_.slope, acuity_.w0_deg,
+                                            std::atan(ring.r / m.focal_px) * kDeg);
+      kappa = std::min(kappa, ring.along / model);
+    }
+    m.kappa = std::max(kappa, 0.02);
     m.slope = acuity_.slope * m.kappa;
     m.w0_deg = acuity_.w0_deg * m.kappa;
     m.start_deg = acuity_warp_start_deg(m.focal_px, m.slope, m.w0_deg);

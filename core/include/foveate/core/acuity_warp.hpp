@@ -81,8 +81,6 @@ class AcuityWarp {
   [[nodiscard]] const AcuityModel& acuity() const { return acuity_; }
 
  private:
-  /// The largest kappa for focal length F at this gaze.
-  [[nodiscard]] double kappa_for(Vec2d gaze, double focal_px) const;
   Display display_;
   AcuityModel acuity_;
 };
