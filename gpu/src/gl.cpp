@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "foveate/core/error.hpp"
+#include "foveate/gpu/object_counts.hpp"
 
 namespace foveate::gpu {
 
@@ -20,6 +21,8 @@ enum Kind {
   kQuery
 };
 std::atomic<long> g_live[kQuery + 1];
+// Every object made since the process started (object_counts.hpp).
+std::atomic<long> g_created[kQuery + 1];
 
 void freed(Kind k) { g_live[k].fetch_sub(1, std::memory_order_relaxed); }
 }  // namespace
@@ -63,13 +66,16 @@ void count_created(void (*deleter)(GLuint)) {
       delete_buffer,       delete_texture, delete_framebuffer, delete_renderbuffer,
       delete_vertex_array, delete_program, delete_shader,      delete_query};
   for (int k = 0; k <= kQuery; ++k) {
-    if (kDeleters[k] == deleter) g_live[k].fetch_add(1, std::memory_order_relaxed);
+    if (kDeleters[k] != deleter) continue;
+    g_live[k].fetch_add(1, std::memory_order_relaxed);
+    g_created[k].fetch_add(1, std::memory_order_relaxed);
   }
 }
 }  // namespace detail
 
-GlObjectCounts live_gl_objects() {
-  auto n = [](Kind k) { return g_live[k].load(std::memory_order_relaxed); };
+namespace {
+GlObjectCounts counts(const std::atomic<long> (&of)[kQuery + 1]) {
+  auto n = [&](Kind k) { return of[k].load(std::memory_order_relaxed); };
   GlObjectCounts c;
   c.buffers = n(kBuffer);
   c.textures = n(kTexture);
@@ -81,6 +87,11 @@ GlObjectCounts live_gl_objects() {
   c.queries = n(kQuery);
   return c;
 }
+}  // namespace
+
+GlObjectCounts live_gl_objects() { return counts(g_live); }
+
+GlObjectCounts gl_objects_created() { return counts(g_created); }
 
 Buffer Buffer::create(GLsizeiptr size, const void* data, GLbitfield flags) {
   GLuint id = 0;
