@@ -99,7 +99,7 @@ class MarWarp final : public Technique {
     int W = 0, H = 0;
     double r_native = 0, band = 0, far = 0, reach = 0;
     bool has_buffer = false;
-    int bw = 0;
+    int bw = 0, bh = 0;  // the buffer texture's size (at least the rows + 1)
     std::vector<PixelRect> cover;
     double x0 = 0, y0 = 0;  // the disc's box on the screen
     int fw = 1, fh = 1;
@@ -148,23 +148,25 @@ class MarWarp final : public Technique {
       for (double cy : {0.0, double(H)})
         f.far = std::max(f.far, std::hypot(cx - f.g.x, cy - f.g.y));
     }
-    // The buffer: as wide as the farthest corner needs (grown, never
-    // shrunk, as the gaze moves), as many rows as the mapping has (the
-    // angle wraps: a texture exactly that high repeats along it).
+    // The buffer: as wide as the farthest corner needs and one row more
+    // than the mapping has (row `rows` repeats row 0, so that a bilinear
+    // read across the angle's wrap finds it there), both grown, never
+    // shrunk, as the gaze moves. The rows follow the gaze: sized to them,
+    // the buffers (and the edge pass's storage, kept per size) would be
+    // reallocated at every change of a saccade.
     f.has_buffer = f.r_native + f.band < f.far;
     const int columns = static_cast<int>(std::ceil(f.m.column(f.far))) + kPad + 1;
     if (f.has_buffer) {
       const int bw = std::max({buffer_.width(), columns, 1});
-      if (buffer_.width() != bw || buffer_.height() != f.m.rows) {
-        buffer_.ensure(bw, f.m.rows, GL_RGBA16F);
-        sharpened_.ensure(bw, f.m.rows, GL_RGBA16F);
-        for (gpu::RenderTarget* t : {&buffer_, &sharpened_}) {
-          t->color().set_wrap(GL_CLAMP_TO_EDGE);
-          glTextureParameteri(t->color().id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-        }
+      const int bh = std::max(buffer_.height(), f.m.rows + 1);
+      if (buffer_.width() != bw || buffer_.height() != bh) {
+        buffer_.ensure(bw, bh, GL_RGBA16F);
+        sharpened_.ensure(bw, bh, GL_RGBA16F);
+        for (gpu::RenderTarget* t : {&buffer_, &sharpened_}) t->color().set_wrap(GL_CLAMP_TO_EDGE);
       }
     }
     f.bw = buffer_.width();
+    f.bh = buffer_.height();
     // Texels inside this radius are never read (the disc and most of its
     // band show native pixels): not shaded.
     const double skip = std::max(0.0, 0.85 * f.r_native);
@@ -179,7 +181,9 @@ class MarWarp final : public Technique {
                  y1 = std::min(double(H), std::ceil(f.g.y + f.reach));
     f.fw = std::max(1, static_cast<int>(x1 - f.x0));
     f.fh = std::max(1, static_cast<int>(y1 - f.y0));
-    fovea_.ensure(f.fw, f.fh);
+    // Its box is clipped to the screen, so its size changes near the edges:
+    // the target is grown, never shrunk, and the disc drawn in its corner.
+    fovea_.ensure(std::max(fovea_.width(), f.fw), std::max(fovea_.height(), f.fh));
     return f;
   }
 
@@ -187,7 +191,7 @@ class MarWarp final : public Technique {
     p.set("u_warp_gaze", float(f.g.x), float(f.g.y));
     p.set("u_warp", float(f.m.focal_px), float(f.m.slope), float(f.m.w0_deg),
           float(f.m.slope * f.m.start_deg + f.m.w0_deg));
-    p.set("u_warp_buffer", float(f.bw), float(f.m.rows));
+    p.set("u_warp_buffer", float(f.bw), float(f.m.rows), float(f.bh));
   }
 
   struct Shaded {
@@ -229,7 +233,7 @@ class MarWarp final : public Technique {
     if (!level_cover.empty() && edge_ > 0.0)
       shaded.edges +=
           kit_.supersample_edges(scene, view, "marwarp/map_warp.glsl", buffer_, sharpened_.color(),
-                                 level_cover, first, last, edge_, set_shade);
+                                 level_cover, first, last, edge_, set_shade, true, f.m.rows);
     if (shades_disc) {
       // At the screen's own pixel centres, from native's grid.
       const std::vector<PixelRect> disc_cover =
@@ -285,9 +289,16 @@ class MarWarp final : public Technique {
                      [&](const gpu::Program& p, gpu::Samplers& samplers) {
                        samplers.bind(p, "u_buffer", buffer_.color());
                        p.set("u_sharpen", float(sharpen_));
+                       p.set("u_rows", f.m.rows);
                      });
     }
     const gpu::RenderTarget& read = sharpen ? sharpened_ : buffer_;
+    if (f.has_buffer) {
+      // Row `rows` repeats row 0 (warp_uv reads across the wrap there).
+      const GLuint id = read.color().id();
+      glCopyImageSubData(id, GL_TEXTURE_2D, 0, 0, 0, 0, id, GL_TEXTURE_2D, 0, 0, f.m.rows, 0, f.bw,
+                         1, 1);
+    }
     const auto set_resolve = [&](const gpu::Program& p, gpu::Samplers& samplers) {
       p.allow_missing({"u_buffer", "u_fovea", "u_fovea_rect", "u_disc", "u_warp_gaze", "u_warp",
                        "u_warp_buffer"});

@@ -6,7 +6,9 @@
 // angles in degrees, v = angle / (2 pi) rows.
 uniform vec2 u_warp_gaze;    // screen pixels
 uniform vec4 u_warp;         // F (pixels), m, w0 (degrees), m E0 + w0
-uniform vec2 u_warp_buffer;  // texture width (columns) and rows
+// The texture's width (columns), the rows, the texture's height (at least
+// rows + 1: row `rows` repeats row 0).
+uniform vec3 u_warp_buffer;
 const float WARP_DEG = 57.2957795131;
 const float WARP_TWO_PI = 6.28318530718;
 
@@ -17,12 +19,16 @@ vec2 warp_to_screen(vec2 texel) {
   return u_warp_gaze + r * vec2(cos(a), sin(a));
 }
 
-// Normalised buffer coordinates of a screen position.
+// Normalised texture coordinates of a screen position. A bilinear read
+// within half a row of the angle's wrap reads the last row and row `rows`,
+// which repeats row 0.
 vec2 warp_uv(vec2 screen) {
   vec2 d = screen - u_warp_gaze;
   float e = atan(length(d) / u_warp.x) * WARP_DEG;
   float u = 2.0 / u_warp.y * log((u_warp.y * e + u_warp.z) / u_warp.w);
   float a = atan(d.y, d.x);
   if (a < 0.0) a += WARP_TWO_PI;
-  return vec2(u / u_warp_buffer.x, a / WARP_TWO_PI);
+  float row = a / WARP_TWO_PI * u_warp_buffer.y;
+  if (row < 0.5) row += u_warp_buffer.y;
+  return vec2(u / u_warp_buffer.x, row / u_warp_buffer.z);
 }

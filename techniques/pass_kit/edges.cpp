@@ -23,15 +23,15 @@ std::vector<PixelRect> packed_cover(int count, int columns) {
 double PassKit::supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                                   const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                                   const std::vector<PixelRect>& cover, int first, int last,
-                                  double contrast, const SetUniforms& set, bool wrap_rows) {
+                                  double contrast, const SetUniforms& set, bool wrap_rows,
+                                  int rows) {
   const int w = buffer.width(), h = buffer.height();
   // A window resized again and again would add a size each time: the
   // storage is dropped when more sizes than a frame needs pile up.
   constexpr size_t kMostSizes = 8;
   if (edges_.size() >= kMostSizes && !edges_.count({w, h})) edges_.clear();
   EdgeScratch& e = edges_[{w, h}];
-  // Room for every texel of the buffer in 4x4 blocks, `columns` to a row.
-  const int columns = std::max(1, w / 4);
+  const int columns = std::max(1, w / 4);  // 4x4 blocks to a row: room for every texel
   if (!e.list) {
     e.marks = gpu::Texture::create_2d(GL_R32UI, (w + 31) / 32, h);
     e.list = gpu::Texture::create_2d(GL_R32UI, w, h);
@@ -61,6 +61,7 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
                 p.set("u_edge", float(contrast));
                 p.set("u_columns", float(first), float(std::min(last, w)));
                 p.set("u_wrap_rows", wrap_rows ? 1 : 0);
+                p.set("u_rows", rows > 0 ? std::min(rows, h) : h);
               });
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);

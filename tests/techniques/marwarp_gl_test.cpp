@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "foveate/core/acuity_warp.hpp"
+#include "foveate/gpu/object_counts.hpp"
 #include "foveate/techniques/frame_runner.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "gl_fixture.hpp"
@@ -123,6 +124,42 @@ TEST_F(Marwarp, NoSeamWhereTheAngleWraps) {
     return sum / n;
   };
   EXPECT_LT(band(178), std::max(band(168), band(188)) + 1.0);
+}
+
+TEST_F(Marwarp, KeepsItsStorageAsTheGazeMoves) {
+  // The rows follow the gaze (more off the centre, most in a corner). Once
+  // the buffers have grown to the gazes' most rows, moving among them
+  // allocates nothing, and a frame drawn into the taller buffer is the frame
+  // a fresh technique draws at that gaze.
+  const int W = 320, H = 180;
+  const std::vector<Vec2d> gazes{{160, 90}, {10, 10}, {250, 60}, {100, 150}};
+  const AcuityWarp warp(config(W, H).display, AcuityModel::preset("A"));
+  int most = 0;
+  for (const Vec2d& g : gazes) most = std::max(most, warp.mapping(g).rows);
+  ASSERT_GT(most, warp.mapping(gazes[0]).rows);  // the gazes do move the rows
+  auto scene = load_scene("cheap");
+  auto t = make_technique("marwarp", config(W, H));
+  for (const Vec2d& g : gazes) run(*t, *scene, g);
+  // What a run costs besides the technique (run() makes a frame runner,
+  // whose output target is its own): a second frame at the same gaze.
+  const gpu::GlObjectCounts c0 = gpu::gl_objects_created();
+  run(*t, *scene, gazes.back());
+  const gpu::GlObjectCounts c1 = gpu::gl_objects_created();
+  Image centre;
+  for (const Vec2d& g : gazes) {
+    Image img = run(*t, *scene, g);
+    if (g.x == gazes[0].x && g.y == gazes[0].y) centre = std::move(img);
+  }
+  const gpu::GlObjectCounts c2 = gpu::gl_objects_created();
+  const long n = static_cast<long>(gazes.size());
+  EXPECT_EQ(c2.textures - c1.textures, n * (c1.textures - c0.textures));
+  EXPECT_EQ(c2.framebuffers - c1.framebuffers, n * (c1.framebuffers - c0.framebuffers));
+  EXPECT_EQ(c2.renderbuffers - c1.renderbuffers, n * (c1.renderbuffers - c0.renderbuffers));
+  auto fresh = make_technique("marwarp", config(W, H));
+  const Image expected = run(*fresh, *scene, gazes[0]);
+  const test::Comparison c = test::compare_images(expected, centre, 0);
+  EXPECT_TRUE(c.size_matches);
+  EXPECT_EQ(c.max_error, 0);
 }
 
 TEST_F(Marwarp, NoRingInTheResolve) {

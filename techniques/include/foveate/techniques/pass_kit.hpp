@@ -94,8 +94,9 @@ class PassKit {
                const gpu::PassState& state = {}, bool early = false,
                const std::vector<PixelRect>* cover = nullptr);
   /// Antialiasing in a subsampled buffer (marwarp, logpolar, vrs): marks the
-  /// texels of `cover` (columns [first, last); rows wrap with `wrap_rows`,
-  /// as a polar buffer's angles do) whose linear luminance
+  /// texels of `cover` (columns [first, last); of the buffer's first `rows`
+  /// rows, all when 0, which wrap with `wrap_rows`, as a polar buffer's
+  /// angles do) whose linear luminance
   /// differs from a neighbour's by more than `contrast` of the brighter
   /// (pass_kit/edges.frag, reading a copy of the colour in `scratch`, a
   /// texture of the buffer's size and format: reading the framebuffer drawn
@@ -111,7 +112,8 @@ class PassKit {
   double supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                            const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                            const std::vector<PixelRect>& cover, int first, int last,
-                           double contrast, const SetUniforms& set, bool wrap_rows = true);
+                           double contrast, const SetUniforms& set, bool wrap_rows = true,
+                           int rows = 0);
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.
