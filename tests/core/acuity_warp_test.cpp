@@ -16,6 +16,21 @@ constexpr double kPi = std::numbers::pi;
 
 Display desktop() { return Display::load("desktop-1080p"); }
 
+// f(p, r, dir) at the centre p of every step_x-th pixel of every step_y-th
+// row of the 1920x1080 screen, from pixel (x0, y0), that lies farther than
+// `from` from the gaze g (r the distance, dir the unit vector from g).
+template <class F>
+void for_pixels_beyond(Vec2d g, double from, int x0, int y0, int step_x, int step_y, F&& f) {
+  for (int y = y0; y < 1080; y += step_y) {
+    for (int x = x0; x < 1920; x += step_x) {
+      const Vec2d p{x + 0.5, y + 0.5};
+      const double r = std::hypot(p.x - g.x, p.y - g.y);
+      if (r <= from) continue;
+      f(p, r, Vec2d{(p.x - g.x) / r, (p.y - g.y) / r});
+    }
+  }
+}
+
 }  // namespace
 
 TEST(AcuityWarp, RadialSpacingIsHalfTheMarTimesTheMargin) {
@@ -71,64 +86,43 @@ TEST(AcuityWarp, RowsKeepTheSpacingAcrossTheRaysWithinHalfTheMar) {
 }
 
 TEST(AcuityWarp, NoGazeIsSampledCoarserThanHalfTheMar) {
-  // For gazes at the centre, off it and in a corner, at every screen pixel
+  // For gazes at the centre, off it and in corners, at every screen pixel
   // beyond the native disc: the spacing along the ray (dr/du) and across it
   // (2 pi r / rows) is at most half the MAR there, from the exact angles.
   const Display d = desktop();
   const AcuityModel a = AcuityModel::preset("A").finer(1.25);
   const AcuityWarp warp(d, a);
-  for (const Vec2d g : {Vec2d{960, 540}, Vec2d{400, 700}, Vec2d{0, 0}, Vec2d{1900, 60}}) {
+  for (const Vec2d g :
+       {Vec2d{960, 540}, Vec2d{400, 700}, Vec2d{0, 0}, Vec2d{1900, 60}, Vec2d{1500, 300}}) {
     const AcuityWarpMapping m = warp.mapping(g);
     EXPECT_LE(m.kappa, 1.0);
     EXPECT_GT(m.kappa, 0.7) << g.x << "," << g.y;
     double worst_r = 0, worst_t = 0;
-    for (int y = 3; y < 1080; y += 37) {
-      for (int x = 5; x < 1920; x += 41) {
-        const Vec2d p{x + 0.5, y + 0.5};
-        const double r = std::hypot(p.x - g.x, p.y - g.y);
-        if (r <= m.start_px() + 1.0) continue;
-        const Vec2d dir{(p.x - g.x) / r, (p.y - g.y) / r};
-        worst_r = std::max(worst_r, m.radial_spacing_px(r) / mar_half_spacing_px(d, a, p, dir, g));
-        worst_t = std::max(
-            worst_t, m.tangential_spacing_px(r) / mar_half_spacing_px(d, a, p, {-dir.y, dir.x}, g));
-      }
-    }
+    for_pixels_beyond(g, m.start_px() + 1.0, 5, 3, 41, 37, [&](Vec2d p, double r, Vec2d dir) {
+      worst_r = std::max(worst_r, m.radial_spacing_px(r) / mar_half_spacing_px(d, a, p, dir, g));
+      worst_t = std::max(
+          worst_t, m.tangential_spacing_px(r) / mar_half_spacing_px(d, a, p, {-dir.y, dir.x}, g));
+    });
     EXPECT_LE(worst_r, 1.002) << g.x << "," << g.y;
     EXPECT_LE(worst_t, 1.0) << g.x << "," << g.y;
     // And not much finer than it along the ray (the closed form is exact at
     // the centre).
     EXPECT_GT(worst_r, g.x == 960 ? 0.999 : 0.85) << g.x << "," << g.y;
-  }
-}
-
-TEST(AcuityWarp, KappaIsTheLargestThatKeepsEveryPixelWithinHalfTheMar) {
-  // mapping() checks the acuity on rings of 64 rays; worked here over every
-  // 7th pixel instead: for the focal length it chose, the largest kappa for
-  // which the model's radial spacing stays within half the MAR at every
-  // pixel beyond where the unscaled model's native disc ends. The rings may
-  // miss the tightest pixel by a little (never coarser than 0.3 %) and must
-  // not be needlessly fine (within 0.2 %; both are within 0.02 % here).
-  const Display d = desktop();
-  const AcuityModel a = AcuityModel::preset("A").finer(1.25);
-  const AcuityWarp warp(d, a);
-  for (const Vec2d g : {Vec2d{400, 700}, Vec2d{0, 0}, Vec2d{1900, 60}, Vec2d{1500, 300}}) {
-    const AcuityWarpMapping m = warp.mapping(g);
+    // mapping() checks the acuity on rings of 64 rays; worked here over
+    // every 7th pixel instead: for the focal length it chose, the largest
+    // kappa for which the model's radial spacing stays within half the MAR
+    // beyond where the unscaled model's native disc ends. The rings may miss
+    // the tightest pixel by a little (never coarser than 0.3 %) and must not
+    // be needlessly fine (within 0.2 %; both are within 0.02 % here).
     AcuityWarpMapping unscaled = m;
     unscaled.slope = a.slope;
     unscaled.w0_deg = a.w0_deg;
     unscaled.kappa = 1.0;
     unscaled.start_deg = acuity_warp_start_deg(m.focal_px, a.slope, a.w0_deg);
     double kappa = 1.0;
-    for (int y = 0; y < 1080; y += 7) {
-      for (int x = 0; x < 1920; x += 7) {
-        const Vec2d p{x + 0.5, y + 0.5};
-        const double r = std::hypot(p.x - g.x, p.y - g.y);
-        if (r < unscaled.start_px()) continue;
-        const Vec2d dir{(p.x - g.x) / r, (p.y - g.y) / r};
-        kappa =
-            std::min(kappa, mar_half_spacing_px(d, a, p, dir, g) / unscaled.radial_spacing_px(r));
-      }
-    }
+    for_pixels_beyond(g, unscaled.start_px(), 0, 0, 7, 7, [&](Vec2d p, double r, Vec2d dir) {
+      kappa = std::min(kappa, mar_half_spacing_px(d, a, p, dir, g) / unscaled.radial_spacing_px(r));
+    });
     EXPECT_LE(m.kappa, kappa * 1.003) << g.x << "," << g.y;
     EXPECT_GE(m.kappa, kappa * 0.998) << g.x << "," << g.y;
   }
