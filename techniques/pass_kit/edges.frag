@@ -5,8 +5,9 @@
 // object, a sharp highlight: where one sample per texel aliases).
 // Neighbours are taken within the columns this pass covers (u_columns) and
 // the rows in use (u_rows: the texture may have more); rows wrap where they
-// are angles around the gaze (u_wrap_rows), else stop at the last. One not shaded this frame (alpha 0: the buffer is cleared)
-// counts as the texel itself.
+// are angles around the gaze (u_wrap_rows), else stop at the last. One not
+// shaded this frame (alpha 0: the buffer is cleared) counts as the texel
+// itself.
 layout(r32ui, binding = 0) uniform coherent uimage2D u_marks;
 uniform sampler2D u_buffer;
 uniform float u_edge;

@@ -17,8 +17,8 @@ void main() {
   int w = imageSize(u_list).x;
   uint e = imageLoad(u_list, ivec2(k % w, k / w)).r;
   int b = k >> 4, i = k & 15;
-  vec4 c = texelFetch(u_shaded,
-                      ivec2((b % u_block_columns) * 4 + (i & 3), (b / u_block_columns) * 4 + (i >> 2)), 0);
+  ivec2 block = ivec2(b % u_block_columns, b / u_block_columns) * 4;
+  vec4 c = texelFetch(u_shaded, block + ivec2(i & 3, i >> 2), 0);
   if (u_srgb != 0) c.rgb = foveate_srgb(c.rgb);
   imageStore(u_buffer, ivec2(int(e & 0xFFFFu), int(e >> 16)), c);
 }
