@@ -129,7 +129,7 @@ class Checkerboard final : public Technique {
     //    (docs/performance.md).
     FrameStats stats;
     stats.native_pixels = double(W) * H;
-    stats.shaded_pixels = kit_.shade(
+    const PixelCount shaded = kit_.shade(
         scene, view, kMapRect, frame_,
         [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); },
         gpu::PassState::stencil_equal());
@@ -143,6 +143,7 @@ class Checkerboard final : public Technique {
            by_region[static_cast<size_t>(k)]});
     }
     reconstruct(gaze, b, target);
+    stats.shaded_pixels = shaded.read();  // once the last pass is sent (PixelCount)
     return stats;
   }
 

@@ -60,16 +60,15 @@ class Inset final : public Technique {
     }
     scene.prepass(pv);
     periphery_.ensure(pw, ph);
-    const double np =
+    const PixelCount np =
         kit_.shade(scene, pv, kMapRect, periphery_,
                    [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, pv); });
-    s.parts.push_back({"periphery", np});
     // Foveal inset at native resolution, clipped to the screen.
     const double x0 = std::max(0.0, std::floor(g.x - half)),
                  y0 = std::max(0.0, std::floor(g.y - half));
     const double x1 = std::min(double(W), std::ceil(g.x + half)),
                  y1 = std::min(double(H), std::ceil(g.y + half));
-    double ni = 0.0;
+    PixelCount ni;
     const bool has_inset = x1 > x0 && y1 > y0;
     if (has_inset) {
       const View iv{x0, y0, x1, y1, static_cast<int>(x1 - x0), static_cast<int>(y1 - y0), 1.0};
@@ -78,8 +77,6 @@ class Inset final : public Technique {
       ni = kit_.shade(scene, iv, kMapRect, inset_,
                       [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, iv); });
     }
-    s.parts.push_back({"inset", ni});
-    s.shaded_pixels = np + ni;
     // Composite: the periphery blurred at its own resolution (no pass at
     // blur 0), upscaled over the screen (one fetch per pixel), then the inset
     // blended over its own rectangle only.
@@ -111,6 +108,9 @@ class Inset final : public Technique {
                   c.set("u_border", float(f.blend_border_px));
                 });
     }
+    // Read once the frame's last pass is sent (PixelCount).
+    s.parts = {{"periphery", np.read()}, {"inset", ni.read()}};
+    s.shaded_pixels = s.parts[0].pixels + s.parts[1].pixels;
     return s;
   }
 

@@ -114,14 +114,19 @@ FrameStats Layered::render(Scene& scene, const FrameInput& frame, const GazeStat
   f.can_reproject = reproject_ && scene.view_projection().has_value();
   FrameStats stats;
   stats.native_pixels = double(f.width) * f.height;
+  std::vector<PixelCount> shaded(plan_.layers.size());
   for (size_t i = 0; i < plan_.layers.size(); ++i) {
     const bool update = updates_now(i, frame, f);
     state_[i].updated = update;
-    const double shaded = update ? render_layer(scene, i, gaze, f) : 0.0;
-    stats.parts.push_back({"layer " + std::to_string(i + 1), shaded});
-    stats.shaded_pixels += shaded;
+    if (update) shaded[i] = render_layer(scene, i, gaze, f);
   }
   composite(scene, target);
+  // Read once the frame's last pass is sent (PixelCount).
+  for (size_t i = 0; i < shaded.size(); ++i) {
+    const double px = shaded[i].read();
+    stats.parts.push_back({"layer " + std::to_string(i + 1), px});
+    stats.shaded_pixels += px;
+  }
   ++frames_;
   return stats;
 }
@@ -146,7 +151,8 @@ bool Layered::updates_now(size_t i, const FrameInput& frame, const FrameFacts& f
          (frame.frame % 2) == static_cast<int>((i + 1) % 2);
 }
 
-double Layered::render_layer(Scene& scene, size_t i, const GazeState& gaze, const FrameFacts& f) {
+PixelCount Layered::render_layer(Scene& scene, size_t i, const GazeState& gaze,
+                                 const FrameFacts& f) {
   const size_t n = plan_.layers.size();
   const Layer& L = plan_.layers[i];
   LayerState& st = state_[i];
@@ -192,7 +198,7 @@ double Layered::render_layer(Scene& scene, size_t i, const GazeState& gaze, cons
   st.spare.clear(0, 0, 0, 1);
   const bool stale_lines_up = f.can_reproject || (f.image_key && f.image_key == st.image_key);
   const std::vector<PixelRect> cover = shown_cover(i, v, !half_rate_ || !stale_lines_up, f);
-  const double shaded = kit_.shade(
+  PixelCount shaded = kit_.shade(
       scene, jv, kMapRect, st.spare,
       [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, jv); }, {}, false, &cover);
   // A moving image with no history to reproject and none wanted at the same

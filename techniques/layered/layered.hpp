@@ -92,7 +92,7 @@ class Layered final : public Technique {
   /// Whether layer i is rendered this frame (else shown stale).
   [[nodiscard]] bool updates_now(size_t i, const FrameInput& frame, const FrameFacts& f) const;
   /// Renders layer i; returns the fragments shaded.
-  double render_layer(Scene& scene, size_t i, const GazeState& gaze, const FrameFacts& f);
+  PixelCount render_layer(Scene& scene, size_t i, const GazeState& gaze, const FrameFacts& f);
   /// The layer's own pixels that the composite can show (view `v`).
   std::vector<PixelRect> shown_cover(size_t i, const View& v, bool every_frame,
                                      const FrameFacts& f);

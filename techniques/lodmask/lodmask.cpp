@@ -113,7 +113,7 @@ class LodMask final : public Technique {
     }
     gpu::apply({});
     scene.prepass_end();
-    const double shaded =
+    const PixelCount shaded =
         kit_.shade(scene, view, kMapRect, target,
                    [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
     // Every pixel is lit (deferred); the parts say how many pixels got their
@@ -123,7 +123,7 @@ class LodMask final : public Technique {
     s.parts = {{"lod 0 (full detail)", in},
                {"lod 1 (about 10 %)", out - in},
                {"lod 2 (about 1 %)", double(W) * H - out}};
-    s.shaded_pixels = shaded;
+    s.shaded_pixels = shaded.read();
     s.native_pixels = double(W) * H;
     return s;
   }

@@ -119,16 +119,18 @@ class LogPolar final : public Technique {
     const bool temporal = history_ > 0.0 && (vp.has_value() || still);
     last_key_ = key;
     double edges = 0.0;
-    const double shaded = shade_buffer(scene, native, m, d, temporal, frame.frame, edges);
-    stats.parts.push_back({"log-polar buffer", shaded});
-    const double disc = shade_native_disc(scene, native, d);
-    stats.parts.push_back({"native disc", disc});
-    // Each supersampled texel's four samples count as shaded pixels.
-    if (edge_ > 0.0) stats.parts.push_back({"supersampled edges", 4.0 * edges});
-    stats.shaded_pixels = shaded + disc + 4.0 * edges;
+    const PixelCount shaded = shade_buffer(scene, native, m, d, temporal, frame.frame, edges);
+    const PixelCount disc = shade_native_disc(scene, native, d);
     const gpu::RenderTarget& shown = resolve_temporal(scene, native, m, temporal, vp);
     const gpu::RenderTarget& read = blur(shown, m, d);
     inverse(target, m, d, read);
+    // Read once the frame's last pass is sent (PixelCount).
+    const double buffer_px = shaded.read(), disc_px = disc.read();
+    stats.parts.push_back({"log-polar buffer", buffer_px});
+    stats.parts.push_back({"native disc", disc_px});
+    // Each supersampled texel's four samples count as shaded pixels.
+    if (edge_ > 0.0) stats.parts.push_back({"supersampled edges", 4.0 * edges});
+    stats.shaded_pixels = buffer_px + disc_px + 4.0 * edges;
     return stats;
   }
 
@@ -234,8 +236,8 @@ class LogPolar final : public Technique {
   // 1. The buffer, jittered by a sub-texel offset per frame (temporal
   //    antialiasing, when `jitter`); alpha 0 where nothing is shaded.
   //    Returns the texels shaded.
-  double shade_buffer(Scene& scene, const View& native, const Mapping& m, const NativeDisc& d,
-                      bool jitter, int frame, double& edges) {
+  PixelCount shade_buffer(Scene& scene, const View& native, const Mapping& m, const NativeDisc& d,
+                          bool jitter, int frame, double& edges) {
     const int W = native.target_width, H = native.target_height;
     const int bw = m.buffer_w, bh = m.buffer_h;
     buffer_.ensure(bw, bh, GL_SRGB8_ALPHA8);
@@ -263,8 +265,8 @@ class LogPolar final : public Technique {
       p.set("u_lp_jitter", float(jx), float(jy));
       p.set("u_lp_screen", float(W), float(H));
     };
-    const double shaded = kit_.shade(scene, native, "logpolar/map_logpolar.glsl", buffer_,
-                                     set_shade, {}, false, &cover);
+    PixelCount shaded = kit_.shade(scene, native, "logpolar/map_logpolar.glsl", buffer_, set_shade,
+                                   {}, false, &cover);
     // Antialiasing in the buffer: the cells' stair-steps on silhouettes and
     // the small objects and highlights one sample per cell aliases, reshaded
     // with four samples where a texel differs from a neighbour by more than
@@ -280,8 +282,8 @@ class LogPolar final : public Technique {
 
   // 2. The native disc and its blend band, clipped to the screen, shaded
   //    from the same prepass at the screen's own pixel centres.
-  double shade_native_disc(Scene& scene, const View& native, const NativeDisc& d) {
-    if (!d.on_screen()) return 0.0;
+  PixelCount shade_native_disc(Scene& scene, const View& native, const NativeDisc& d) {
+    if (!d.on_screen()) return {};
     const int fw = static_cast<int>(d.x1 - d.x0), fh = static_cast<int>(d.y1 - d.y0);
     fovea_.ensure(fw, fh);
     // Only the disc is read (the square's corners would be 21 % more).

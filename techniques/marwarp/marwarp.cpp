@@ -124,12 +124,14 @@ class MarWarp final : public Technique {
     int first = 0;
     for (int k = 0; k < levels; ++k)
       first = shade_level(scene, f, k, k + 1 == levels, first, shaded);
-    stats.parts.push_back({"warped buffer", shaded.buffer});
-    stats.parts.push_back({"native disc", shaded.disc});
+    resolve(f, target);
+    // Read once the frame's last pass is sent (PixelCount).
+    const double buffer_px = shaded.buffer.read(), disc_px = shaded.disc.read();
+    stats.parts.push_back({"warped buffer", buffer_px});
+    stats.parts.push_back({"native disc", disc_px});
     // Each supersampled texel's four samples count as shaded pixels.
     stats.parts.push_back({"supersampled edges", 4.0 * shaded.edges});
-    stats.shaded_pixels = shaded.buffer + shaded.disc + 4.0 * shaded.edges;
-    resolve(f, target);
+    stats.shaded_pixels = buffer_px + disc_px + 4.0 * shaded.edges;
     return stats;
   }
 
@@ -195,7 +197,8 @@ class MarWarp final : public Technique {
   }
 
   struct Shaded {
-    double buffer = 0, disc = 0, edges = 0;
+    PixelCount buffer, disc;
+    double edges = 0;
   };
 
   // Shades G-buffer level k: the buffer's columns from `first` to where the
@@ -228,7 +231,7 @@ class MarWarp final : public Technique {
       // fragments are the texels scene_pass draws, its merged bands).
       kit_.scene_pass(scene, view, kit_.scene_program(scene, "marwarp/shade_samples.frag"), buffer_,
                       {}, set_shade, &level_cover);
-      shaded.buffer += samples_ * cover_texels(coarsen_runs(level_cover, 0.08));
+      shaded.buffer += PixelCount(samples_ * cover_texels(coarsen_runs(level_cover, 0.08)));
     }
     if (!level_cover.empty() && edge_ > 0.0)
       shaded.edges +=

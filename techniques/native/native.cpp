@@ -12,10 +12,10 @@ class Native final : public Technique {
                     const gpu::RenderTarget& target) override {
     const View view = View::full(target.width(), target.height());
     scene.prepass(view);
-    const double n =
+    const PixelCount n =
         kit_.shade(scene, view, kMapRect, target,
                    [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
-    return one_pass_stats("screen", n, target.width(), target.height());
+    return one_pass_stats("screen", n.read(), target.width(), target.height());
   }
 
   std::vector<OverlayShape> overlay(const GazeState& g) const override { return {gaze_dot(g)}; }

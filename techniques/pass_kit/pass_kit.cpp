@@ -31,8 +31,7 @@ std::vector<std::span<const embedded::EmbeddedFile>> with_library(
 PassKit::PassKit(std::vector<std::span<const embedded::EmbeddedFile>> shaders)
     : shaders_(std::move(shaders)),
       compiler_(with_library(shaders_)),
-      vao_(gpu::VertexArray::create()),
-      query_(gpu::Query::create(GL_SAMPLES_PASSED)) {}
+      vao_(gpu::VertexArray::create()) {}
 
 const gpu::Program& PassKit::fullscreen(const std::string& fragment) {
   return built(fragment, "fullscreen.vert", fragment);
@@ -185,18 +184,52 @@ void PassKit::scene_pass(Scene& scene, const View& view, const gpu::Program& pro
   gpu::apply(state);
 }
 
-double PassKit::shade(Scene& scene, const View& view, const std::string& mapping,
-                      const gpu::RenderTarget& target, const SetUniforms& set,
-                      const gpu::PassState& state, bool early,
-                      const std::vector<PixelRect>* cover) {
+PixelCount PassKit::shade(Scene& scene, const View& view, const std::string& mapping,
+                          const gpu::RenderTarget& target, const SetUniforms& set,
+                          const gpu::PassState& state, bool early,
+                          const std::vector<PixelRect>* cover) {
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
+  // A query no count holds any more (a frame's counts are dropped once
+  // read), else a new one: the pool grows to the passes of one frame.
+  std::shared_ptr<PixelCount::Slot> slot;
+  for (const auto& s : counts_) {
+    if (s.use_count() == 1) {
+      slot = s;
+      break;
+    }
+  }
+  if (!slot) {
+    slot = counts_.emplace_back(
+        std::make_shared<PixelCount::Slot>(gpu::Query::create(GL_SAMPLES_PASSED)));
+  }
+  slot->read = false;
   const gpu::ProfileScope timed("shade");
-  glBeginQuery(GL_SAMPLES_PASSED, query_.id());
+  glBeginQuery(GL_SAMPLES_PASSED, slot->query.id());
   scene_pass(scene, view, p, target, state, set, cover);
   glEndQuery(GL_SAMPLES_PASSED);
-  GLuint64 samples = 0;
-  glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &samples);
-  return static_cast<double>(samples);
+  PixelCount count;
+  count.terms_.emplace_back(std::move(slot), 1.0);
+  return count;
+}
+
+double PixelCount::read() const {
+  double total = known_;
+  for (const auto& [slot, weight] : terms_) {
+    if (!slot->read) {
+      GLuint64 samples = 0;
+      glGetQueryObjectui64v(slot->query.id(), GL_QUERY_RESULT, &samples);
+      slot->value = static_cast<double>(samples);
+      slot->read = true;
+    }
+    total += weight * slot->value;
+  }
+  return total;
+}
+
+PixelCount& PixelCount::operator+=(const PixelCount& other) {
+  terms_.insert(terms_.end(), other.terms_.begin(), other.terms_.end());
+  known_ += other.known_;
+  return *this;
 }
 
 void set_rect_mapping(const gpu::Program& p, const View& v) {

@@ -40,16 +40,23 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   FrameStats s;
   s.native_pixels = double(W) * H;
   if (scene.info().has_meshes) scene.prepass(View::full(W, H));
+  std::array<Shaded, kClasses> shaded;
+  for (int k = 0; k < kClasses; ++k) {
+    if (present[static_cast<size_t>(k)])
+      shaded[static_cast<size_t>(k)] = shade_class(kit, scene, grid, k, W, H);
+  }
+  reconstruct(kit, grid, present, target);
+  // Read once the frame's last pass is sent (PixelCount).
   double edges = 0;
   for (int k = 0; k < kClasses; ++k) {
     if (!present[static_cast<size_t>(k)]) continue;
-    const Shaded n = shade_class(kit, scene, grid, k, W, H);
-    s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), n.texels});
-    s.shaded_pixels += n.texels + 4.0 * n.edges;
+    const Shaded& n = shaded[static_cast<size_t>(k)];
+    const double texels = n.texels.read();
+    s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), texels});
+    s.shaded_pixels += texels + 4.0 * n.edges;
     edges += n.edges;
   }
   if (edge_ > 0.0) s.parts.push_back({"supersampled edges", 4.0 * edges});
-  reconstruct(kit, grid, present, target);
   return s;
 }
 

@@ -43,7 +43,8 @@ class EmulatedPath {
   /// What one class's shading cost: its texels, and those reshaded with
   /// four samples.
   struct Shaded {
-    double texels = 0, edges = 0;
+    PixelCount texels;
+    double edges = 0;
   };
   /// Shades class `k` into its own target over the texels the
   /// reconstruction reads of it.

@@ -1,5 +1,6 @@
-// PassKit::supersample_edges with a GL context: which texels it reshades,
-// what it writes there, and what it leaves alone.
+// PassKit with a GL context: the fragments a shading pass counts, read
+// after later passes; and supersample_edges: which texels it reshades, what
+// it writes there, and what it leaves alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "foveate/gpu/object_counts.hpp"
 #include "foveate/scenes/scene.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 #include "gl_fixture.hpp"
@@ -167,6 +169,38 @@ TEST_F(SupersampleEdgesTest, AnSrgbBufferGetsItsReshadedTexelsEncoded) {
 
 TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
   EXPECT_EQ(run(std::vector<float>(size_t(kW * kH), 0.5f)), 0);
+}
+
+// A frame's shading passes, read only after the last of them: each count
+// is its own pass's, sums and multiples add up, and the queries are
+// reused once the counts are dropped.
+class PixelCountTest : public test::GlTest {};
+
+TEST_F(PixelCountTest, CountsReadAfterLaterPassesAreEachPasssOwn) {
+  PassKit kit;
+  const std::unique_ptr<Scene> scene = gradient_scene();
+  gpu::RenderTarget target;
+  target.ensure(kW, kH, GL_RGBA16F);
+  const View view = View::full(kW, kH);
+  const SetUniforms set = [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); };
+  const auto frame = [&] {
+    const std::vector<PixelRect> a{{0, 0, 10, 4}}, b{{5, 6, 25, 12}};
+    const PixelCount ca = kit.shade(*scene, view, kMapRect, target, set, {}, false, &a);
+    const PixelCount cb = kit.shade(*scene, view, kMapRect, target, set, {}, false, &b);
+    const PixelCount all = kit.shade(*scene, view, kMapRect, target, set);
+    EXPECT_EQ(ca.read(), 40.0);
+    EXPECT_EQ(cb.read(), 120.0);
+    EXPECT_EQ(all.read(), double(kW * kH));
+    EXPECT_EQ((ca + cb).read(), 160.0);
+    EXPECT_EQ((2.0 * ca + PixelCount(5.0)).read(), 85.0);
+    EXPECT_EQ(ca.read(), 40.0);  // read twice, the same
+  };
+  frame();
+  const long queries = gpu::gl_objects_created().queries;
+  frame();
+  frame();
+  EXPECT_EQ(gpu::gl_objects_created().queries, queries);
+  EXPECT_EQ(PixelCount().read(), 0.0);
 }
 
 }  // namespace

@@ -8,11 +8,13 @@
 // stem: the names TechniqueInfo::resolve_passes lists.
 #include <functional>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "foveate/gpu/gl.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
 #include "foveate/techniques/depth_regions.hpp"
@@ -20,6 +22,42 @@
 #include "foveate/techniques/technique.hpp"
 
 namespace foveate::tech {
+
+/// Fragments counted by the occlusion queries of shading passes, read only
+/// when asked. Reading a query right after its pass makes the CPU wait until
+/// the GPU has finished that pass before it can send the next one: a bubble
+/// on a GPU, and on llvmpipe the next pass's vertex work no longer overlaps
+/// this one's fragments. So a technique adds up its passes' counts and reads
+/// them once, after it has sent its last pass (docs/performance.md). Sums and
+/// multiples stay unread; a count must not outlive the PassKit that made it.
+class PixelCount {
+ public:
+  PixelCount() = default;
+  /// A count known on the CPU.
+  explicit PixelCount(double known) : known_(known) {}
+  /// The count: waits for the queries not read yet. Needs the context current.
+  [[nodiscard]] double read() const;
+  PixelCount& operator+=(const PixelCount& other);
+  friend PixelCount operator+(PixelCount a, const PixelCount& b) { return a += b; }
+  friend PixelCount operator*(double k, PixelCount c) {
+    for (auto& term : c.terms_) term.second *= k;
+    c.known_ *= k;
+    return c;
+  }
+
+  /// One query of PassKit's pool, free again when no count holds it.
+  struct Slot {
+    explicit Slot(gpu::Query q) : query(std::move(q)) {}
+    gpu::Query query;
+    bool read = false;
+    double value = 0.0;
+  };
+
+ private:
+  friend class PassKit;
+  std::vector<std::pair<std::shared_ptr<Slot>, double>> terms_;
+  double known_ = 0.0;
+};
 
 /// Sets a pass's uniforms and binds its textures (after the scene's).
 using SetUniforms = std::function<void(const gpu::Program&, gpu::Samplers&)>;
@@ -83,16 +121,17 @@ class PassKit {
                   const gpu::RenderTarget& target, const gpu::PassState& state = {},
                   const SetUniforms& set = {}, const std::vector<PixelRect>* cover = nullptr);
   /// A shading pass over `target`: the scene shaded at the mapping's
-  /// positions. Returns the fragments that reached the shader (occlusion
-  /// query; stencil-rejected and discarded fragments do not count). With a
+  /// positions. Returns the fragments that reached the shader (an occlusion
+  /// query, read when the count is; stencil-rejected and discarded fragments
+  /// do not count). With a
   /// `cover`, drawn over its rectangles only (scene_pass): what a technique
   /// does not show is never run. The shading variants have no discard (on
   /// llvmpipe a shader that can discard is slower everywhere, and a
   /// discarded fragment costs as much as a shaded one).
-  double shade(Scene& scene, const View& view, const std::string& mapping,
-               const gpu::RenderTarget& target, const SetUniforms& set,
-               const gpu::PassState& state = {}, bool early = false,
-               const std::vector<PixelRect>* cover = nullptr);
+  PixelCount shade(Scene& scene, const View& view, const std::string& mapping,
+                   const gpu::RenderTarget& target, const SetUniforms& set,
+                   const gpu::PassState& state = {}, bool early = false,
+                   const std::vector<PixelRect>* cover = nullptr);
   /// Antialiasing in a subsampled buffer (marwarp, logpolar, vrs): marks the
   /// texels of `cover` (columns [first, last); of the buffer's first `rows`
   /// rows, all when 0, which wrap with `wrap_rows`, as a polar buffer's
@@ -127,7 +166,7 @@ class PassKit {
   std::vector<std::span<const embedded::EmbeddedFile>> shaders_;  ///< the technique's own
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
-  gpu::Query query_;
+  std::vector<std::shared_ptr<PixelCount::Slot>> counts_;  ///< shade's queries
   RectPass rect_pass_;
   DepthRegions regions_;  ///< pass_around_disc's
   std::map<std::string, gpu::Program> programs_;
