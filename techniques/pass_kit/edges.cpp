@@ -55,13 +55,21 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
     glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     gpu::PassState mark;
     mark.color_off = true;
-    rect_pass(over_rects("pass_kit/edges.frag"), cover, buffer, mark,
+    // Only the rows in use are marked (and so reshaded): beyond them a
+    // taller buffer holds rows of no mapping, or a copy of row 0.
+    const int used = rows > 0 ? std::min(rows, h) : h;
+    std::vector<PixelRect> in_use;
+    for (PixelRect r : cover) {
+      r[3] = std::min(r[3], used);
+      if (r[3] > r[1]) in_use.push_back(r);
+    }
+    rect_pass(over_rects("pass_kit/edges.frag"), in_use, buffer, mark,
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
                 samplers.bind(p, "u_buffer", scratch);
                 p.set("u_edge", float(contrast));
                 p.set("u_columns", float(first), float(std::min(last, w)));
                 p.set("u_wrap_rows", wrap_rows ? 1 : 0);
-                p.set("u_rows", rows > 0 ? std::min(rows, h) : h);
+                p.set("u_rows", used);
               });
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);

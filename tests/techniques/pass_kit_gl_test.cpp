@@ -56,15 +56,15 @@ std::array<double, 3> four_sample_mean(int x, int y) {
 }
 
 // edges.frag's rule, on the CPU: luminance against the four neighbours
-// (columns clamped to the covered ones, rows wrapping).
-bool marked(const Texels& t, int x, int y, double contrast) {
+// (columns clamped to the covered ones, rows wrapping at `rows`).
+bool marked(const Texels& t, int x, int y, double contrast, int rows = kH) {
   const auto luma = [&](int px, int py) {
     const auto& v = t[size_t(py * kW + px)];
     return 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2];
   };
   const double c = luma(x, y);
   const double n[4] = {luma(std::max(x - 1, 0), y), luma(std::min(x + 1, kLast - 1), y),
-                       luma(x, (y + 1) % kH), luma(x, (y + kH - 1) % kH)};
+                       luma(x, (y + 1) % rows), luma(x, (y + rows - 1) % rows)};
   const double lo = std::min({c, n[0], n[1], n[2], n[3]});
   const double hi = std::max({c, n[0], n[1], n[2], n[3]});
   return hi - lo > contrast * (hi + 0.02);
@@ -82,9 +82,11 @@ class SupersampleEdgesTest : public test::GlTest {
   // Runs the pass over `grey` (a linear luminance per texel, row 0 at the
   // bottom) in a buffer of `format` (RGBA16F, or GL_SRGB8_ALPHA8, which
   // stores sRGB-encoded bytes) and checks every texel: the marked ones hold
-  // the scene's four-sample mean, the rest what they held. Returns the count
-  // the pass reported.
-  double run(const std::vector<float>& grey, Texels* after = nullptr, GLenum format = GL_RGBA16F) {
+  // the scene's four-sample mean, the rest what they held. With `rows`, the
+  // buffer's first rows only, wrapping there (a polar buffer taller than its
+  // mapping's rows). Returns the count the pass reported.
+  double run(const std::vector<float>& grey, Texels* after = nullptr, GLenum format = GL_RGBA16F,
+             int rows = 0) {
     const bool srgb = format == GL_SRGB8_ALPHA8;
     // An 8-bit code's worth in linear light at the brightest, else fp16's.
     const double tolerance = srgb ? 6e-3 : 2e-3;
@@ -102,7 +104,7 @@ class SupersampleEdgesTest : public test::GlTest {
     const View view = View::full(kW, kH);
     const double n = kit_.supersample_edges(
         *scene_, view, kMapRect, buffer, scratch.color(), {{0, 0, kLast, kH}}, 0, kLast, 0.25,
-        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); });
+        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, true, rows);
     Texels got = read(buffer);  // as stored: decoded here
     if (srgb)
       for (auto& t : got)
@@ -111,7 +113,8 @@ class SupersampleEdgesTest : public test::GlTest {
     for (int y = 0; y < kH; ++y) {
       for (int x = 0; x < kW; ++x) {
         const auto& g = got[size_t(y * kW + x)];
-        if (x < kLast && marked(before, x, y, 0.25)) {
+        const int wrap = rows > 0 ? rows : kH;
+        if (x < kLast && y < wrap && marked(before, x, y, 0.25, wrap)) {
           ++expected;
           const auto m = four_sample_mean(x, y);
           for (int c = 0; c < 3; ++c)
@@ -165,6 +168,16 @@ TEST_F(SupersampleEdgesTest, AnSrgbBufferGetsItsReshadedTexelsEncoded) {
   for (int y = 0; y < kH; ++y)
     for (int x = 24; x < kW; ++x) grey[size_t(y * kW + x)] = 0.8f;
   EXPECT_EQ(run(grey, nullptr, GL_SRGB8_ALPHA8), 2 * kH);
+}
+
+TEST_F(SupersampleEdgesTest, RowsWrapAtTheMappingsRowsNotTheBuffersHeight) {
+  // marwarp's buffer keeps the most rows it has needed: with 18 rows in use,
+  // row 17 neighbours row 0 (bright), not row 18 (as dark as it), and rows
+  // 18-23 are left alone. Wrapping at the height would mark row 23 instead.
+  constexpr int kRows = 18;
+  std::vector<float> grey(size_t(kW * kH), 0.3f);
+  for (int x = 0; x < kW; ++x) grey[size_t(x)] = 0.9f;
+  EXPECT_EQ(run(grey, nullptr, GL_RGBA16F, kRows), 3 * kLast);
 }
 
 TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
