@@ -25,11 +25,11 @@ namespace foveate::tech {
 
 /// Fragments counted by the occlusion queries of shading passes, read only
 /// when asked. Reading a query right after its pass makes the CPU wait until
-/// the GPU has finished that pass before it can send the next one: a bubble
-/// on a GPU, and on llvmpipe the next pass's vertex work no longer overlaps
-/// this one's fragments. So a technique adds up its passes' counts and reads
-/// them once, after it has sent its last pass (docs/performance.md). Sums and
-/// multiples stay unread; a count must not outlive the PassKit that made it.
+/// the GPU has finished that pass before it can send the next one, and the
+/// GPU idle while it does. So a technique adds up its passes' counts and
+/// reads them once, after it has sent its last pass (docs/performance.md).
+/// Sums and multiples stay unread; a count must not outlive the PassKit that
+/// made it.
 class PixelCount {
  public:
   PixelCount() = default;
