@@ -387,9 +387,11 @@ TechniqueInfo marwarp_info() {
                   "", ParamType::Real, 0.0, 0.5, 0.0),
             {0.0, 0.12, 0.25}),
       param("samples",
-            "samples per texel, averaged in linear light (a box prefilter over the texel; 1, 2 "
-            "or 4, each counted as a shaded pixel)",
-            "", ParamType::Integer, 1.0, 4.0, 1.0),
+            "samples per texel, averaged in linear light (a box prefilter over the texel), each "
+            "counted as a shaded pixel: 1, 2 or 4 on a rotated grid, or 9 or 16 on a 3x3 or 4x4 "
+            "grid, the texel's area average: with edge_contrast=0, what any prefilter could reach "
+            "at this spacing (docs/continuous.md)",
+            "", ParamType::Integer, 1.0, 16.0, 1.0),
       edge_contrast_param("in the buffer"),
       param("gbuffer_levels",
             "mesh scenes: G-buffers at 1, 1/2, 1/4 ... of native resolution from which the "
@@ -404,7 +406,12 @@ TechniqueInfo marwarp_info() {
   };
   t.resolve_passes = {"sharpen", "resolve", "resolve_fovea", "resolve_outer"};
   t.check = [](const ParamValues& v) {
-    if (v.integer("samples") == 3) throw Error("marwarp parameter samples=3: must be 1, 2 or 4");
+    // Counts that fill no grid would weight some positions twice.
+    const int n = v.integer("samples");
+    if (n != 1 && n != 2 && n != 4 && n != 9 && n != 16) {
+      throw Error("marwarp parameter samples=" + std::to_string(n) +
+                  ": must be 1, 2, 4, 9 or 16 (a rotated grid up to 4, a 3x3 or 4x4 grid above)");
+    }
   };
   t.make = construct<MarWarp>();
   return t;

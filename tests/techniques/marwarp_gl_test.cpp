@@ -245,3 +245,38 @@ TEST_F(Marwarp, ReshadedEdgesComeCloserToTheSupersampledScene) {
   const double e_without = edge_error(run(*without, *scene, g));
   EXPECT_LT(e_with, 0.93 * e_without) << e_with << " against " << e_without;
 }
+
+TEST_F(Marwarp, SixteenSamplesAverageTheTexel) {
+  // samples=16 (a 4x4 grid in every texel) is the texel's area average. On a
+  // grating far finer than the periphery's texels (mean linear luminance
+  // 0.5), one sample per texel aliases into bands of black and white; the
+  // average leaves the periphery near 0.5. Each sample is counted.
+  const int W = 640, H = 360;
+  auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/shadertoy/grating.glsl");
+  const Vec2d g{320, 180};
+  std::map<int, double> deviation, buffer;
+  for (const int n : {1, 4, 9, 16}) {
+    auto t =
+        make_technique("marwarp", config(W, H, {{"edge_contrast", 0.0}, {"samples", double(n)}}));
+    FrameStats s;
+    const Image img = run(*t, *scene, g, &s);
+    buffer[n] = s.parts[0].pixels;
+    // Mean |L - 0.5| beyond twice the native disc, where texels span pixels.
+    const double r0 = 2.0 * fovea_px(*t, g);
+    double sum = 0;
+    int count = 0;
+    for (int y = 0; y < H; ++y) {
+      for (int x = 0; x < W; ++x) {
+        if (std::hypot(x + 0.5 - g.x, y + 0.5 - g.y) < r0) continue;
+        sum += std::abs(test::to_linear(img.at(x, y)[1]) - 0.5);
+        ++count;
+      }
+    }
+    deviation[n] = sum / count;
+  }
+  for (const int n : {4, 9, 16}) EXPECT_EQ(buffer[n], n * buffer[1]) << n;
+  // (0.285, 0.130, 0.071 and 0.044 for 1, 4, 9 and 16 when this was written.)
+  EXPECT_LT(deviation[16], 0.25 * deviation[1]) << deviation[16] << " against " << deviation[1];
+  EXPECT_LT(deviation[16], 0.5 * deviation[4]) << deviation[16] << " against " << deviation[4];
+  EXPECT_LT(deviation[9], deviation[4]) << deviation[9] << " against " << deviation[4];
+}

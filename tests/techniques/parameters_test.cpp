@@ -144,6 +144,15 @@ TEST(Parameters, BadParametersAreErrorsBeforeAnythingIsMade) {
   });
   EXPECT_NE(unknown.find("checkerboard has no parameter 'colour'"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("block"), std::string::npos) << "lists known keys: " << unknown;
+  // marwarp's samples fill a grid: a count that does not would weight some
+  // positions twice, and is refused by name.
+  for (const double n : {3.0, 5.0, 8.0, 12.0}) {
+    const std::string bad = error_of([&] { make_technique("marwarp", config({{"samples", n}})); });
+    EXPECT_NE(bad.find("marwarp parameter samples=" + std::to_string(int(n)) + ": must be"),
+              std::string::npos)
+        << bad;
+  }
+  EXPECT_THROW(make_technique("marwarp", config({{"samples", 25}})), Error);  // over the range
 }
 
 TEST(Parameters, DefaultsComeFromTheAcuityModel) {
