@@ -1,7 +1,13 @@
 // "raymarch": an expensive ray-marched scene: a field of rounded columns, a
 // twisted torus and metal spheres over rolling ground, with soft shadows,
-// ambient occlusion, fog and one reflection bounce.
+// ambient occlusion, fog and one reflection bounce; the ground's checker is
+// box-filtered over the spacing of the samples that shade it (footprint.glsl).
 #include "camera.glsl"
+#include "footprint.glsl"
+
+// The angle between the camera rays of neighbouring pixels (radians), set
+// by mainImage: with foveate_footprint_px, the samples' spacing at a hit.
+float g_pixel_angle = 0.0;
 
 float sd_round_box(vec3 p, vec3 b, float r) {
   vec3 q = abs(p) - b;
@@ -92,24 +98,32 @@ vec3 sky(vec3 rd) {
   return mix(vec3(0.75, 0.82, 0.9), vec3(0.25, 0.45, 0.8), clamp(rd.y * 1.5, 0.0, 1.0));
 }
 
-vec3 material(float id, vec3 p) {
+// `w`: the samples' spacing on the surface (world units).
+vec3 material(float id, vec3 p, float w) {
   if (id < 1.5) {
-    float c = mod(floor(p.x * 2.0) + floor(p.z * 2.0), 2.0);
-    return mix(vec3(0.32, 0.28, 0.22), vec3(0.45, 0.4, 0.3), c);
+    // Half-unit squares, box-filtered over w: the ground's checker edges
+    // would otherwise alias into stairs wherever the samples are sparse.
+    vec2 sq = filtered_square(p.xz * 2.0, w * 2.0);
+    return mix(vec3(0.32, 0.28, 0.22), vec3(0.45, 0.4, 0.3), 0.5 - 0.5 * sq.x * sq.y);
   }
   if (id < 2.5) return vec3(0.7, 0.55, 0.4);
   if (id < 3.5) return vec3(0.8, 0.2, 0.15);
   return vec3(0.85);
 }
 
-vec3 shade_hit(vec3 ro, vec3 rd, vec2 hit, out vec3 pos, out vec3 nor) {
+// `travelled`: the ray's length before ro (a reflection's from the eye).
+vec3 shade_hit(vec3 ro, vec3 rd, vec2 hit, float travelled, out vec3 pos, out vec3 nor) {
   pos = ro + rd * hit.x;
   nor = normal_at(pos);
+  // The samples' spacing on the surface: the rays' spread over the distance,
+  // widened on a slant by its square root (the footprint's two axes' mean).
+  float w = foveate_footprint_px * g_pixel_angle * (travelled + hit.x) /
+            sqrt(max(abs(dot(nor, rd)), 0.05));
   vec3 sun = normalize(vec3(0.6, 0.7, 0.35));
   float dif = max(dot(nor, sun), 0.0) * soft_shadow(pos + nor * 0.01, sun);
   float occ = occlusion(pos, nor);
   float spe = pow(max(dot(reflect(rd, nor), sun), 0.0), 32.0) * dif;
-  vec3 alb = material(hit.y, pos);
+  vec3 alb = material(hit.y, pos, w);
   vec3 col = alb * (1.6 * dif * vec3(1.0, 0.95, 0.85) + 0.35 * occ * vec3(0.5, 0.6, 0.8)) + spe;
   return mix(col, sky(rd), 1.0 - exp(-0.0015 * hit.x * hit.x));
 }
@@ -117,16 +131,18 @@ vec3 shade_hit(vec3 ro, vec3 rd, vec2 hit, out vec3 pos, out vec3 nor) {
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
   vec3 ro;
   vec3 rd = foveate_ray(fragCoord, ro);
+  vec3 ro1;
+  g_pixel_angle = length(foveate_ray(fragCoord + vec2(1.0, 0.0), ro1) - rd);
   vec2 hit = march(ro, rd);
   vec3 col = sky(rd);
   if (hit.x > 0.0) {
     vec3 pos, nor;
-    col = shade_hit(ro, rd, hit, pos, nor);
+    col = shade_hit(ro, rd, hit, 0.0, pos, nor);
     if (hit.y > 3.5) {  // metal: one reflection bounce
       vec3 rr = reflect(rd, nor);
       vec2 h2 = march(pos + nor * 0.02, rr);
       vec3 p2, n2;
-      vec3 refl = h2.x > 0.0 ? shade_hit(pos + nor * 0.02, rr, h2, p2, n2) : sky(rr);
+      vec3 refl = h2.x > 0.0 ? shade_hit(pos + nor * 0.02, rr, h2, hit.x, p2, n2) : sky(rr);
       col = mix(col, refl, 0.6);
     }
   }

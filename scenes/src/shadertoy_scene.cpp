@@ -74,13 +74,15 @@ class ShadertoyScene final : public Scene {
     pieces_ = pass_pieces(c, p_.common, p_.image);
     pieces_.push_back({"shadertoy_adapter.glsl", {}});
     // The user's macros end with the user's code: what a technique appends
-    // (its main, gpu's colour helpers) must not be rewritten by them.
+    // (its main, gpu's colour helpers) must not be rewritten by them. But
+    // FOVEATE_FOOTPRINT is the scene's word to the shading mains that it
+    // reads foveate_footprint_px (scenes/shaders/footprint.glsl).
     std::string undef;
     for (const UserPass* part : {p_.common ? &*p_.common : nullptr, &p_.image.code}) {
       if (!part) continue;
       for (const std::string& m : part->source.macros) {
         // Reserved names cannot be undefined (nor defined: the compiler says so).
-        if (m.rfind("GL_", 0) != 0 && m.find("__") == std::string::npos)
+        if (m.rfind("GL_", 0) != 0 && m.find("__") == std::string::npos && m != "FOVEATE_FOOTPRINT")
           undef += "#undef " + m + "\n";
       }
     }

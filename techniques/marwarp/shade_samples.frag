@@ -6,6 +6,7 @@
 // the screen like the texel's centre (map_warp.glsl).
 #include "color.glsl"
 #include "marwarp/map_warp.glsl"
+#include "pass_kit/footprint.glsl"
 uniform int u_samples;  // 2, 4, 9 or 16
 out vec4 o_color;
 const vec2 kOffsets4[4] =
@@ -13,6 +14,11 @@ const vec2 kOffsets4[4] =
 const vec2 kOffsets2[2] = vec2[2](vec2(0.25, 0.25), vec2(-0.25, -0.25));
 void main() {
   vec3 sum = vec3(0.0);
+#ifdef FOVEATE_FOOTPRINT
+  // u_samples in the texel: its spacing over their square root.
+  foveate_footprint_px =
+      foveate_spacing(gl_FragCoord.xy, foveate_map(gl_FragCoord.xy)) / sqrt(float(u_samples));
+#endif
   // A loop with a uniform bound: llvmpipe runs only as many samples as asked.
   for (int i = 0; i < u_samples; ++i) {
     int n = u_samples == 9 ? 3 : 4;  // the grid's side

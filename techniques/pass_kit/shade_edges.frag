@@ -12,6 +12,7 @@
 // four times. Neighbouring fragments are unrelated texels: a scene's
 // screen-space derivatives mean nothing here.
 #include "color.glsl"
+#include "pass_kit/footprint.glsl"
 uniform usampler2D u_edge_list;
 uniform int u_edge_samples;
 uniform int u_block_columns;
@@ -30,6 +31,10 @@ void main() {
   uint e = texelFetch(u_edge_list, ivec2(k % w, k / w), 0).r;
   vec2 texel = vec2(float(e & 0xFFFFu), float(e >> 16)) + 0.5;
   vec3 sum = vec3(0.0);
+#ifdef FOVEATE_FOOTPRINT
+  // Four samples in the texel: half its spacing apart.
+  foveate_footprint_px = 0.5 * foveate_spacing(texel, foveate_map(texel));
+#endif
   for (int i = 0; i < u_edge_samples; ++i) {
     sum += foveate_linear(scene_shade(foveate_map(texel + kOffsets[i & 3])).rgb);
   }

@@ -4,5 +4,12 @@
 // (docs/performance.md). What a pass must not shade it leaves out with the
 // cover it draws over (PassKit::shade).
 #include "color.glsl"
+#include "pass_kit/footprint.glsl"
 out vec4 o_color;
-void main() { o_color = vec4(foveate_linear(scene_shade(foveate_map(gl_FragCoord.xy)).rgb), 1.0); }
+void main() {
+  vec2 p = foveate_map(gl_FragCoord.xy);
+#ifdef FOVEATE_FOOTPRINT
+  foveate_footprint_px = foveate_spacing(gl_FragCoord.xy, p);
+#endif
+  o_color = vec4(foveate_linear(scene_shade(p).rgb), 1.0);
+}

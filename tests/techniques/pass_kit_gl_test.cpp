@@ -216,5 +216,60 @@ TEST_F(PixelCountTest, CountsReadAfterLaterPassesAreEachPasssOwn) {
   EXPECT_EQ(PixelCount().read(), 0.0);
 }
 
+// A scene that filters by the samples' spacing (FOVEATE_FOOTPRINT) is told
+// it by every shading pass: 1 at native sampling, the mapping's spacing in a
+// subsampled buffer, half of it for an edge texel's four samples. The scene
+// shows the spacing in green (an eighth of it) beside a step in red.
+TEST_F(PixelCountTest, ShadingPassesTellTheSceneTheirSampleSpacing) {
+  const auto path = std::filesystem::temp_directory_path() / "foveate_footprint_scene.glsl";
+  std::ofstream(path)
+      << "#define FOVEATE_FOOTPRINT 1\n"
+         "float foveate_footprint_px = 1.0;\n"
+         "void mainImage(out vec4 c, in vec2 p) {\n"
+         "  c = vec4(p.x < 20.0 ? 0.1 : 0.9, foveate_footprint_px / 8.0, 0.0, 1.0);\n"
+         "}\n";
+  auto scene = load_scene(path.string());
+  FrameInput f;
+  f.width = 2 * kW;
+  f.height = 2 * kH;
+  scene->update(f);
+  PassKit kit;
+  const auto spacing = [](const std::array<float, 4>& t) { return 8.0 * encode(t[1]); };
+  // Native sampling: a view the target's size.
+  gpu::RenderTarget native;
+  native.ensure(2 * kW, 2 * kH, GL_RGBA16F);
+  const View full = View::full(2 * kW, 2 * kH);
+  (void)kit.shade(*scene, full, kMapRect, native,
+                  [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, full); });
+  std::vector<std::array<float, 4>> n(size_t(4 * kW * kH));
+  glGetTextureImage(native.color().id(), 0, GL_RGBA, GL_FLOAT,
+                    static_cast<GLsizei>(n.size() * sizeof(n[0])), n.data());
+  EXPECT_NEAR(spacing(n[size_t(5 * 2 * kW + 33)]), 1.0, 0.01);
+  // Half resolution: the same screen in a kW x kH buffer, then its edges.
+  gpu::RenderTarget half, scratch;
+  half.ensure(kW, kH, GL_RGBA16F);
+  scratch.ensure(kW, kH, GL_RGBA16F);
+  View v = full;
+  v.target_width = kW;
+  v.target_height = kH;
+  const SetUniforms set = [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, v); };
+  (void)kit.shade(*scene, v, kMapRect, half, set);
+  EXPECT_NEAR(spacing(read(half)[size_t(5 * kW + 30)]), 2.0, 0.01);
+  EXPECT_GT(kit.supersample_edges(*scene, v, kMapRect, half, scratch.color(), {{0, 0, kW, kH}}, 0,
+                                  kW, 0.25, set, false),
+            0.0);
+  const Texels after = read(half);
+  int reshaded = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const auto& t = after[size_t(y * kW + x)];
+      const bool edge = x == 9 || x == 10;  // either side of the step at screen x = 20
+      EXPECT_NEAR(spacing(t), edge ? 1.0 : 2.0, 0.01) << x << "," << y;
+      reshaded += edge;
+    }
+  }
+  EXPECT_EQ(reshaded, 2 * kH);
+}
+
 }  // namespace
 }  // namespace foveate::tech

@@ -96,6 +96,11 @@ class Scene {
   /// must not define main(). A piece is literal text when its text is set,
   /// otherwise an embedded file name resolved against shader_files() (and the
   /// gpu and scenes modules' files). A stable key for caching programs.
+  /// A scene that filters its materials by how far apart its samples lie
+  /// defines FOVEATE_FOOTPRINT and a global `float foveate_footprint_px`
+  /// (scenes/shaders/footprint.glsl): every shading pass then sets it, before
+  /// each scene_shade, to the spacing of its samples on the screen in pixels
+  /// (1 at native sampling; hardware VRS's coarse fragments also see 1).
   [[nodiscard]] virtual std::vector<gpu::StageSource::Piece> shade_source() const = 0;
   [[nodiscard]] virtual std::string shade_key() const = 0;
   /// Extra embedded files that the scene's GLSL includes (user scenes).
