@@ -220,7 +220,9 @@ TEST_F(PixelCountTest, CountsReadAfterLaterPassesAreEachPasssOwn) {
 // it by every shading pass: 1 at native sampling, the mapping's spacing in a
 // subsampled buffer, half of it for an edge texel's four samples. The scene
 // shows the spacing in green (an eighth of it) beside a step in red.
-TEST_F(PixelCountTest, ShadingPassesTellTheSceneTheirSampleSpacing) {
+class ShadingPassTest : public test::GlTest {};
+
+TEST_F(ShadingPassTest, TellsTheSceneTheSpacingOfItsSamples) {
   const auto path = std::filesystem::temp_directory_path() / "foveate_footprint_scene.glsl";
   std::ofstream(path)
       << "#define FOVEATE_FOOTPRINT 1\n"
