@@ -18,6 +18,18 @@ std::vector<PixelRect> packed_cover(int count, int columns) {
   return out;
 }
 
+// The cover's part in the buffer's first `rows` rows: only the rows in use
+// are marked (and so reshaded); beyond them a taller buffer holds rows of
+// no mapping, or a copy of row 0.
+std::vector<PixelRect> in_rows(const std::vector<PixelRect>& cover, int rows) {
+  std::vector<PixelRect> out;
+  for (PixelRect r : cover) {
+    r[3] = std::min(r[3], rows);
+    if (r[3] > r[1]) out.push_back(r);
+  }
+  return out;
+}
+
 }  // namespace
 
 double PassKit::supersample_edges(Scene& scene, const View& view, const std::string& mapping,
@@ -40,11 +52,11 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
     const int most_blocks = (w * h + 15) / 16;
     e.shaded.ensure(4 * columns, 4 * ((most_blocks + columns - 1) / columns), GL_RGBA16F);
   }
-  if (!edge_list_) {
-    edge_list_ =
-        compiler_.build({gpu::StageSource{GL_COMPUTE_SHADER, {{"pass_kit/edges_list.comp", {}}}}},
-                        "pass_kit/edges_list.comp");
-  }
+  const auto compute = [&](gpu::Program& p, const char* file) {
+    if (!p) p = compiler_.build({gpu::StageSource{GL_COMPUTE_SHADER, {{file, {}}}}}, file);
+  };
+  compute(edge_list_, "pass_kit/edges_list.comp");
+  compute(edge_scatter_, "pass_kit/edges_scatter.comp");
   GLuint count = 0;
   {
     const gpu::ProfileScope timed("edges");
@@ -55,15 +67,8 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
     glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     gpu::PassState mark;
     mark.color_off = true;
-    // Only the rows in use are marked (and so reshaded): beyond them a
-    // taller buffer holds rows of no mapping, or a copy of row 0.
     const int used = rows > 0 ? std::min(rows, h) : h;
-    std::vector<PixelRect> in_use;
-    for (PixelRect r : cover) {
-      r[3] = std::min(r[3], used);
-      if (r[3] > r[1]) in_use.push_back(r);
-    }
-    rect_pass(over_rects("pass_kit/edges.frag"), in_use, buffer, mark,
+    rect_pass(over_rects("pass_kit/edges.frag"), in_rows(cover, used), buffer, mark,
               [&](const gpu::Program& p, gpu::Samplers& samplers) {
                 samplers.bind(p, "u_buffer", scratch);
                 p.set("u_edge", float(contrast));
@@ -101,11 +106,6 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
         p.set("u_count", static_cast<int>(count));
       },
       &packed);
-  if (!edge_scatter_) {
-    edge_scatter_ = compiler_.build(
-        {gpu::StageSource{GL_COMPUTE_SHADER, {{"pass_kit/edges_scatter.comp", {}}}}},
-        "pass_kit/edges_scatter.comp");
-  }
   // One invocation per entry stores its texel: drawn as points instead, a
   // rasteriser's cost per point outweighed the packed shading on a cheap
   // scene whose every texel is an edge (detail).
