@@ -19,9 +19,9 @@ void main() {
   foveate_footprint_px =
       foveate_spacing(gl_FragCoord.xy, foveate_map(gl_FragCoord.xy)) / sqrt(float(u_samples));
 #endif
+  int n = u_samples == 9 ? 3 : 4;  // the grid's side for 9 and 16
   // A loop with a uniform bound: llvmpipe runs only as many samples as asked.
   for (int i = 0; i < u_samples; ++i) {
-    int n = u_samples == 9 ? 3 : 4;  // the grid's side
     vec2 o = u_samples == 4   ? kOffsets4[i]
              : u_samples == 2 ? kOffsets2[i & 1]
                               : (vec2(float(i % n), float(i / n)) + 0.5) / float(n) - 0.5;

@@ -208,20 +208,20 @@ PixelCount PassKit::shade(Scene& scene, const View& view, const std::string& map
   scene_pass(scene, view, p, target, state, set, cover);
   glEndQuery(GL_SAMPLES_PASSED);
   PixelCount count;
-  count.terms_.emplace_back(std::move(slot), 1.0);
+  count.terms_.push_back(std::move(slot));
   return count;
 }
 
 double PixelCount::read() const {
   double total = known_;
-  for (const auto& [slot, weight] : terms_) {
+  for (const auto& slot : terms_) {
     if (!slot->read) {
       GLuint64 samples = 0;
       glGetQueryObjectui64v(slot->query.id(), GL_QUERY_RESULT, &samples);
       slot->value = static_cast<double>(samples);
       slot->read = true;
     }
-    total += weight * slot->value;
+    total += slot->value;
   }
   return total;
 }

@@ -185,7 +185,7 @@ TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
 }
 
 // A frame's shading passes, read only after the last of them: each count
-// is its own pass's, sums and multiples add up, and the queries are
+// is its own pass's, sums add up (a count twice counts twice), and the queries are
 // reused once the counts are dropped.
 class PixelCountTest : public test::GlTest {};
 
@@ -205,7 +205,7 @@ TEST_F(PixelCountTest, CountsReadAfterLaterPassesAreEachPasssOwn) {
     EXPECT_EQ(cb.read(), 120.0);
     EXPECT_EQ(all.read(), double(kW * kH));
     EXPECT_EQ((ca + cb).read(), 160.0);
-    EXPECT_EQ((2.0 * ca + PixelCount(5.0)).read(), 85.0);
+    EXPECT_EQ((ca + ca + PixelCount(5.0)).read(), 85.0);
     EXPECT_EQ(ca.read(), 40.0);  // read twice, the same
   };
   frame();

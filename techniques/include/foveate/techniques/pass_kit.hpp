@@ -28,8 +28,7 @@ namespace foveate::tech {
 /// the GPU has finished that pass before it can send the next one, and the
 /// GPU idle while it does. So a technique adds up its passes' counts and
 /// reads them once, after it has sent its last pass (docs/performance.md).
-/// Sums and multiples stay unread; a count must not outlive the PassKit that
-/// made it.
+/// Sums stay unread; a count must not outlive the PassKit that made it.
 class PixelCount {
  public:
   PixelCount() = default;
@@ -39,11 +38,6 @@ class PixelCount {
   [[nodiscard]] double read() const;
   PixelCount& operator+=(const PixelCount& other);
   friend PixelCount operator+(PixelCount a, const PixelCount& b) { return a += b; }
-  friend PixelCount operator*(double k, PixelCount c) {
-    for (auto& term : c.terms_) term.second *= k;
-    c.known_ *= k;
-    return c;
-  }
 
   /// One query of PassKit's pool, free again when no count holds it.
   struct Slot {
@@ -55,7 +49,7 @@ class PixelCount {
 
  private:
   friend class PassKit;
-  std::vector<std::pair<std::shared_ptr<Slot>, double>> terms_;
+  std::vector<std::shared_ptr<Slot>> terms_;
   double known_ = 0.0;
 };
 
