@@ -62,6 +62,7 @@ void print_techniques_json(const TechniqueConfig& c, PixelSize size) {
                         {"min", p.min},
                         {"max", p.max},
                         {"tune", p.tune},
+                        {"allowed", p.allowed},
                         {"help", p.help}});
     }
     list.push_back({{"name", t.name},
@@ -87,8 +88,10 @@ void print_techniques_text(const TechniqueConfig& c, PixelSize size) {
       const std::string value =
           format_fixed(values.real(p.key), p.type == ParamType::Real ? 3 : 0) +
           (p.unit.empty() ? "" : " " + p.unit);
-      std::printf("  %-22s = %-14s %s [%s..%s]\n", p.key.c_str(), value.c_str(), p.help.c_str(),
-                  format_number(p.min).c_str(), format_number(p.max).c_str());
+      const std::string range =
+          p.allowed.empty() ? format_number(p.min) + ".." + format_number(p.max) : allowed_text(p);
+      std::printf("  %-22s = %-14s %s [%s]\n", p.key.c_str(), value.c_str(), p.help.c_str(),
+                  range.c_str());
     }
     std::printf("\n");
   }

@@ -325,6 +325,7 @@ py::list technique_list(py::handle display, py::handle size, const AcuityModel& 
       pd["min"] = p.min;
       pd["max"] = p.max;
       pd["tune"] = p.tune;
+      pd["allowed"] = p.allowed;
       pd["default"] = values.real(p.key);
       ps.append(pd);
     }

@@ -87,6 +87,17 @@ void Ui::parameters(Viewer& v) {
       if (ImGui::Checkbox(label.c_str(), &b)) {
         act([&] { v.set_param("", d.key, b ? 1.0 : 0.0); });
       }
+    } else if (!d.allowed.empty()) {
+      // Listed values (ParamDecl::allowed): one button each, so that a
+      // slider never stops between them.
+      const double current = values.real(d.key);
+      for (const double a : d.allowed) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", a);
+        if (ImGui::RadioButton(text, current == a)) act([&] { v.set_param("", d.key, a); });
+        ImGui::SameLine();
+      }
+      ImGui::TextUnformatted(label.c_str());
     } else {
       const auto [lo, hi] = slider_range(d, v);
       auto it = pending_.find(id);
@@ -118,8 +129,12 @@ void Ui::parameters(Viewer& v) {
     }
     if (ImGui::IsItemHovered()) {
       char range[96];
-      std::snprintf(range, sizeof range, "\nrange %g..%g%s%s", d.min, d.max,
-                    d.unit.empty() ? "" : " ", d.unit.c_str());
+      if (d.allowed.empty()) {
+        std::snprintf(range, sizeof range, "\nrange %g..%g%s%s", d.min, d.max,
+                      d.unit.empty() ? "" : " ", d.unit.c_str());
+      } else {
+        std::snprintf(range, sizeof range, "\none of the values shown");
+      }
       ImGui::SetTooltip("%s%s%s", d.help.c_str(), range,
                         overridden ? "\n* set here or by --param" : "\nderived default");
     }

@@ -35,7 +35,7 @@
 //    bilinear read is itself a blur of sigma 0.41 texel, so only a wider
 //    Gaussian than that is a pass of its own (the default 0.4 is not).
 //  * Antialiasing in the buffer: texels that differ from a neighbour by
-//    more than `edge_contrast` are reshaded with four samples
+//    more than `edge_contrast` are reshaded with `edge_samples` more
 //    (PassKit::supersample_edges, as marwarp's): a cell's one sample
 //    aliases small objects, highlights and procedural texture and steps
 //    silhouettes, which is where FovVideoVDP finds the error.
@@ -79,7 +79,8 @@ class LogPolar final : public Technique {
         blur_pass_(needs_blur_pass(blur_)),
         fovea_deg_(v.real("fovea_deg")),
         history_(v.real("temporal")),
-        edge_(v.real("edge_contrast")) {
+        edge_(v.real("edge_contrast")),
+        edge_samples_(v.integer("edge_samples")) {
     model_ =
         KernelLogPolar{double(c.display.width_px), double(c.display.height_px), sigma_, alpha_};
     model_.validate();
@@ -128,9 +129,10 @@ class LogPolar final : public Technique {
     const double buffer_px = shaded.read(), disc_px = disc.read();
     stats.parts.push_back({"log-polar buffer", buffer_px});
     stats.parts.push_back({"native disc", disc_px});
-    // Each supersampled texel's four samples count as shaded pixels.
-    if (edge_ > 0.0) stats.parts.push_back({"supersampled edges", 4.0 * edges});
-    stats.shaded_pixels = buffer_px + disc_px + 4.0 * edges;
+    // Each supersampled texel's new samples count as shaded pixels.
+    const double edge_px = edge_samples_ * edges;
+    if (edge_ > 0.0) stats.parts.push_back({"supersampled edges", edge_px});
+    stats.shaded_pixels = buffer_px + disc_px + edge_px;
     return stats;
   }
 
@@ -269,13 +271,14 @@ class LogPolar final : public Technique {
                                    {}, false, &cover);
     // Antialiasing in the buffer: the cells' stair-steps on silhouettes and
     // the small objects and highlights one sample per cell aliases, reshaded
-    // with four samples where a texel differs from a neighbour by more than
-    // edge_contrast.
+    // with edge_samples more where a texel differs from a neighbour by more
+    // than edge_contrast.
     edges = 0.0;
     if (edge_ > 0.0 && !cover.empty()) {
       scratch_.ensure(bw, bh, GL_SRGB8_ALPHA8);
       edges = kit_.supersample_edges(scene, native, "logpolar/map_logpolar.glsl", buffer_,
-                                     scratch_.color(), cover, 0, bw, edge_, set_shade);
+                                     scratch_.color(), cover, 0, bw, edge_, set_shade, true, 0,
+                                     edge_samples_);
     }
     return shaded;
   }
@@ -398,6 +401,7 @@ class LogPolar final : public Technique {
   double sigma_, alpha_, blur_;
   bool blur_pass_;  // the second level's Gaussian is wider than the bilinear read (blur.frag)
   double fovea_deg_, history_, edge_;
+  int edge_samples_;
   KernelLogPolar model_;
   KernelPlan plan_;
   PassKit kit_;
@@ -461,6 +465,7 @@ TechniqueInfo logpolar_info() {
                   "", ParamType::Real, 0.0, 0.95, 0.0),
             {0, 0.5}),
       edge_contrast_param("in the log-polar buffer"),
+      edge_samples_param(),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "blur",
                       "inverse",  "inverse_fovea",      "inverse_outer"};

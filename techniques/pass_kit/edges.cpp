@@ -1,6 +1,8 @@
 // PassKit::supersample_edges: mark, list, shade packed, write back.
 #include <algorithm>
+#include <string>
 
+#include "foveate/core/error.hpp"
 #include "foveate/gpu/profiler.hpp"
 #include "foveate/techniques/pass_kit.hpp"
 
@@ -35,8 +37,11 @@ std::vector<PixelRect> in_rows(const std::vector<PixelRect>& cover, int rows) {
 double PassKit::supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                                   const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                                   const std::vector<PixelRect>& cover, int first, int last,
-                                  double contrast, const SetUniforms& set, bool wrap_rows,
-                                  int rows) {
+                                  double contrast, const SetUniforms& set, bool wrap_rows, int rows,
+                                  int samples) {
+  if (samples != 2 && samples != 4) {
+    throw Error("supersample_edges: samples=" + std::to_string(samples) + ": must be 2 or 4");
+  }
   const int w = buffer.width(), h = buffer.height();
   // A window resized again and again would add a size each time: the
   // storage is dropped when more sizes than a frame needs pile up.
@@ -101,7 +106,8 @@ double PassKit::supersample_edges(Scene& scene, const View& view, const std::str
       [&](const gpu::Program& p, gpu::Samplers& samplers) {
         set(p, samplers);
         samplers.bind(p, "u_edge_list", e.list);
-        p.set("u_edge_samples", 4);
+        p.set("u_edge_samples", samples);
+        samplers.bind(p, "u_centre", scratch);
         p.set("u_block_columns", columns);
         p.set("u_count", static_cast<int>(count));
       },

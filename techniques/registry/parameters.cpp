@@ -75,9 +75,20 @@ void check_value(const TechniqueInfo& info, const ParamDecl& p, double x) {
   }
   if (p.type != ParamType::Real && x != std::floor(x))
     throw Error(what + ": must be " + type_requirement(p.type));
+  if (!p.allowed.empty() && std::find(p.allowed.begin(), p.allowed.end(), x) == p.allowed.end())
+    throw Error(what + ": must be " + allowed_text(p));
 }
 
 }  // namespace
+
+std::string allowed_text(const ParamDecl& p) {
+  std::string values;
+  for (size_t i = 0; i < p.allowed.size(); ++i) {
+    const bool last = i + 1 == p.allowed.size();
+    values += (i == 0 ? "" : last ? " or " : ", ") + param_number(p.allowed[i]);
+  }
+  return values;
+}
 
 void check_parameter(const TechniqueInfo& info, const std::string& key, double value) {
   for (const ParamDecl& p : info.params) {
@@ -100,11 +111,23 @@ ParamDecl edge_contrast_param(const std::string& note) {
   return tuned(param("edge_contrast",
                      "antialiasing of silhouettes, small objects and highlights: texels whose "
                      "linear luminance differs from a neighbour's by more than this share of the "
-                     "brighter are reshaded with four samples, averaged (each sample counted as a "
-                     "shaded pixel)" +
+                     "brighter are reshaded with edge_samples more samples, averaged in linear "
+                     "light" +
                          (note.empty() ? std::string() : "; " + note) + "; 0 = off",
                      "", ParamType::Real, 0.0, 1.0, 0.25),
                {0.0, 0.25});
+}
+
+ParamDecl edge_samples_param() {
+  return listed(tuned(param("edge_samples",
+                            "new samples in each texel edge_contrast reshades, each counted as a "
+                            "shaded pixel: 2 on the texel's diagonal a third of it from its "
+                            "centre, averaged with the centre sample it already has (three "
+                            "samples, one in each third of the texel across and down); or 4 on "
+                            "a rotated grid, averaged, for twice the cost (docs/continuous.md)",
+                            "", ParamType::Integer, 2.0, 4.0, 2.0),
+                      {2.0, 4.0}),
+                {2.0, 4.0});
 }
 
 TechniqueConfig planning_config(const TechniqueConfig& config, const ParamValues& values) {

@@ -53,10 +53,10 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
     const Shaded& n = shaded[static_cast<size_t>(k)];
     const double texels = n.texels.read();
     s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), texels});
-    s.shaded_pixels += texels + 4.0 * n.edges;
+    s.shaded_pixels += texels + edge_samples_ * n.edges;
     edges += n.edges;
   }
-  if (edge_ > 0.0) s.parts.push_back({"supersampled edges", 4.0 * edges});
+  if (edge_ > 0.0) s.parts.push_back({"supersampled edges", edge_samples_ * edges});
   return s;
 }
 
@@ -119,7 +119,7 @@ EmulatedPath::Shaded EmulatedPath::shade_class(PassKit& kit, Scene& scene, const
     gpu::RenderTarget& copy = scratch_[static_cast<size_t>(k)];
     copy.ensure(tw, th, GL_SRGB8_ALPHA8);
     shaded.edges = kit.supersample_edges(scene, shade_view, kMapRect, t, copy.color(), texels, 0,
-                                         tw, edge_, set_mapping, false);
+                                         tw, edge_, set_mapping, false, 0, edge_samples_);
   }
   return shaded;
 }

@@ -6,7 +6,7 @@
 // native G-buffer. The masks are drawn over those tiles alone (RectPass), and
 // llvmpipe rejects whole 4x4 blocks before shading, so the other tiles cost
 // nothing. In the coarse classes, texels that differ from a neighbour by more
-// than `edge_contrast` are reshaded with four samples
+// than `edge_contrast` are reshaded with `edge_samples` more
 // (PassKit::supersample_edges): one sample per coarse pixel aliases small
 // objects, highlights and procedural texture, which is where FovVideoVDP
 // finds vrs's error. Then the frame is put together in linear light: each pixel reads
@@ -22,7 +22,8 @@ namespace foveate::tech::vrs {
 
 class EmulatedPath {
  public:
-  EmulatedPath(int tile, double edge_contrast) : tile_(tile), edge_(edge_contrast) {}
+  EmulatedPath(int tile, double edge_contrast, int edge_samples)
+      : tile_(tile), edge_(edge_contrast), edge_samples_(edge_samples) {}
   /// Renders with `classes` (merged: merge_small_classes) of a gx x gy grid.
   FrameStats render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx, int gy,
                     const gpu::RenderTarget& target);
@@ -41,7 +42,7 @@ class EmulatedPath {
     }
   };
   /// What one class's shading cost: its texels, and those reshaded with
-  /// four samples.
+  /// edge_samples more.
   struct Shaded {
     PixelCount texels;
     double edges = 0;
@@ -55,6 +56,7 @@ class EmulatedPath {
 
   int tile_;
   double edge_;
+  int edge_samples_;
   gpu::Texture classes_;
   std::array<int, 2> grid_{};
   std::array<gpu::RenderTarget, kClasses> targets_;

@@ -32,7 +32,7 @@ class Vrs final : public Technique {
         hardware_(driver_rates(v) && (simulate_ || vrs::hardware_available(v.integer("tile")))),
         fixed_(v.boolean("fixed")),
         hardware_path_(tile_, simulate_),
-        emulated_path_(tile_, v.real("edge_contrast")) {
+        emulated_path_(tile_, v.real("edge_contrast"), v.integer("edge_samples")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
     o.validate();
@@ -126,7 +126,7 @@ TechniqueInfo vrs_info() {
       "reduced resolution over its tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
-      plan_margin_param(1.5),
+      plan_margin_param(1.25),
       tuned(param("tile", "shading-rate tile size (8, 16 or 32)", "px", ParamType::Integer, 8, 32,
                   16),
             {8, 16}),
@@ -145,6 +145,7 @@ TechniqueInfo vrs_info() {
   t.params.push_back(edge_contrast_param(
       "in the coarse classes, the emulation's only: above 0 vrs takes the emulation on every "
       "driver"));
+  t.params.push_back(edge_samples_param());
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

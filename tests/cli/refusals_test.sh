@@ -72,6 +72,8 @@ run bench --scene cheap --size 64x36 --techniques layered --param logpolar.sigma
 check "bench: the same" '[[ $rc -eq 1 && "$err" == *"not among the techniques run"* ]] || { echo "  rc $rc: $err"; false; }'
 run render --scene cheap --size 64x36 --technique layered --param layered.sigma=2 --no-write
 check "a key the technique does not declare" '[[ $rc -eq 1 && "$err" == *"layered has no parameter '"'"'sigma'"'"'"* ]] || { echo "  rc $rc: $err"; false; }'
+run render --scene cheap --size 64x36 --technique vrs --param vrs.edge_samples=3 --no-write
+check "a value between a parameter's listed ones, naming them" '[[ $rc -eq 1 && "$err" == *"vrs parameter edge_samples=3: must be 2 or 4"* ]] || { echo "  rc $rc: $err"; false; }'
 
 # --- plan --margin: by default layered's own, as render plans it.
 run plan --size 1920x1080

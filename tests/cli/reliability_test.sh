@@ -174,7 +174,10 @@ done
 # ---- techniques: every default lies within its declared range, at any size
 for size in 64x36 1x1 16384x16384; do
   "$FOVEATE" techniques --size $size > "$tmp/tech.txt"
-  if awk '/^  [a-z_0-9]+ +=/ { v=$3; r=$NF; gsub(/[\[\]]/, "", r); split(r, b, "\\.\\."); if (v+0 < b[1]+0 || v+0 > b[2]+0) { print; bad=1 } } END { exit bad }' "$tmp/tech.txt"; then
+  # [min..max], or the listed values: [2 or 4], [1, 2, 4, 9 or 16].
+  if awk '/^  [a-z_0-9]+ +=/ { v=$3; match($0, /\[[^]]*\]$/); r=substr($0, RSTART+1, RLENGTH-2)
+      if (r ~ /\.\./) { split(r, b, "\\.\\."); if (v+0 < b[1]+0 || v+0 > b[2]+0) { print; bad=1 } }
+      else { n=split(r, b, /, | or /); ok=0; for (i=1; i<=n; i++) if (v+0 == b[i]+0) ok=1; if (!ok) { print; bad=1 } } } END { exit bad }' "$tmp/tech.txt"; then
     echo "ok: defaults within their ranges at $size"; else echo "FAIL: a default outside its range at $size"; fail=1; fi
 done
 exit $fail

@@ -164,6 +164,13 @@ def test_techniques_and_their_derived_defaults(fv):
     layers = next(p for p in ts["layered"]["params"] if p["key"] == "layers")
     assert (layers["min"], layers["max"], layers["default"], layers["type"]) == (1, 6, 2, "integer")
     assert ts["lodmask"]["needs_meshes"]
+    # A parameter of listed values says which (edge_samples: 2 or 4; two
+    # for vrs, four for marwarp).
+    edges = next(p for p in ts["vrs"]["params"] if p["key"] == "edge_samples")
+    assert (edges["allowed"], edges["default"]) == ([2.0, 4.0], 2)
+    edges = next(p for p in ts["marwarp"]["params"] if p["key"] == "edge_samples")
+    assert edges["default"] == 4
+    assert layers["allowed"] == []
     # Each technique's planning margin comes first; logpolar's sigma at
     # 1920x1080 is derived for it (1.99 at the paper's plan, margin 1; 1.28
     # at its own 1.5).

@@ -254,7 +254,7 @@ TEST_F(Fidelity, LogpolarFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
       const double periphery = mean_linear_luminance(ref, gaze, fovea);
       EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
       // The buffer and the disc shade under a quarter of the pixels; the
-      // edges' four samples per reshaded texel add up to a third more on
+      // edges' new samples per reshaded texel add up to a third more on
       // "detail", the aliasing worst case.
       ASSERT_EQ(s.parts.size(), 3u);
       EXPECT_LT(s.parts[0].pixels + s.parts[1].pixels, 0.25 * W * H) << name;
@@ -427,7 +427,7 @@ TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
         EXPECT_NEAR(mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
         // The model's pixel ratio is 0.10 at the centre; each finer class also
         // shaded over the coarser tiles beside it adds a little (0.116 here).
-        // The emulation's edges, reshaded with four samples, are counted apart.
+        // The emulation's edges, reshaded with more samples, are counted apart.
         double texels = s.shaded_pixels;
         for (const auto& [part, n] : s.parts)
           if (part == "supersampled edges") texels -= n;
@@ -517,7 +517,7 @@ TEST_F(Fidelity, VrsReshadedEdgesComeCloserToTheSupersampledScene) {
   // One sample per coarse pixel aliases silhouettes, small objects and
   // procedural texture: its value is the scene at one point, not the mean
   // over the pixel, so the periphery's local means go wrong. The coarse
-  // pixels that differ from a neighbour, reshaded with four samples, bring
+  // pixels that differ from a neighbour, reshaded with more samples, bring
   // the means over 6x6 blocks (linear light, beyond the 1x1 disc) closer to
   // those of a 4x4 supersampled frame (0.0035 against 0.0039 in linear
   // light when this was written), and the reshaded samples are counted.

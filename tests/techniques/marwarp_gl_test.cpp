@@ -92,12 +92,12 @@ TEST_F(Marwarp, FoveaIsNativeAndThePeripheryKeepsItsLuminance) {
       const double periphery = test::mean_linear_luminance(ref, gaze, fovea);
       EXPECT_NEAR(test::mean_linear_luminance(img, gaze, fovea) / periphery, 1.0, 0.02) << name;
       // (detail, the stress case, has edges everywhere: most of its texels
-      // are reshaded with four samples.)
+      // are reshaded.)
       EXPECT_LT(s.shaded_pixels, (name == std::string("detail") ? 0.6 : 0.25) * W * H) << name;
       ASSERT_EQ(s.parts.size(), 3u);
       EXPECT_GT(s.parts[0].pixels, 0.0);  // the buffer
       EXPECT_GT(s.parts[1].pixels, 0.0);  // the native disc
-      EXPECT_GT(s.parts[2].pixels, 0.0);  // four samples per reshaded texel
+      EXPECT_GT(s.parts[2].pixels, 0.0);  // the reshaded texels' new samples
     }
   }
 }
@@ -207,14 +207,14 @@ TEST_F(Marwarp, ShadesTheMappingsTexelsOnly) {
 
 TEST_F(Marwarp, ReshadedEdgesComeCloserToTheSupersampledScene) {
   // One sample per texel aliases silhouettes and small objects; the texels
-  // that differ from a neighbour, reshaded with four samples, bring the
+  // that differ from a neighbour, reshaded with more samples, bring the
   // periphery's edges (where the supersampled frame changes by more than 24
   // codes to a neighbouring pixel) closer to a 4x4 supersampled frame
   // (11.8 codes against 13.2 when this was written).
   const int W = 640, H = 360;
   auto scene = load_scene("guenter");
   const Image truth = test::supersampled_frame("guenter", config(W, H).display);
-  // (With the buffer's prefilter, which the reshaded texels' four samples
+  // (With the buffer's prefilter, which the reshaded texels' samples
   // feed; without it the reshaded edges are no closer.)
   auto with = make_technique("marwarp", config(W, H, {{"sharpen", 0.12}}));
   auto without =

@@ -84,7 +84,7 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   // Declared first by every built-in technique but native, with the margin
   // `foveate tune` chose at 1920x1080 (docs/fidelity.md).
   const std::map<std::string, double> own = {
-      {"layered", 1.5}, {"logpolar", 1.5}, {"checkerboard", 2.0}, {"vrs", 1.5},
+      {"layered", 1.5}, {"logpolar", 1.5}, {"checkerboard", 2.0}, {"vrs", 1.25},
       {"inset", 1.25},  {"lodmask", 2.5},  {"marwarp", 2.0}};
   for (const auto& [name, margin] : own) {
     const TechniqueInfo& t = technique_info(name);
@@ -153,6 +153,16 @@ TEST(Parameters, BadParametersAreErrorsBeforeAnythingIsMade) {
         << bad;
   }
   EXPECT_THROW(make_technique("marwarp", config({{"samples", 25}})), Error);  // over the range
+  // edge_samples is a pattern, 2 or 4 (ParamDecl::allowed): 3 is in its
+  // range but fills neither, and is refused with the values it takes.
+  for (const char* t : {"marwarp", "logpolar", "vrs"}) {
+    EXPECT_NO_THROW(check_parameter(technique_info(t), "edge_samples", 2)) << t;
+    EXPECT_NO_THROW(check_parameter(technique_info(t), "edge_samples", 4)) << t;
+    const std::string bad = error_of([&] { make_technique(t, config({{"edge_samples", 3}})); });
+    EXPECT_NE(bad.find(std::string(t) + " parameter edge_samples=3: must be 2 or 4"),
+              std::string::npos)
+        << bad;
+  }
 }
 
 TEST(Parameters, DefaultsComeFromTheAcuityModel) {

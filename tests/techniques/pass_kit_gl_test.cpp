@@ -8,9 +8,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "foveate/core/error.hpp"
 #include "foveate/gpu/object_counts.hpp"
 #include "foveate/scenes/scene.hpp"
 #include "foveate/techniques/pass_kit.hpp"
@@ -25,12 +27,9 @@ constexpr int kLast = 36;
 
 using Texels = std::vector<std::array<float, 4>>;
 
-// A scene whose colour at screen position p is (p.x / 64, p.y / 64, 0.25),
-// sRGB-encoded as Shadertoy's output is.
-std::unique_ptr<Scene> gradient_scene() {
-  const auto path = std::filesystem::temp_directory_path() / "foveate_edges_gradient.glsl";
-  std::ofstream(path) << "void mainImage(out vec4 c, in vec2 p) {\n"
-                         "  c = vec4(p.x / 64.0, p.y / 64.0, 0.25, 1.0);\n}\n";
+std::unique_ptr<Scene> shadertoy_scene(const char* name, const std::string& source) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << source;
   auto scene = load_scene(path.string());
   FrameInput f;
   f.width = kW;
@@ -44,13 +43,51 @@ double encode(double l) {
   return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055;
 }
 
-// The mean of the four rotated-grid samples in texel (x, y), in linear light.
-std::array<double, 3> four_sample_mean(int x, int y) {
-  const double off[4][2] = {{0.125, 0.375}, {0.375, -0.125}, {-0.125, -0.375}, {-0.375, 0.125}};
-  std::array<double, 3> m{0, 0, linear(0.25)};
-  for (const auto& o : off) {
-    m[0] += linear((x + 0.5 + o[0]) / 64.0) / 4;
-    m[1] += linear((y + 0.5 + o[1]) / 64.0) / 4;
+// A scene's colour at a screen position, in linear light.
+using Colour = std::array<double, 3>;
+using SceneAt = std::function<Colour(double, double)>;
+
+// A scene whose colour at screen position p is (p.x / 64, p.y / 64, 0.25),
+// sRGB-encoded as Shadertoy's output is.
+std::unique_ptr<Scene> gradient_scene() {
+  return shadertoy_scene("foveate_edges_gradient.glsl",
+                         "void mainImage(out vec4 c, in vec2 p) {\n"
+                         "  c = vec4(p.x / 64.0, p.y / 64.0, 0.25, 1.0);\n}\n");
+}
+Colour gradient_at(double x, double y) { return {linear(x / 64), linear(y / 64), linear(0.25)}; }
+
+// A step to the right of x = 10.2 in red, above y = 6.8 in green, and where
+// both hold in blue: samples a third of a texel from (10.5, 6.5) fall on
+// either side of both, and diagonal from each other only one way.
+std::unique_ptr<Scene> step_scene() {
+  return shadertoy_scene("foveate_edges_step.glsl",
+                         "void mainImage(out vec4 c, in vec2 p) {\n"
+                         "  bool x = p.x > 10.2, y = p.y > 6.8;\n"
+                         "  c = vec4(x ? 0.9 : 0.1, y ? 0.9 : 0.1, x && y ? 0.9 : 0.1, 1.0);\n}\n");
+}
+Colour step_at(double x, double y) {
+  const double lo = linear(0.1), hi = linear(0.9);
+  return {x > 10.2 ? hi : lo, y > 6.8 ? hi : lo, x > 10.2 && y > 6.8 ? hi : lo};
+}
+
+// What a reshaded texel (x, y) holds, in linear light: the mean of the four
+// rotated-grid samples; or with 2, of the two on its diagonal a third of a
+// texel from its centre and the centre's `before`.
+Colour edge_mean(const SceneAt& at, int x, int y, int samples, double before) {
+  const double grid[4][2] = {{0.125, 0.375}, {0.375, -0.125}, {-0.125, -0.375}, {-0.375, 0.125}};
+  const double diagonal[2][2] = {{-1.0 / 3, 1.0 / 3}, {1.0 / 3, -1.0 / 3}};
+  Colour m{0, 0, 0};
+  const auto add = [&](const double(*offsets)[2], int n, double weight) {
+    for (int i = 0; i < n; ++i) {
+      const Colour c = at(x + 0.5 + offsets[i][0], y + 0.5 + offsets[i][1]);
+      for (int k = 0; k < 3; ++k) m[size_t(k)] += weight * c[size_t(k)];
+    }
+  };
+  if (samples == 4) {
+    add(grid, 4, 0.25);
+  } else {
+    add(diagonal, 2, 1.0 / 3);
+    for (double& v : m) v += before / 3;
   }
   return m;
 }
@@ -82,11 +119,11 @@ class SupersampleEdgesTest : public test::GlTest {
   // Runs the pass over `grey` (a linear luminance per texel, row 0 at the
   // bottom) in a buffer of `format` (RGBA16F, or GL_SRGB8_ALPHA8, which
   // stores sRGB-encoded bytes) and checks every texel: the marked ones hold
-  // the scene's four-sample mean, the rest what they held. With `rows`, the
-  // buffer's first rows only, wrapping there (a polar buffer taller than its
-  // mapping's rows). Returns the count the pass reported.
+  // the scene's edge_mean with `samples`, the rest what they held. With
+  // `rows`, the buffer's first rows only, wrapping there (a polar buffer
+  // taller than its mapping's rows). Returns the count the pass reported.
   double run(const std::vector<float>& grey, Texels* after = nullptr, GLenum format = GL_RGBA16F,
-             int rows = 0) {
+             int rows = 0, int samples = 4) {
     const bool srgb = format == GL_SRGB8_ALPHA8;
     // An 8-bit code's worth in linear light at the brightest, else fp16's.
     const double tolerance = srgb ? 6e-3 : 2e-3;
@@ -104,7 +141,8 @@ class SupersampleEdgesTest : public test::GlTest {
     const View view = View::full(kW, kH);
     const double n = kit_.supersample_edges(
         *scene_, view, kMapRect, buffer, scratch.color(), {{0, 0, kLast, kH}}, 0, kLast, 0.25,
-        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, true, rows);
+        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, true, rows,
+        samples);
     Texels got = read(buffer);  // as stored: decoded here
     if (srgb)
       for (auto& t : got)
@@ -116,7 +154,7 @@ class SupersampleEdgesTest : public test::GlTest {
         const int wrap = rows > 0 ? rows : kH;
         if (x < kLast && y < wrap && marked(before, x, y, 0.25, wrap)) {
           ++expected;
-          const auto m = four_sample_mean(x, y);
+          const Colour m = edge_mean(scene_at_, x, y, samples, grey[size_t(y * kW + x)]);
           for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(g[size_t(c)], m[size_t(c)], tolerance) << x << "," << y;
         } else {
@@ -133,6 +171,7 @@ class SupersampleEdgesTest : public test::GlTest {
 
   PassKit kit_;
   std::unique_ptr<Scene> scene_ = gradient_scene();
+  SceneAt scene_at_ = gradient_at;
 };
 
 TEST_F(SupersampleEdgesTest, ReshadesTheContrastyTexelsOfTheCoverOnly) {
@@ -180,6 +219,30 @@ TEST_F(SupersampleEdgesTest, RowsWrapAtTheMappingsRowsNotTheBuffersHeight) {
   EXPECT_EQ(run(grey, nullptr, GL_RGBA16F, kRows), 3 * kLast);
 }
 
+TEST_F(SupersampleEdgesTest, TwoSamplesOnTheDiagonalAreAveragedWithTheCentre) {
+  // One bright texel at (10, 6) and its neighbours are reshaded over the
+  // step scene. With 2 samples texel (10, 6) holds (0.9 + the samples at
+  // (10.17, 6.83) and (10.83, 6.17)) / 3: red and green a third bright
+  // besides the centre, blue dark (neither sample is past both steps; on
+  // the other diagonal one would be). Four on the rotated grid give other
+  // means: red 3/4 bright, green and blue 1/4.
+  scene_ = step_scene();
+  scene_at_ = step_at;
+  std::vector<float> grey(size_t(kW * kH), 0.2f);
+  grey[size_t(6 * kW + 10)] = 0.9f;
+  EXPECT_EQ(run(grey, nullptr, GL_RGBA16F, 0, 2), 5);
+  EXPECT_EQ(run(grey, nullptr, GL_RGBA16F, 0, 4), 5);
+  // An sRGB buffer's centre is read decoded, as the samples are averaged.
+  EXPECT_EQ(run(grey, nullptr, GL_SRGB8_ALPHA8, 0, 2), 5);
+  gpu::RenderTarget buffer, scratch;
+  buffer.ensure(kW, kH, GL_RGBA16F);
+  scratch.ensure(kW, kH, GL_RGBA16F);
+  const View view = View::full(kW, kH);
+  EXPECT_THROW(kit_.supersample_edges(*scene_, view, kMapRect, buffer, scratch.color(),
+                                      {{0, 0, kW, kH}}, 0, kW, 0.25, {}, true, 0, 3),
+               Error);
+}
+
 TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
   EXPECT_EQ(run(std::vector<float>(size_t(kW * kH), 0.5f)), 0);
 }
@@ -218,7 +281,8 @@ TEST_F(PixelCountTest, CountsReadAfterLaterPassesAreEachPasssOwn) {
 
 // A scene that filters by the samples' spacing (FOVEATE_FOOTPRINT) is told
 // it by every shading pass: 1 at native sampling, the mapping's spacing in a
-// subsampled buffer, half of it for an edge texel's four samples. The scene
+// subsampled buffer, half of it for an edge texel's four samples (and
+// 1/sqrt(3) for the three of two beside its centre). The scene
 // shows the spacing in green (an eighth of it) beside a step in red.
 class ShadingPassTest : public test::GlTest {};
 
@@ -271,6 +335,14 @@ TEST_F(ShadingPassTest, TellsTheSceneTheSpacingOfItsSamples) {
     }
   }
   EXPECT_EQ(reshaded, 2 * kH);
+  // Two samples on the diagonal: three in the texel with the centre, each
+  // told 2 / sqrt(3); the centre keeps the 2 it was shaded with.
+  (void)kit.shade(*scene, v, kMapRect, half, set);
+  EXPECT_GT(kit.supersample_edges(*scene, v, kMapRect, half, scratch.color(), {{0, 0, kW, kH}}, 0,
+                                  kW, 0.25, set, false, 0, 2),
+            0.0);
+  const double mean = (linear(2.0 / 8) + 2 * linear(2.0 / std::sqrt(3.0) / 8)) / 3;
+  EXPECT_NEAR(spacing(read(half)[size_t(5 * kW + 10)]), 8 * encode(mean), 0.01);
 }
 
 }  // namespace

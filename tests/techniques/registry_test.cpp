@@ -60,9 +60,18 @@ TEST(Registry, BadRegistrationsAreRefused) {
   badtune.params = {tuned(param("n", "", "", ParamType::Integer, 1, 4, 2), {1, 2.5})};
   EXPECT_NE(error_of([&] { register_technique(badtune); }).find("tune value 2.5"),
             std::string::npos);
+  TechniqueInfo listed = minimal("test-bad-allowed");
+  ParamDecl n = tuned(param("n", "", "", ParamType::Integer, 1, 4, 2), {2, 3});
+  n.allowed = {2, 4};
+  listed.params = {n};
+  EXPECT_NE(error_of([&] { register_technique(listed); }).find("tune value 3 not among"),
+            std::string::npos);
+  listed.params[0].value = 1;
+  EXPECT_NE(error_of([&] { register_technique(listed); }).find("default 1 not among"),
+            std::string::npos);
   // Nothing refused was added.
   for (const char* name : {"test-twice", "test-outside", "test-flag", "test-dotted",
-                           "test-late-margin", "test-bad-tune"}) {
+                           "test-late-margin", "test-bad-tune", "test-bad-allowed"}) {
     EXPECT_NE(error_of([&] { technique_info(name); }).find("unknown technique"), std::string::npos);
   }
 }

@@ -508,10 +508,11 @@ TEST_F(Techniques, InsetAtFullScaleIsNative) {
 TEST_F(Techniques, LogPolarEdgesComeCloserToTheSupersampledScene) {
   // One sample per log-polar cell aliases small objects, highlights and
   // fine texture and steps every silhouette; the texels that differ from a
-  // neighbour, reshaded with four samples, bring the frame closer to a 4x4
+  // neighbour, reshaded with more samples, bring the frame closer to a 4x4
   // supersampled one by FovVideoVDP (single images at the papers' plan,
   // when this was written: guenter 8.89 against 8.63 JOD, detail 6.32
-  // against 5.33), and they count four times among the shaded pixels.
+  // against 5.33, with four new samples each), and those samples count among
+  // the shaded pixels.
   for (const auto& [name, gain] : {std::pair{"guenter", 0.15}, std::pair{"detail", 0.5}}) {
     SCOPED_TRACE(name);
     auto scene = load_scene(name), reference_scene = load_scene(name);
@@ -540,7 +541,7 @@ TEST_F(Techniques, LogPolarEdgesComeCloserToTheSupersampledScene) {
 TEST_F(Techniques, LogPolarFoveaMatchesAndBufferSize) {
   auto scene = load_scene("cheap");
   const Image ref = native(*scene);
-  // (Without the edges' supersampling, whose four samples per texel count too.)
+  // (Without the edges' supersampling, whose samples count too.)
   auto t = make_technique(
       "logpolar", config({{"sigma", 1.5}, {"alpha", 2.0}, {"blur", 0.0}, {"edge_contrast", 0.0}}));
   const Vec2d gaze{320, 180};

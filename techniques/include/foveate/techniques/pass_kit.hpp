@@ -135,18 +135,19 @@ class PassKit {
   /// texture of the buffer's size and format: reading the framebuffer drawn
   /// into is a feedback loop, which llvmpipe's threads resolve differently
   /// from run to run), lists them in order (edges_list.comp), reshades them
-  /// packed side by side with four samples on a rotated grid through
-  /// `mapping` (shade_edges.frag; `set` sets the mapping's uniforms), and
-  /// stores each back into its texel (edges_scatter.comp). `buffer`'s
+  /// packed side by side through `mapping` (shade_edges.frag; `set` sets
+  /// the mapping's uniforms) with `samples` new samples: 4 on a rotated
+  /// grid, or 2 on the texel's diagonal averaged with the centre sample the
+  /// texel holds; and stores each back into its texel (edges_scatter.comp). `buffer`'s
   /// colour is RGBA16F or GL_SRGB8_ALPHA8 (immutable storage). Packed, only marked
   /// texels are shaded: over the buffer itself a stencil test leaves whole
   /// 4x4 blocks (llvmpipe) or 2x2 quads (GPUs) running for one marked texel.
-  /// Returns the texels reshaded (each costs four samples).
+  /// Returns the texels reshaded (each costs `samples` samples).
   double supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                            const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                            const std::vector<PixelRect>& cover, int first, int last,
                            double contrast, const SetUniforms& set, bool wrap_rows = true,
-                           int rows = 0);
+                           int rows = 0, int samples = 4);
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.
@@ -169,7 +170,7 @@ class PassKit {
   struct EdgeScratch {
     gpu::Texture marks;        ///< R32UI: a bit per texel, 1 = reshade
     gpu::Texture list;         ///< R32UI: the marked texels, packed
-    gpu::RenderTarget shaded;  ///< their four-sample means, packed as the list
+    gpu::RenderTarget shaded;  ///< their samples' means, packed as the list
     gpu::Buffer rows;          ///< total, then each row's first entry
   };
   /// One per buffer size, kept: vrs reshades several class targets of

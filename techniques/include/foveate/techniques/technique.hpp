@@ -72,6 +72,10 @@ struct ParamDecl {
   /// The values `foveate tune` tries for a parameter that trades quality for
   /// time (within [min, max]); empty: tune leaves it at its default.
   std::vector<double> tune = {};
+  /// The only values it takes, when not every number in [min, max] of its
+  /// type is meaningful (e.g. sample counts that fill a pattern); empty:
+  /// any.
+  std::vector<double> allowed = {};
 };
 
 /// `decl` with the values tune tries.
@@ -80,10 +84,16 @@ inline ParamDecl tuned(ParamDecl decl, std::vector<double> values) {
   return decl;
 }
 
+/// `decl` taking only `values` (ParamDecl::allowed).
+inline ParamDecl listed(ParamDecl decl, std::vector<double> values) {
+  decl.allowed = std::move(values);
+  return decl;
+}
+
 /// A parameter whose default is the constant `value`.
 inline ParamDecl param(std::string key, std::string help, std::string unit, ParamType type,
                        double min, double max, double value) {
-  return {std::move(key), std::move(help), std::move(unit), type, min, max, value, {}, {}};
+  return {std::move(key), std::move(help), std::move(unit), type, min, max, value, {}, {}, {}};
 }
 
 /// The key of the planning margin: a technique that declares it (every
@@ -101,11 +111,17 @@ inline constexpr const char* kPlanMarginKey = "margin";
 ParamDecl plan_margin_param(double fidelity_default);
 
 /// The declaration of `edge_contrast`, the threshold of
-/// PassKit::supersample_edges (texels reshaded with four samples where
+/// PassKit::supersample_edges (texels reshaded with more samples where
 /// their luminance differs from a neighbour's by more than this share of the
 /// brighter; 0 = off), for the techniques that use it; `note` says what is
 /// particular to the technique (may be empty).
 ParamDecl edge_contrast_param(const std::string& note = {});
+
+/// The declaration of `edge_samples`, the new samples
+/// PassKit::supersample_edges shades in each texel it reshades: 2 on the
+/// texel's diagonal averaged with its own centre sample (the default:
+/// `foveate tune`'s choice), or 4 on a rotated grid.
+ParamDecl edge_samples_param();
 
 /// What a technique needs from a scene.
 struct SceneNeeds {
@@ -216,6 +232,9 @@ ParamValues resolve_parameters(const TechniqueInfo& info, const TechniqueConfig&
 /// Throws foveate::Error, as resolve_parameters does, when `value` is not a
 /// value the technique's parameter `key` can take (or it has no such key).
 void check_parameter(const TechniqueInfo& info, const std::string& key, double value);
+/// The values a parameter takes (ParamDecl::allowed) as a message says
+/// them: "2 or 4", "1, 2, 4, 9 or 16"; empty when any in its range.
+std::string allowed_text(const ParamDecl& p);
 /// `config` with the acuity the technique plans for: made finer by its
 /// planning margin (kPlanMarginKey) where it declares one. make_technique
 /// hands this to TechniqueInfo::make.
