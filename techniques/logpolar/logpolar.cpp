@@ -465,7 +465,7 @@ TechniqueInfo logpolar_info() {
                   "", ParamType::Real, 0.0, 0.95, 0.0),
             {0, 0.5}),
       edge_contrast_param("in the log-polar buffer"),
-      edge_samples_param(),
+      edge_samples_param(2.0),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "blur",
                       "inverse",  "inverse_fovea",      "inverse_outer"};

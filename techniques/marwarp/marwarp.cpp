@@ -369,11 +369,6 @@ class MarWarp final : public Technique {
 }  // namespace
 
 TechniqueInfo marwarp_info() {
-  // Four new samples per reshaded texel, not two: with two, guenter at
-  // margin 2 falls just beyond the bound in tune's sequence, and margin 2
-  // with four is faster than 2.5 with two (docs/fidelity.md).
-  ParamDecl edge_samples = edge_samples_param();
-  edge_samples.value = 4.0;
   TechniqueInfo t;
   t.name = "marwarp";
   t.summary =
@@ -405,7 +400,10 @@ TechniqueInfo marwarp_info() {
               "", ParamType::Integer, 1.0, 16.0, 1.0),
           {1, 2, 4, 9, 16}),
       edge_contrast_param("in the buffer"),
-      edge_samples,
+      // Four, not two: with two, guenter at margin 2 falls just beyond the
+      // bound in tune's sequence, and margin 2 with four is faster than 2.5
+      // with two (docs/fidelity.md).
+      edge_samples_param(4.0),
       param("gbuffer_levels",
             "mesh scenes: G-buffers at 1, 1/2, 1/4 ... of native resolution from which the "
             "buffer is shaded, each over the texels that sample at least gbuffer_ratio of its "

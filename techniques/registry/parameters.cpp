@@ -75,8 +75,7 @@ void check_value(const TechniqueInfo& info, const ParamDecl& p, double x) {
   }
   if (p.type != ParamType::Real && x != std::floor(x))
     throw Error(what + ": must be " + type_requirement(p.type));
-  if (!p.allowed.empty() && std::find(p.allowed.begin(), p.allowed.end(), x) == p.allowed.end())
-    throw Error(what + ": must be " + allowed_text(p));
+  if (!p.takes(x)) throw Error(what + ": must be " + allowed_text(p));
 }
 
 }  // namespace
@@ -118,14 +117,14 @@ ParamDecl edge_contrast_param(const std::string& note) {
                {0.0, 0.25});
 }
 
-ParamDecl edge_samples_param() {
+ParamDecl edge_samples_param(double fallback) {
   return listed(tuned(param("edge_samples",
                             "new samples in each texel edge_contrast reshades, each counted as a "
                             "shaded pixel: 2 on the texel's diagonal a third of it from its "
                             "centre, averaged with the centre sample it already has (three "
                             "samples, one in each third of the texel across and down); or 4 on "
                             "a rotated grid, averaged, for twice the cost (docs/continuous.md)",
-                            "", ParamType::Integer, 2.0, 4.0, 2.0),
+                            "", ParamType::Integer, 2.0, 4.0, fallback),
                       {2.0, 4.0}),
                 {2.0, 4.0});
 }

@@ -3,7 +3,6 @@
 // made from it.
 #include "registry.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <mutex>
 
@@ -39,14 +38,10 @@ void validate_declaration(const TechniqueInfo& info) {
         throw Error(where + ": tune value " + param_number(v) + " outside its range or type");
     }
     // A parameter with a list of values takes its default and tune's from it.
-    const auto allowed = [&](double v) {
-      return p.allowed.empty() ||
-             std::find(p.allowed.begin(), p.allowed.end(), v) != p.allowed.end();
-    };
-    if (!p.derive && !allowed(p.value))
+    if (!p.derive && !p.takes(p.value))
       throw Error(where + ": default " + param_number(p.value) + " not among its allowed values");
     for (double v : p.tune) {
-      if (!allowed(v))
+      if (!p.takes(v))
         throw Error(where + ": tune value " + param_number(v) + " not among its allowed values");
     }
     if (p.key == kPlanMarginKey && (i != 0 || p.derive || p.min < 1.0 || p.max > 4.0))

@@ -145,7 +145,7 @@ TechniqueInfo vrs_info() {
   t.params.push_back(edge_contrast_param(
       "in the coarse classes, the emulation's only: above 0 vrs takes the emulation on every "
       "driver"));
-  t.params.push_back(edge_samples_param());
+  t.params.push_back(edge_samples_param(2.0));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

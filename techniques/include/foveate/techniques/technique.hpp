@@ -7,6 +7,7 @@
 // registry, validation, `foveate techniques` and the JSON outputs all come
 // from that declaration. Techniques written outside the tree register
 // themselves at run time with register_technique().
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -76,6 +77,10 @@ struct ParamDecl {
   /// type is meaningful (e.g. sample counts that fill a pattern); empty:
   /// any.
   std::vector<double> allowed = {};
+  /// Whether `v` is among `allowed` (any value when it is empty).
+  [[nodiscard]] bool takes(double v) const {
+    return allowed.empty() || std::find(allowed.begin(), allowed.end(), v) != allowed.end();
+  }
 };
 
 /// `decl` with the values tune tries.
@@ -119,9 +124,9 @@ ParamDecl edge_contrast_param(const std::string& note = {});
 
 /// The declaration of `edge_samples`, the new samples
 /// PassKit::supersample_edges shades in each texel it reshades: 2 on the
-/// texel's diagonal averaged with its own centre sample (the default:
-/// `foveate tune`'s choice), or 4 on a rotated grid.
-ParamDecl edge_samples_param();
+/// texel's diagonal averaged with its own centre sample, or 4 on a rotated
+/// grid; `fallback` is the technique's default (tune's choice for it).
+ParamDecl edge_samples_param(double fallback);
 
 /// What a technique needs from a scene.
 struct SceneNeeds {
