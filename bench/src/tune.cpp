@@ -1,13 +1,11 @@
 // The search of foveate tune (tune.hpp): candidates as explicit benchmark
-// runs, stage by stage, per scene (the choice over every scene and stage
-// 3's combinations: tune_choice.cpp).
+// runs, stage by stage, per scene (the choice over every scene, stage 3's
+// combinations and stage 5's contenders: tune_choice.cpp).
 #include "foveate/bench/tune.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
-
-#include "tune_choice.hpp"
 
 namespace foveate::bench {
 
@@ -60,11 +58,6 @@ std::vector<std::string> tuned_techniques(const TuneOptions& o) {
   return out;
 }
 
-// Settings within this share of the fastest one's speed are timed again
-// together (Search::retime), at most kContenders of them per technique.
-constexpr double kContenderShare = 0.85;
-constexpr size_t kContenders = 3;
-
 class Search {
  public:
   Search(const TuneOptions& o, const TuneCallbacks& c, TuneResult& r)
@@ -99,28 +92,16 @@ class Search {
     }
   }
 
-  // The settings the choice falls between, timed again side by side: a
-  // technique's best setting and the others within the bound on every scene
-  // whose speed (geometric mean) is within kContenderShare of it, at most
-  // kContenders in all. Points of one setting timed in different benchmarks
-  // differ by the machine's noise (up to 15 % on a shared one), which
-  // would decide between settings of equal quality; timed in one benchmark
-  // per scene, beside native, they are compared on equal terms. Their new
-  // points replace the earlier ones (stage 5).
+  // The settings the choice falls between, timed again side by side
+  // (tune_contenders). Points of one setting timed in different benchmarks
+  // differ by the machine's noise (up to 15 % on a shared one), which would
+  // decide between settings of equal quality; timed in one benchmark per
+  // scene, beside native, they are compared on equal terms. Their new points
+  // replace the earlier ones (stage 5).
   void retime(const std::vector<std::string>& scenes) {
     std::vector<Candidate> todo;
     for (const std::string& t : tuned_techniques(options_)) {
-      const std::vector<RankedSetting> ranked = rank_settings(out_, t);
-      std::vector<Candidate> mine;
-      for (const RankedSetting& r : ranked) {
-        if (!r.within || r.speed < kContenderShare * ranked.front().speed ||
-            mine.size() == kContenders) {
-          break;
-        }
-        mine.push_back({t, r.params});
-      }
-      // One setting alone has nothing to be compared with.
-      if (mine.size() >= 2) todo.insert(todo.end(), mine.begin(), mine.end());
+      for (Params& p : tune_contenders(out_, t)) todo.push_back({t, std::move(p)});
     }
     if (todo.empty()) return;
     for (const std::string& s : scenes) {

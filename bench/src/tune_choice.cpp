@@ -1,13 +1,16 @@
 // The choice of foveate tune (tune.hpp): each technique's settings ranked
-// over every scene it ran on, its front per scene, and the combinations of
-// single changes its search tries in stage 3.
-#include "tune_choice.hpp"
-
+// over every scene it ran on, its front per scene, the combinations of
+// single changes its search tries in stage 3 and the settings it times again
+// in stage 5.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
+#include <string>
+#include <vector>
 
+#include "foveate/bench/tune.hpp"
 #include "foveate/core/stats.hpp"
 
 namespace foveate::bench {
@@ -20,6 +23,11 @@ namespace {
 // others like it at up to kLowerMargins lower margins (coarser plans).
 constexpr double kJodRaise = 0.02;
 constexpr std::ptrdiff_t kLowerMargins = 2;
+
+// Stage 5: settings within this share of the fastest one's speed are timed
+// again together, at most kContenders of them per technique.
+constexpr double kContenderShare = 0.85;
+constexpr size_t kContenders = 3;
 
 // Whether `a` differs from `b` in `key` alone.
 bool differs_only_in(const Params& a, const Params& b, const std::string& key) {
@@ -43,6 +51,47 @@ void take(Params& to, const Params& from, const std::string& key) {
   } else {
     to[key] = it->second;
   }
+}
+
+// A setting of a technique judged on every scene it was run on: whether it
+// is within the bound on each, the geometric mean of its speedups, its worst
+// distance below native.
+struct RankedSetting {
+  Params params;
+  bool within = false;
+  double speed = 0.0;
+  double worst = 0.0;
+};
+
+// The technique's settings judged on every scene it ran on, best first: those
+// within the bound on every scene by speed, then the others by how close
+// they come.
+std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string& technique) {
+  std::map<Params, std::map<std::string, const TunePoint*>> settings;
+  std::set<std::string> scenes;
+  for (const TunePoint& p : r.points) {
+    if (p.technique != technique) continue;
+    settings[p.params][p.scene] = &p;
+    scenes.insert(p.scene);
+  }
+  std::vector<RankedSetting> out;
+  for (const auto& [params, by_scene] : settings) {
+    if (by_scene.size() != scenes.size()) continue;  // not judged on every scene
+    RankedSetting s{params, true, 0.0, -std::numeric_limits<double>::infinity()};
+    double log_speed = 0.0;
+    for (const auto& [scene, p] : by_scene) {
+      s.within = s.within && p->within_bound;
+      log_speed += std::log(p->speedup);
+      s.worst = std::max(s.worst, p->below_native);
+    }
+    s.speed = std::exp(log_speed / static_cast<double>(by_scene.size()));
+    out.push_back(s);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const RankedSetting& a, const RankedSetting& b) {
+    if (a.within != b.within) return a.within;
+    return a.within ? a.speed > b.speed : a.worst < b.worst;
+  });
+  return out;
 }
 
 }  // namespace
@@ -86,37 +135,6 @@ std::vector<Params> tune_combinations(
   return out;
 }
 
-// The technique's settings judged on every scene it ran on, best first: those
-// within the bound on every scene by speed, then the others by how close
-// they come.
-std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string& technique) {
-  std::map<Params, std::map<std::string, const TunePoint*>> settings;
-  std::set<std::string> scenes;
-  for (const TunePoint& p : r.points) {
-    if (p.technique != technique) continue;
-    settings[p.params][p.scene] = &p;
-    scenes.insert(p.scene);
-  }
-  std::vector<RankedSetting> out;
-  for (const auto& [params, by_scene] : settings) {
-    if (by_scene.size() != scenes.size()) continue;  // not judged on every scene
-    RankedSetting s{params, true, 0.0, -std::numeric_limits<double>::infinity()};
-    double log_speed = 0.0;
-    for (const auto& [scene, p] : by_scene) {
-      s.within = s.within && p->within_bound;
-      log_speed += std::log(p->speedup);
-      s.worst = std::max(s.worst, p->below_native);
-    }
-    s.speed = std::exp(log_speed / static_cast<double>(by_scene.size()));
-    out.push_back(s);
-  }
-  std::stable_sort(out.begin(), out.end(), [](const RankedSetting& a, const RankedSetting& b) {
-    if (a.within != b.within) return a.within;
-    return a.within ? a.speed > b.speed : a.worst < b.worst;
-  });
-  return out;
-}
-
 std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
                                   const std::string& technique) {
   std::vector<TunePoint> pts;
@@ -133,6 +151,20 @@ std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
   std::sort(front.begin(), front.end(),
             [](const TunePoint& a, const TunePoint& b) { return a.speedup < b.speedup; });
   return front;
+}
+
+std::vector<std::map<std::string, double>> tune_contenders(const TuneResult& r,
+                                                           const std::string& technique) {
+  const std::vector<RankedSetting> ranked = rank_settings(r, technique);
+  std::vector<Params> out;
+  for (const RankedSetting& s : ranked) {
+    if (!s.within || s.speed < kContenderShare * ranked.front().speed || out.size() == kContenders)
+      break;
+    out.push_back(s.params);
+  }
+  // One setting alone has nothing to be compared with.
+  if (out.size() < 2) out.clear();
+  return out;
 }
 
 void choose_parameters(TuneResult& r) {

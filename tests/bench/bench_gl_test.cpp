@@ -448,10 +448,12 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
     }
   }
   // The settings the choice fell between were timed again side by side
-  // (stage 5; here, where foveation saves nothing at 96x54, every margin is
-  // within the bound at about the same speed): two or three per technique,
-  // within the bound, their earlier points replaced (one point per setting
-  // and scene).
+  // (stage 5): two or three per technique, within the bound, their earlier
+  // points replaced (one point per setting and scene). Which settings those
+  // are depends on the speeds measured (here, where foveation saves nothing
+  // at 96x54, every margin is within the bound at about the same speed, but
+  // a loaded machine can put one setting more than 15 % ahead of the rest):
+  // Tune.TimesAgainTheSettingsTheChoiceFallsBetween checks the rule.
   std::set<std::tuple<std::string, std::string, std::map<std::string, double>>> keys;
   std::map<std::string, int> retimed;
   for (const TunePoint& p : r.points) {
@@ -461,7 +463,6 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
       EXPECT_TRUE(p.within_bound) << p.technique;
     }
   }
-  EXPECT_FALSE(retimed.empty());
   // Every benchmark warmed up alike: as long as layered's half rate (a tuned
   // value) needs, though stage 1 runs none with it.
   EXPECT_EQ(r.warmup, 6);

@@ -4,6 +4,7 @@
 // anything to save.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -347,4 +348,48 @@ TEST(Tune, CombinesTheChangesThatPaidAndSpendsQualityOnCoarserPlans) {
   TunePoint lowest = best;
   lowest.params["margin"] = 1.0;
   EXPECT_TRUE(tune_combinations({point({{"margin", 1.0}}, 1.2, 9.70)}, lowest, axes).empty());
+}
+
+// tune's stage 5 (no GL: points written by hand): the settings timed again
+// side by side are the best one and the next within the bound on every scene
+// whose speed (geometric mean over the scenes) is at least 0.85 of the
+// best's, at most three.
+TEST(Tune, TimesAgainTheSettingsTheChoiceFallsBetween) {
+  TuneResult r;
+  const auto add = [&](std::map<std::string, double> params, const std::string& scene,
+                       double speedup, bool within) {
+    TunePoint p;
+    p.scene = scene;
+    p.technique = "vrs";
+    p.params = std::move(params);
+    p.speedup = speedup;
+    p.within_bound = within;
+    p.below_native = within ? 0.2 : 0.3;
+    r.points.push_back(p);
+  };
+  using P = std::map<std::string, double>;
+  const P best = {{"margin", 1.25}}, tile = {{"margin", 1.25}, {"tile", 8}},
+          third = {{"margin", 1.25}, {"min_class", 0.05}}, fourth = {{"margin", 1.5}},
+          slow = {{"margin", 2}}, over = {{"margin", 1}}, one_scene = {{"margin", 3}};
+  add(best, "guenter", 2.0, true);  // geometric mean 2.83
+  add(best, "raymarch", 4.0, true);
+  add(tile, "guenter", 1.9, true);  // 2.72
+  add(tile, "raymarch", 3.9, true);
+  add(third, "guenter", 1.8, true);  // 2.61
+  add(third, "raymarch", 3.8, true);
+  add(fourth, "guenter", 1.8, true);  // 2.55: within the share, beyond the three
+  add(fourth, "raymarch", 3.6, true);
+  add(slow, "guenter", 1.6, true);  // 2.19: below 0.85 of the best's speed
+  add(slow, "raymarch", 3.0, true);
+  add(over, "guenter", 2.4, false);  // fastest, but over the bound on one scene
+  add(over, "raymarch", 5.0, true);
+  add(one_scene, "raymarch", 10.0, true);  // not judged on every scene
+  EXPECT_EQ(tune_contenders(r, "vrs"), (std::vector<P>{best, tile, third}));
+  // One setting alone has nothing to be compared with.
+  r.points.erase(
+      std::remove_if(r.points.begin(), r.points.end(),
+                     [&](const TunePoint& p) { return p.params != best && p.params != slow; }),
+      r.points.end());
+  EXPECT_TRUE(tune_contenders(r, "vrs").empty());
+  EXPECT_TRUE(tune_contenders(r, "marwarp").empty());
 }

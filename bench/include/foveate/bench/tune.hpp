@@ -111,6 +111,13 @@ std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
 std::vector<std::map<std::string, double>> tune_combinations(
     const std::vector<TunePoint>& stage2, const TunePoint& best,
     const std::vector<std::pair<std::string, std::vector<double>>>& axes);
+/// Stage 5 of the search for one technique: the settings its choice falls
+/// between, to be timed again side by side. Its best setting (within the
+/// bound on every scene it ran on, fastest by the geometric mean of its
+/// speedups) and the next ones within the bound whose speed is at least 0.85
+/// of the best's, at most three in all, best first; none when fewer than two.
+std::vector<std::map<std::string, double>> tune_contenders(const TuneResult& r,
+                                                           const std::string& technique);
 /// Chooses `chosen` and `verdict` from the points (run_tune and merging do).
 void choose_parameters(TuneResult& r);
 
