@@ -127,9 +127,9 @@ TechniqueInfo vrs_info() {
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
       plan_margin_param(1.25),
-      tuned(param("tile", "shading-rate tile size (8, 16 or 32)", "px", ParamType::Integer, 8, 32,
-                  16),
-            {8, 16}),
+      listed(tuned(param("tile", "shading-rate tile size", "px", ParamType::Integer, 8, 32, 16),
+                   {8, 16}),
+             {8, 16, 32}),
       param("fixed",
             "rates from the lens centre (the principal point), not the gaze (no eye tracking)", "",
             ParamType::Boolean, 0, 1, 0),

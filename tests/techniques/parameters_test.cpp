@@ -163,6 +163,11 @@ TEST(Parameters, BadParametersAreErrorsBeforeAnythingIsMade) {
               std::string::npos)
         << bad;
   }
+  // vrs's tile is one of the sizes the shading-rate APIs offer.
+  for (const double n : {8.0, 16.0, 32.0})
+    EXPECT_NO_THROW(check_parameter(technique_info("vrs"), "tile", n)) << n;
+  const std::string tile = error_of([&] { make_technique("vrs", config({{"tile", 12}})); });
+  EXPECT_NE(tile.find("vrs parameter tile=12: must be 8, 16 or 32"), std::string::npos) << tile;
 }
 
 TEST(Parameters, DefaultsComeFromTheAcuityModel) {
