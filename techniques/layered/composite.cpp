@@ -67,35 +67,32 @@ void Layered::composite(Scene& scene, const gpu::RenderTarget& target) {
     return;
   }
   // The regions, innermost first: within the inner layer's radius only that
-  // layer shows (one read); the disc of layer k's blend band reads layers
-  // k..n-1; outside every disc only the outer layer is read. A depth test
-  // keeps each pixel to the first region that covers it (early, so
-  // llvmpipe skips the 4x4 blocks already written).
+  // layer shows; the disc of layer k's blend band reads layers k..n-1;
+  // outside every disc only the outer layer shows. Where one layer alone
+  // shows, composite_one.frag reads it. A depth test keeps each pixel to the
+  // first region that covers it (early, so llvmpipe skips the 4x4 blocks
+  // already written).
   const gpu::ProfileScope timed("composite");
-  const gpu::Program& prog = kit_.over_regions("layered/composite.frag");
-  const bool inner = n > 1;
-  regions_.begin(target, inner ? n + 1 : n);
-  if (inner) {
-    const gpu::Program& only = kit_.over_regions("layered/composite_inner.frag");
-    const LayerState& st = state_[0];
-    gpu::Samplers own;
-    own.bind(only, "u_inner", *source[0]);
-    only.set("u_inner_rect", float(st.rect[0]), float(st.rect[1]), float(st.rect[2]),
-             float(st.rect[3]));
-    regions_.disc(only, st.centre, st.radius_px - 1.0, true);
-  }
-  gpu::Samplers samplers;
-  set(prog, samplers);
-  for (int k = 0; k < n; ++k) {
-    prog.set("u_first", k);
+  const gpu::Program& blend = kit_.over_regions("layered/composite.frag");
+  const gpu::Program& one = kit_.over_regions("layered/composite_one.frag");
+  const auto only = [&](int k) -> const gpu::Program& {
     const LayerState& st = state_[static_cast<size_t>(k)];
-    if (k + 1 < n) {
-      regions_.disc(prog, st.centre, st.radius_px * (1.0 + std::max(0.0, transition_)) + 1.0,
-                    false);
-    } else {
-      regions_.rest(prog);
-    }
+    gpu::Samplers own;
+    own.bind(one, "u_layer", *source[static_cast<size_t>(k)]);
+    one.set("u_layer_rect", float(st.rect[0]), float(st.rect[1]), float(st.rect[2]),
+            float(st.rect[3]));
+    return one;
+  };
+  regions_.begin(target, n > 1 ? n + 1 : n);
+  if (n > 1) regions_.disc(only(0), state_[0].centre, state_[0].radius_px - 1.0, true);
+  gpu::Samplers samplers;
+  set(blend, samplers);
+  for (int k = 0; k + 1 < n; ++k) {
+    blend.set("u_first", k);
+    const LayerState& st = state_[static_cast<size_t>(k)];
+    regions_.disc(blend, st.centre, st.radius_px * (1.0 + std::max(0.0, transition_)) + 1.0, false);
   }
+  regions_.rest(only(n - 1));
 }
 
 }  // namespace foveate::tech::layered

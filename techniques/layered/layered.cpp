@@ -359,7 +359,7 @@ TechniqueInfo layered_info() {
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "copy",
-                      "warp",     "composite",          "composite_inner"};
+                      "warp",     "composite",          "composite_one"};
   t.make = construct<layered::Layered>();
   return t;
 }
