@@ -32,10 +32,12 @@ vec3 from_ycocg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.
 
 // The previous resolve at `uv`, Catmull-Rom filtered: a bilinear fetch would
 // soften the history a little more at every reprojection, so that under
-// motion it drifts towards a blur the eye can see. Nine bilinear taps (the
-// two middle weights of each axis folded into one), negative lobes clamped.
-// Alpha (the sample count) comes from the middle tap: exact on the unmoved
-// grid, where the weights are (0, 1, 0, 0).
+// motion it drifts towards a blur the eye can see. Five bilinear taps: the
+// two middle weights of each axis folded into one, and the four corner taps
+// (products of two outer lobes, each at most 0.0055 of the total: a lobe
+// peaks at -0.074) left out, the rest renormalised; negative lobes clamped. Alpha (the sample count) comes
+// from the middle tap: exact on the unmoved grid, where the weights are
+// (0, 1, 0, 0).
 vec4 history_catmull_rom(vec2 uv) {
   vec2 size = vec2(textureSize(u_prev, 0));
   vec2 p = uv * size - 0.5;
@@ -50,16 +52,14 @@ vec4 history_catmull_rom(vec2 uv) {
   vec2 t12 = (base + 0.5 + w2 / w12) / size;
   vec2 t3 = (base + 2.5) / size;
   vec4 mid = texture(u_prev, t12);
-  vec3 c = mid.rgb * (w12.x * w12.y);
-  c += texture(u_prev, vec2(t0.x, t12.y)).rgb * (w0.x * w12.y);
-  c += texture(u_prev, vec2(t3.x, t12.y)).rgb * (w3.x * w12.y);
-  c += texture(u_prev, vec2(t12.x, t0.y)).rgb * (w12.x * w0.y);
-  c += texture(u_prev, vec2(t12.x, t3.y)).rgb * (w12.x * w3.y);
-  c += texture(u_prev, t0).rgb * (w0.x * w0.y);
-  c += texture(u_prev, vec2(t3.x, t0.y)).rgb * (w3.x * w0.y);
-  c += texture(u_prev, vec2(t0.x, t3.y)).rgb * (w0.x * w3.y);
-  c += texture(u_prev, t3).rgb * (w3.x * w3.y);
-  return vec4(max(c, vec3(0.0)), mid.a);
+  float wm = w12.x * w12.y, wl = w0.x * w12.y, wr = w3.x * w12.y, wb = w12.x * w0.y,
+        wt = w12.x * w3.y;
+  vec3 c = mid.rgb * wm;
+  c += texture(u_prev, vec2(t0.x, t12.y)).rgb * wl;
+  c += texture(u_prev, vec2(t3.x, t12.y)).rgb * wr;
+  c += texture(u_prev, vec2(t12.x, t0.y)).rgb * wb;
+  c += texture(u_prev, vec2(t12.x, t3.y)).rgb * wt;
+  return vec4(max(c / (wm + wl + wr + wb + wt), vec3(0.0)), mid.a);
 }
 
 vec4 foveate_temporal(vec2 prev_screen) {
@@ -83,15 +83,14 @@ vec4 foveate_temporal(vec2 prev_screen) {
     }
   }
   vec3 m1 = vec3(0.0), m2 = vec3(0.0);
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      vec3 q = to_ycocg(texelFetch(u_sample, clamp(ip + ivec2(dx, dy), ivec2(0), size - 1), 0).rgb);
-      m1 += q;
-      m2 += q * q;
-    }
+  const ivec2 kCross[5] = ivec2[5](ivec2(0), ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+  for (int k = 0; k < 5; ++k) {
+    vec3 q = to_ycocg(texelFetch(u_sample, clamp(ip + kCross[k], ivec2(0), size - 1), 0).rgb);
+    m1 += q;
+    m2 += q * q;
   }
-  m1 /= 9.0;
-  vec3 sigma = sqrt(max(m2 / 9.0 - m1 * m1, vec3(0.0)));
+  m1 /= 5.0;
+  vec3 sigma = sqrt(max(m2 / 5.0 - m1 * m1, vec3(0.0)));
   vec3 h = to_ycocg(prev.rgb);
   vec3 extent = 1.25 * sigma + vec3(1e-4);
   vec3 off = h - m1;
