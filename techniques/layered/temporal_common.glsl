@@ -5,7 +5,8 @@
 // sample that differs from the one of the same phase a cycle ago means the
 // image changed there, and the pixel restarts. When the image moves, the
 // history found at `prev_screen` is clipped to the current samples'
-// neighbourhood in YCoCg (mean +- 1.25 sigma) and blended exponentially.
+// neighbourhood in YCoCg (mean +- 1.25 sigma of the pixel's sample and its
+// four neighbours') and blended exponentially.
 // Output: rgb = the resolved colour, a = the pixel's count of same-image
 // samples / 255.
 uniform sampler2D u_sample;    // this update's samples (jittered; sRGB decoded to linear)
