@@ -74,7 +74,9 @@ void Ui::act(Fn&& fn) {
 
 void Ui::parameters(Viewer& v) {
   const TechniqueInfo& info = technique_info(v.technique_name());
-  const ParamValues& values = v.technique().values();
+  // A copy: a change below rebuilds the technique (Viewer::set_param), and
+  // with it the values it holds, while the rest of the list is still drawn.
+  const ParamValues values = v.technique().values();
   const auto& over = v.overrides();
   if (info.params.empty()) ImGui::TextDisabled("(no parameters)");
   for (const ParamDecl& d : info.params) {
