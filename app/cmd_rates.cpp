@@ -130,7 +130,8 @@ RateApi checked_api(const RatesArgs& a) {
     throw Error("--max-saccade: expected 0..1000 degrees per second, got " +
                 format_fixed(a.max_saccade, 3));
   }
-  if (a.tile != 8 && a.tile != 16 && a.tile != 32) {
+  if (std::find(kShadingRateTiles.begin(), kShadingRateTiles.end(), a.tile) ==
+      kShadingRateTiles.end()) {
     throw Error("--tile: expected 8, 16 or 32 pixels, got " + std::to_string(a.tile));
   }
   try {

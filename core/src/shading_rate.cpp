@@ -145,7 +145,8 @@ const std::array<unsigned, 7>& gl_nv_palette() {
 }
 
 void ShadingRateOptions::validate() const {
-  if (tile_px != 8 && tile_px != 16 && tile_px != 32) {
+  if (std::find(kShadingRateTiles.begin(), kShadingRateTiles.end(), tile_px) ==
+      kShadingRateTiles.end()) {
     throw Error("tile: expected 8, 16 or 32 pixels, got " + std::to_string(tile_px));
   }
   if (!std::isfinite(latency_travel_deg) || latency_travel_deg < 0.0) {

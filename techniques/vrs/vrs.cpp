@@ -129,7 +129,7 @@ TechniqueInfo vrs_info() {
       plan_margin_param(1.25),
       listed(tuned(param("tile", "shading-rate tile size", "px", ParamType::Integer, 8, 32, 16),
                    {8, 16}),
-             {8, 16, 32}),
+             {kShadingRateTiles.begin(), kShadingRateTiles.end()}),
       param("fixed",
             "rates from the lens centre (the principal point), not the gaze (no eye tracking)", "",
             ParamType::Boolean, 0, 1, 0),

@@ -82,8 +82,12 @@ std::uint8_t encode_shading_rate(ShadingRate rate, RateApi api);
 /// PER_4X2 0x956A, PER_4X4 0x956B.
 const std::array<unsigned, 7>& gl_nv_palette();
 
+/// The tile sizes shading-rate images come in (Vulkan's and D3D12's
+/// attachment texel sizes in common use; GL_NV_shading_rate_image's is 16).
+inline constexpr std::array<int, 3> kShadingRateTiles = {8, 16, 32};
+
 struct ShadingRateOptions {
-  int tile_px = 16;                 ///< 8, 16 or 32
+  int tile_px = 16;                 ///< one of kShadingRateTiles
   double latency_travel_deg = 0.0;  ///< subtracted from every tile's eccentricity
   /// >= 1: every tile's eccentricity is divided by it first (a gaze tracker's
   /// fallback widens every fovea by this factor).
