@@ -292,7 +292,7 @@ TEST(Bench, PassesAddUpToTheFrameAndTheRunIsRecorded) {
                        [&](const gpu::PassTime& p) { return p.name == name; });
   };
   EXPECT_TRUE(has(r.results[1], "composite"));
-  EXPECT_TRUE(has(r.results[2], "reconstruct"));
+  EXPECT_TRUE(has(r.results[2], "reconstruct_packed"));
   EXPECT_FALSE(has(r.results[0], "composite"));
   write_bench_report(r, out);
   const nlohmann::json j = read_json(out + "/results.json");

@@ -50,8 +50,8 @@ check "CSV numbers carry no exponent" '! grep -q "e+0" "$tmp/b/results.csv" && g
 "$FOVEATE" scenes --json > "$tmp/j1" && check "scenes --json" 'json_ok "$tmp/j1" && grep -q "\"raymarch\"" "$tmp/j1"'
 "$FOVEATE" techniques --json --size 640x360 > "$tmp/j2" && check "techniques --json" \
   'python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j[\"size\"]==[640,360] and len(j[\"techniques\"])>=6 else 1)" "$tmp/j2"'
-"$FOVEATE" techniques --json --size 640x360 --margin 1 > "$tmp/j2m" && check "techniques --margin 1 derives the papers' coarser defaults" \
-  'python3 -c "import json,sys; a,b=(json.load(open(p)) for p in sys.argv[1:3]); r1=lambda j: [p[\"value\"] for t in j[\"techniques\"] if t[\"name\"]==\"checkerboard\" for p in t[\"parameters\"] if p[\"key\"]==\"r1\"][0]; sys.exit(0 if b[\"margin\"]==1 and a[\"margin\"] is None and r1(b)<r1(a) else 1)" "$tmp/j2" "$tmp/j2m"'
+"$FOVEATE" techniques --json --size 640x360 --margin 2 > "$tmp/j2m" && check "techniques --margin 2 derives finer defaults than checkerboard's own 1" \
+  'python3 -c "import json,sys; a,b=(json.load(open(p)) for p in sys.argv[1:3]); r1=lambda j: [p[\"value\"] for t in j[\"techniques\"] if t[\"name\"]==\"checkerboard\" for p in t[\"parameters\"] if p[\"key\"]==\"r1\"][0]; sys.exit(0 if b[\"margin\"]==2 and a[\"margin\"] is None and r1(b)>r1(a) else 1)" "$tmp/j2" "$tmp/j2m"'
 "$FOVEATE" plan --sweep "$tmp/fov.csv" --step 0.5 --json > "$tmp/j3" && check "plan --sweep --json" \
   'python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if len(j[\"rows\"])==23 else 1)" "$tmp/j3" && ! grep -q "e+0" "$tmp/fov.csv"'
 "$FOVEATE" render --scene cheap --size 64x36 --json --out "$tmp/r2" > "$tmp/j4" 2> /dev/null && check "render --json" 'json_ok "$tmp/j4"'

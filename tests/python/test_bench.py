@@ -48,12 +48,12 @@ def test_parameters_sweeps_and_video(fv, tmp_path):
     assert r["results"][0]["parameters"]["layers"] == 3
     s = tiny(fv, techniques=["layered"], sweep=("slope", 0.02, 0.03, 0.01), metrics=False, frames=1)
     assert [x["sweep_value"] for x in s["results"]] == pytest.approx([0.02, 0.03])
-    m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=1.0, metrics=False, frames=1)
+    m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=2.0, metrics=False, frames=1)
     plain = tiny(fv, techniques=["checkerboard"], size=(640, 360), metrics=False, frames=1)
-    assert m["margin"] == 1.0 and plain["margin"] is None  # None: each technique's own
-    assert m["results"][0]["parameters"]["margin"] == 1.0
-    assert plain["results"][0]["parameters"]["margin"] == 2.0
-    assert m["results"][0]["parameters"]["r1"] < plain["results"][0]["parameters"]["r1"]
+    assert m["margin"] == 2.0 and plain["margin"] is None  # None: each technique's own
+    assert m["results"][0]["parameters"]["margin"] == 2.0
+    assert plain["results"][0]["parameters"]["margin"] == 1.0
+    assert m["results"][0]["parameters"]["r1"] > plain["results"][0]["parameters"]["r1"]
     video = tmp_path / "b.mp4"
     v = tiny(fv, techniques=["layered"], metrics=False, video=str(video), side_by_side=True)
     assert video.stat().st_size > 0 and "2 frame(s), 128x36" in v["video"]

@@ -117,14 +117,16 @@ TEST_F(Fidelity, CheckerboardFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
 }
 
 TEST_F(Fidelity, CheckerboardKeptQuadsDoNotStandOut) {
-  // Where quads are dropped, the kept pixels come out of the same filter as
-  // the dropped ones: they are not native while their neighbours are
-  // reconstructed (the lattice of sharp quads). On the detail scene's fine
-  // rings, kept and dropped pixels of region 3 differ from native alike.
+  // Where quads of 4 pixels are dropped, the kept pixels come out of the same
+  // filter as the dropped ones: they are not native while their neighbours
+  // are reconstructed (the lattice of sharp quads). On the detail scene's
+  // fine rings, kept and dropped pixels of region 3 differ from native
+  // alike. (1-pixel quads are interpolated, each kept pixel its own sample:
+  // Techniques.CheckerboardWithPixelQuadsKeepsEachKeptPixel...)
   const int W = 1920, H = 1080;
   auto scene = load_scene("detail");
   const Image ref = native(*scene, W, H);
-  auto t = make_technique("checkerboard", config(W, H));
+  auto t = make_technique("checkerboard", config(W, H, {{"block", 4}}));
   const Vec2d gaze{960, 540};
   const Image img = run(*t, *scene, gaze);
   const auto rings = t->overlay(GazeState{gaze});
@@ -148,19 +150,19 @@ TEST_F(Fidelity, CheckerboardKeptQuadsDoNotStandOut) {
 }
 
 TEST_F(Fidelity, CheckerboardReconstructionScaleLeavesTheImage) {
-  // The reconstruction's Gaussian is computed at a reduced scale and read
-  // back bilinearly. The scale chosen by default (3 pixels per texel with the
-  // default widths) gives the image of the Gaussian computed at full
-  // resolution (scale 1) up to a small error; 4, where the narrowest
-  // Gaussian has too little of its own left, shows the read-back's period
-  // and errs far more. Mean absolute error in codes where quads are dropped.
+  // With quads of 4 pixels the reconstruction's Gaussian is computed at a
+  // reduced scale and read back bilinearly. The scale chosen by default (3 pixels per texel with
+  // the default widths) gives the image of the Gaussian computed at full resolution (scale 1) up to
+  // a small error; 4, where the narrowest Gaussian has too little of its own left, shows the
+  // read-back's period and errs far more. Mean absolute error in codes where quads are dropped.
   const int W = 1920, H = 1080;
   auto scene = load_scene("detail");
   const Vec2d gaze{960, 540};
   const double from =  // where region 1 begins
-      make_technique("checkerboard", config(W, H))->overlay(GazeState{gaze})[1].w;
+      make_technique("checkerboard", config(W, H, {{"block", 4}}))->overlay(GazeState{gaze})[1].w;
   const auto image = [&](int scale) {
-    return run(*make_technique("checkerboard", config(W, H, {{"scale", scale}})), *scene, gaze);
+    return run(*make_technique("checkerboard", config(W, H, {{"block", 4}, {"scale", scale}})),
+               *scene, gaze);
   };
   const Image exact = image(1), automatic = image(0), four = image(4);
   const auto error = [&](const Image& img) {

@@ -84,7 +84,7 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   // Declared first by every built-in technique but native, with the margin
   // `foveate tune` chose at 1920x1080 (docs/fidelity.md).
   const std::map<std::string, double> own = {
-      {"layered", 1.5}, {"logpolar", 1.5}, {"checkerboard", 2.0}, {"vrs", 1.25},
+      {"layered", 1.5}, {"logpolar", 1.5}, {"checkerboard", 1.0}, {"vrs", 1.25},
       {"inset", 1.25},  {"lodmask", 2.5},  {"marwarp", 2.0}};
   for (const auto& [name, margin] : own) {
     const TechniqueInfo& t = technique_info(name);
@@ -107,13 +107,15 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   EXPECT_EQ(error_of([&] { resolve_parameters(layered, c); }),
             "layered parameter margin=0.5: out of range [1, 4]");
   // The plan is for the acuity made finer by the margin, and so are the
-  // defaults derived from the acuity model: checkerboard at its own 2 has
+  // defaults derived from the acuity model: checkerboard at margin 2 has
   // the regions of the paper's plan (margin 1) for the model made 2 times finer.
   const TechniqueInfo& cb = technique_info("checkerboard");
   TechniqueConfig paper = config(1920, 1080);
   paper.margin = 1.0;
   paper.acuity = paper.acuity.finer(2.0);
-  const ParamValues own_values = resolve_parameters(cb, config(1920, 1080));
+  TechniqueConfig two = config(1920, 1080);
+  two.margin = 2.0;
+  const ParamValues own_values = resolve_parameters(cb, two);
   for (const char* key : {"r1", "r2", "r3"}) {
     EXPECT_EQ(own_values.real(key), resolve_parameters(cb, paper).real(key)) << key;
     EXPECT_GT(own_values.real(key), resolve_parameters(cb,

@@ -418,6 +418,76 @@ TEST_F(Techniques, CheckerboardCountsMatchThePatternAndFoveaIsExact) {
   EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, rings[0].w));
 }
 
+TEST_F(Techniques, CheckerboardWithPixelQuadsKeepsEachKeptPixelAndFillsTheRestFromItsNeighbours) {
+  // block 1 shades the pixels beyond region 0 packed, a target per quad, and
+  // interpolates in linear light: each kept pixel is its own sample (native's
+  // pixel); a dropped pixel of region 2 (a checkerboard) is the mean of its
+  // four neighbours, all kept; one of region 3 (quad 0 alone kept) the mean of
+  // the two or four quad-0 pixels around it. Checked pixel by pixel against
+  // native on the detail scene's hard edges, away from region borders.
+  auto scene = load_scene("detail");
+  const Image ref = native(*scene);
+  auto t = make_technique(
+      "checkerboard", config({{"block", 1}, {"blend", 0}, {"r1", 60}, {"r2", 60}, {"r3", 150}}));
+  const Vec2d gaze{260, 170};
+  FrameStats s;
+  const Image img = run(*t, *scene, gaze, &s);
+  CheckerboardPattern p;
+  p.block = 1;
+  p.thresholds_px = {60, 60, 150};
+  const auto region = [&](int x, int y) { return p.region({x + 0.5, y + 0.5}, gaze); };
+  // The linear-light mean of native's pixels at `offsets` from (x, y), as a code.
+  const auto mean = [&](int x, int y, std::initializer_list<std::array<int, 2>> offsets, int c) {
+    double sum = 0;
+    for (const auto& o : offsets) sum += test::to_linear(ref.at(x + o[0], y + o[1])[c]);
+    return test::to_code(sum / double(offsets.size()));
+  };
+  int checked[4] = {0, 0, 0, 0}, off[4] = {0, 0, 0, 0};
+  double kept = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      if (p.kept({x + 0.5, y + 0.5}, gaze)) kept += 1;
+      if (x < 2 || y < 2 || x >= kW - 2 || y >= kH - 2) continue;
+      const int r = region(x, y);
+      bool inside = r != 1;  // region 1 is empty here (r1 = r2)
+      for (int j = -2; j <= 2 && inside; ++j) {
+        for (int i = -2; i <= 2 && inside; ++i) inside = region(x + i, y + j) == r;
+      }
+      if (!inside) continue;
+      const bool own = p.kept({x + 0.5, y + 0.5}, gaze);
+      // Which sample the pixel is: 0 own (region 0 or kept), 1 four
+      // neighbours (region 2), 2 and 3 region 3's lattice.
+      const int kind = own ? 0 : r == 2 ? 1 : (x % 2 == 1 && y % 2 == 1) ? 3 : 2;
+      for (int c = 0; c < 3; ++c) {
+        double want = ref.at(x, y)[c];
+        if (kind == 1) want = mean(x, y, {{-1, 0}, {1, 0}, {0, -1}, {0, 1}}, c);
+        if (kind == 2)
+          want = x % 2 == 1 ? mean(x, y, {{-1, 0}, {1, 0}}, c) : mean(x, y, {{0, -1}, {0, 1}}, c);
+        if (kind == 3) want = mean(x, y, {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}}, c);
+        if (std::abs(img.at(x, y)[c] - want) > 2.0) ++off[kind];
+      }
+      ++checked[kind];
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    ASSERT_GT(checked[k], 2000) << "kind " << k;
+    EXPECT_LE(off[k], 3 * checked[k] / 1000) << "kind " << k << " of " << checked[k];
+  }
+  // Every kept pixel shaded once, and a few more beyond region borders (the
+  // passes are drawn over rectangles).
+  EXPECT_GE(s.shaded_pixels, kept);
+  EXPECT_LE(s.shaded_pixels, 1.15 * kept);
+  EXPECT_LT(s.shaded_pixels, 0.45 * kW * kH);
+  // The targets are not cleared between frames (nothing unshaded is read):
+  // after a frame at another gaze the image is the one a fresh run gives.
+  const Vec2d moved{420, 120};
+  const Image after = run(*t, *scene, moved);
+  auto fresh = make_technique(
+      "checkerboard", config({{"block", 1}, {"blend", 0}, {"r1", 60}, {"r2", 60}, {"r3", 150}}));
+  const Image once = run(*fresh, *scene, moved);
+  EXPECT_EQ(compare_all(once, after).max, 0.0);
+}
+
 TEST_F(Techniques, CheckerboardFadesFromNativeOverABandProportionalToR1) {
   // Between the native fovea (r1) and the first dropped quads a band of
   // `blend` x r1's eccentricity is shaded in full (0.2 by default, as
