@@ -427,8 +427,9 @@ TEST_F(Techniques, CheckerboardWithPixelQuadsKeepsEachKeptPixelAndFillsTheRestFr
   // native on the detail scene's hard edges, away from region borders.
   auto scene = load_scene("detail");
   const Image ref = native(*scene);
-  auto t = make_technique(
-      "checkerboard", config({{"block", 1}, {"blend", 0}, {"r1", 60}, {"r2", 60}, {"r3", 150}}));
+  const std::map<std::string, double> params = {
+      {"block", 1}, {"blend", 0}, {"r1", 60}, {"r2", 60}, {"r3", 150}};
+  auto t = make_technique("checkerboard", config(params));
   const Vec2d gaze{260, 170};
   FrameStats s;
   const Image img = run(*t, *scene, gaze, &s);
@@ -443,10 +444,13 @@ TEST_F(Techniques, CheckerboardWithPixelQuadsKeepsEachKeptPixelAndFillsTheRestFr
     return test::to_code(sum / double(offsets.size()));
   };
   int checked[4] = {0, 0, 0, 0}, off[4] = {0, 0, 0, 0};
-  double kept = 0;
+  double kept = 0, per_region[4] = {0, 0, 0, 0};
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
-      if (p.kept({x + 0.5, y + 0.5}, gaze)) kept += 1;
+      if (p.kept({x + 0.5, y + 0.5}, gaze)) {
+        kept += 1;
+        per_region[region(x, y)] += 1;
+      }
       if (x < 2 || y < 2 || x >= kW - 2 || y >= kH - 2) continue;
       const int r = region(x, y);
       bool inside = r != 1;  // region 1 is empty here (r1 = r2)
@@ -474,16 +478,22 @@ TEST_F(Techniques, CheckerboardWithPixelQuadsKeepsEachKeptPixelAndFillsTheRestFr
     EXPECT_LE(off[k], 3 * checked[k] / 1000) << "kind " << k << " of " << checked[k];
   }
   // Every kept pixel shaded once, and a few more beyond region borders (the
-  // passes are drawn over rectangles).
+  // passes are drawn over rectangles): the parts, each region's kept pixels
+  // and the rest, add up to what was shaded.
   EXPECT_GE(s.shaded_pixels, kept);
   EXPECT_LE(s.shaded_pixels, 1.15 * kept);
+  ASSERT_EQ(s.parts.size(), 5u);
+  double sum = 0;
+  for (int k = 0; k < 5; ++k) sum += s.parts[static_cast<size_t>(k)].pixels;
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(s.parts[static_cast<size_t>(k)].pixels, per_region[k]) << "region " << k;
+  EXPECT_EQ(sum, s.shaded_pixels);
   EXPECT_LT(s.shaded_pixels, 0.45 * kW * kH);
   // The targets are not cleared between frames (nothing unshaded is read):
   // after a frame at another gaze the image is the one a fresh run gives.
   const Vec2d moved{420, 120};
   const Image after = run(*t, *scene, moved);
-  auto fresh = make_technique(
-      "checkerboard", config({{"block", 1}, {"blend", 0}, {"r1", 60}, {"r2", 60}, {"r3", 150}}));
+  auto fresh = make_technique("checkerboard", config(params));
   const Image once = run(*fresh, *scene, moved);
   EXPECT_EQ(compare_all(once, after).max, 0.0);
 }
