@@ -140,7 +140,6 @@ class Checkerboard final : public Technique {
     if (!packed()) frame_.clear(0, 0, 0, 0);  // alpha 0 = not covered; stencil 0 = dropped
     FrameStats stats;
     stats.native_pixels = double(W) * H;
-    const auto set_view = [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); };
     PixelCount shaded;
     if (packed()) {
       shaded = shade_packed(scene, gaze, b, W, H);
@@ -153,7 +152,10 @@ class Checkerboard final : public Technique {
       //    depth, so the stencil test runs before it (llvmpipe rejects whole
       //    4x4 blocks) without the early-tests variant, which costs more
       //    (docs/performance.md).
-      shaded = kit_.shade(scene, view, kMapRect, frame_, set_view, gpu::PassState::stencil_equal());
+      shaded = kit_.shade(
+          scene, view, kMapRect, frame_,
+          [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); },
+          gpu::PassState::stencil_equal());
     }
     CheckerboardPattern pat;
     pat.block = block_;
