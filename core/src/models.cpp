@@ -236,16 +236,66 @@ bool CheckerboardPattern::kept(Vec2d pixel, Vec2d gaze) const {
 std::array<double, 4> CheckerboardPattern::kept_by_region(int width, int height, Vec2d gaze) const {
   std::array<double, 4> out{};
   const int n = block, s = 2 * block;
+  if (width <= 0 || height <= 0 || n <= 0) return out;
+  // The pixels tile (tx, ty) keeps in region r: quads 0 and r+1..3, each
+  // clipped to the screen.
+  const auto kept_in = [&](int tx, int ty, int r) {
+    double sum = 0;
+    for (int q = 0; q < 4; ++q) {
+      if (q != 0 && q <= r) continue;  // region r drops quads 1..r
+      const int x0 = tx + (q >= 2 ? n : 0), y0 = ty + (q & 1 ? n : 0);
+      sum += double(std::clamp(width - x0, 0, n)) * std::clamp(height - y0, 0, n);
+    }
+    return sum;
+  };
+  // Rows are counted in runs where the thresholds nest (validate()) and the
+  // gaze is a point; otherwise tile by tile.
+  const bool runs = thresholds_px[0] <= thresholds_px[1] && thresholds_px[1] <= thresholds_px[2] &&
+                    std::isfinite(gaze.x) && std::isfinite(gaze.y);
+  const int cols = (width + s - 1) / s;
   for (int ty = 0; ty < height; ty += s) {
-    for (int tx = 0; tx < width; tx += s) {
-      // Every pixel of a tile lies in the tile's region.
-      const int r = region({tx + 0.5, ty + 0.5}, gaze);
-      for (int q = 0; q < 4; ++q) {
-        if (q != 0 && q <= r) continue;  // region r drops quads 1..r
-        const int x0 = tx + (q >= 2 ? n : 0), y0 = ty + (q & 1 ? n : 0);
-        const int w = std::clamp(width - x0, 0, n), h = std::clamp(height - y0, 0, n);
-        out[static_cast<size_t>(r)] += double(w) * h;
+    const auto region_at = [&](int i) { return region({i * s + 0.5, ty + 0.5}, gaze); };
+    if (!runs) {
+      for (int i = 0; i < cols; ++i) out[size_t(region_at(i))] += kept_in(i * s, ty, region_at(i));
+      continue;
+    }
+    // Along a row the tiles' distance to the gaze falls to the tile under
+    // it (or the nearest one) and rises after: the tiles within each
+    // threshold are one run around it, found by bisection with the same
+    // distance as region(), so every tile counts where region() puts it.
+    const int c = int(std::clamp(std::floor(gaze.x / s), 0.0, double(cols - 1)));
+    std::array<int, 3> within{};
+    for (size_t k = 0; k < 3; ++k) {
+      const auto near = [&](int i) {
+        return tile_distance({i * s + 0.5, ty + 0.5}, gaze) <= thresholds_px[k];
+      };
+      if (!near(c)) continue;
+      int lo = 0, hi = c;  // the first near tile in [0, c]
+      while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (near(mid))
+          hi = mid;
+        else
+          lo = mid + 1;
       }
+      const int first = lo;
+      lo = c, hi = cols - 1;  // the last near tile in [c, cols - 1]
+      while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (near(mid))
+          lo = mid;
+        else
+          hi = mid - 1;
+      }
+      within[k] = lo - first + 1;
+    }
+    const std::array<int, 4> tiles = {within[0], within[1] - within[0], within[2] - within[1],
+                                      cols - within[2]};
+    for (int r = 0; r < 4; ++r) out[size_t(r)] += tiles[size_t(r)] * kept_in(0, ty, r);
+    // A last column cut by the screen's edge keeps less than a whole tile.
+    if (width % s != 0) {
+      const int r = region_at(cols - 1);
+      out[size_t(r)] += kept_in((cols - 1) * s, ty, r) - kept_in(0, ty, r);
     }
   }
   return out;

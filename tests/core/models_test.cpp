@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -209,17 +211,24 @@ TEST(Checkerboard, RegionZeroHoldsTheDiscOfItsRadius) {
 
 TEST(Checkerboard, KeptByRegionCountsEveryKeptPixel) {
   // Against kept() and region() pixel by pixel: screens that end inside a
-  // tile and inside a quad, gazes inside, at the edge of and off the screen.
+  // tile and inside a quad, gazes inside, at the edge of and off the screen;
+  // thresholds that tiles' distances meet exactly (a gaze on tile corners),
+  // thresholds that do not nest (unvalidated), and a gaze that is no point.
   struct Case {
     int block, width, height;
     Vec2d gaze;
+    std::array<double, 3> thresholds = {6.0, 13.0, 21.5};
   };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const Case c :
        {Case{2, 37, 23, {11.2, 9.7}}, Case{4, 101, 57, {0.0, 0.0}}, Case{3, 64, 48, {70.5, -8.0}},
-        Case{1, 9, 5, {4.5, 2.5}}, Case{4, 3, 2, {1.0, 1.0}}}) {
+        Case{1, 9, 5, {4.5, 2.5}}, Case{4, 3, 2, {1.0, 1.0}},
+        Case{1, 301, 173, {150.0, 86.0}, {4.0, 4.0, 10.0}},
+        Case{1, 300, 170, {1e9, 80.0}, {4.0, 9.0, 1e9 - 200.0}},
+        Case{2, 41, 29, {20.0, 12.0}, {13.0, 6.0, 21.5}}, Case{1, 20, 10, {nan, 3.0}}}) {
     CheckerboardPattern p;
     p.block = c.block;
-    p.thresholds_px = {6.0, 13.0, 21.5};
+    p.thresholds_px = c.thresholds;
     std::array<double, 4> expected{};
     for (int y = 0; y < c.height; ++y) {
       for (int x = 0; x < c.width; ++x) {
