@@ -93,7 +93,9 @@ struct CheckerboardPattern {
   [[nodiscard]] bool kept(Vec2d pixel, Vec2d gaze) const;
   /// How many pixels of a width x height screen each region keeps (pixel
   /// centres, as kept()): what one shading pass over the kept pixels shades,
-  /// split by region. Counted per tile and quad, not per pixel.
+  /// split by region. Counted per row of tiles, in the run of tiles each
+  /// threshold holds (found by bisection): checkerboard counts every frame,
+  /// and with 1-pixel quads a count tile by tile costs milliseconds.
   [[nodiscard]] std::array<double, 4> kept_by_region(int width, int height, Vec2d gaze) const;
   void validate() const;
 };
