@@ -256,7 +256,10 @@ std::array<double, 4> CheckerboardPattern::kept_by_region(int width, int height,
   for (int ty = 0; ty < height; ty += s) {
     const auto region_at = [&](int i) { return region({i * s + 0.5, ty + 0.5}, gaze); };
     if (!runs) {
-      for (int i = 0; i < cols; ++i) out[size_t(region_at(i))] += kept_in(i * s, ty, region_at(i));
+      for (int i = 0; i < cols; ++i) {
+        const int r = region_at(i);
+        out[size_t(r)] += kept_in(i * s, ty, r);
+      }
       continue;
     }
     // Along a row the tiles' distance to the gaze falls to the tile under
