@@ -212,15 +212,18 @@ class Checkerboard final : public Technique {
     return {quad / 2, (H - 1 - quad % 2) % 2};
   }
 
+  // How far beyond a region's radius its tiles' pixel centres reach (1.5
+  // sqrt 2 pixels, rounded up), and how far the interpolation's bilinear
+  // reads reach beyond a pixel (2 sqrt 2).
+  static constexpr double kTileReach = 3.0, kReadReach = 3.0;
+
   // Region 0 at full resolution and quads 0, 2 and 3 packed (block 1), each
   // over rectangles that hold every pixel it keeps and every texel the
-  // reconstruction reads: a tile's pixel centres lie within 1.5 sqrt 2
-  // pixels of its nearest point, by which a tile's region is decided, and a
-  // bilinear read reaches a neighbour 2 sqrt 2 pixels away. The slack shades
-  // a few pixels more, true samples all; since nothing unshaded is read, the
-  // targets need no clear.
+  // reconstruction reads (a tile's region is decided by its nearest point:
+  // kTileReach, kReadReach). The slack shades a few pixels more, true
+  // samples all; since nothing unshaded is read, the targets need no clear.
   PixelCount shade_packed(Scene& scene, const GazeState& gaze, const Borders& b, int W, int H) {
-    constexpr double kTile = 3.0, kRead = 3.0;
+    constexpr double kTile = kTileReach, kRead = kReadReach;
     const Vec2d g = to_gl(gaze.gaze_px, H);
     const View view = View::full(W, H);
     const std::vector<PixelRect> fovea = disc_rects(g.x, g.y, b.pattern[0] + kTile, W, H);
@@ -271,7 +274,7 @@ class Checkerboard final : public Technique {
     const int H = target.height();
     const SetUniforms set_pattern = pattern_uniforms(gaze, b, H);
     const double inner = std::max(0.0, b.pattern[0] - 1.0);
-    const double outer = std::max(inner + 1.0, b.pattern[2] + 3.0);
+    const double outer = std::max(inner + 1.0, b.pattern[2] + kTileReach);
     kit_.pass_around_disc(
         target, to_gl(gaze.gaze_px, H), inner, outer, "checkerboard/reconstruct_fovea.frag",
         "checkerboard/reconstruct_packed.frag", "checkerboard/reconstruct_packed_outer.frag",
