@@ -7,14 +7,23 @@ uniform sampler2D u_albedo_tex;
 uniform int u_has_tex;
 uniform float u_material;
 uniform float u_gloss;
+uniform vec3 u_eye;  // world position of the eye
 layout(location = 0) out vec4 o_albedo;
 layout(location = 1) out vec4 o_normal;
 layout(location = 2) out vec4 o_position;
 void main() {
   vec3 c = u_base_color.rgb;
   if (u_has_tex != 0) c *= pow(texture(u_albedo_tex, v_uv).rgb, vec3(2.2));  // sRGB texels to linear
+  // The normal of the side the eye sees, whatever the triangle's winding
+  // (files disagree on it, and gl_FrontFacing on a clockwise mesh turned
+  // every normal inward: lit from behind, and Fresnel at grazing
+  // everywhere). The face's own normal comes from the screen-space
+  // derivatives of its world position, turned towards the eye; a degenerate
+  // face (a zero cross product) keeps the mesh's normal.
   vec3 n = normalize(v_normal);
-  if (!gl_FrontFacing) n = -n;
+  vec3 face = cross(dFdx(v_world), dFdy(v_world));
+  if (dot(face, u_eye - v_world) < 0.0) face = -face;
+  if (dot(n, face) < 0.0) n = -n;
   o_albedo = vec4(c, u_material / 255.0);
   o_normal = vec4(n, u_gloss);
   o_position = vec4(v_world, 1.0);

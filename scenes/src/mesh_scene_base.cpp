@@ -129,6 +129,7 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
   p.set("u_albedo_tex", 0);
   const double focal = camera_focal_px();
   const glm::vec3 eye(eye_pose().position);
+  p.set("u_eye", eye.x, eye.y, eye.z);
   // A sub-rectangle of the prepass's view culls to its own frustum (the
   // geometry is still drawn with the prepass's projection).
   const bool same = view.x0 == last_view_.x0 && view.y0 == last_view_.y0 &&

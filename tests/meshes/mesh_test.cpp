@@ -1,15 +1,20 @@
 // Mesh scenes: real OBJ, glTF and PLY files, the guenter scene, LODs and
 // culling, sub-frustum rendering, and bad model files.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
-#include "mesh_scene_base.hpp"
 #include "mesh_fixture.hpp"
+#include "mesh_scene_base.hpp"
 
 using namespace foveate;
 
@@ -156,6 +161,59 @@ TEST_F(Meshes, ObjectPositionsAreTheVisibleObjects) {
     EXPECT_LE(p.x, 320);
     EXPECT_GE(p.y, 0);
     EXPECT_LE(p.y, 180);
+  }
+}
+
+TEST_F(Meshes, EachSurfaceIsLitOnTheSideTheEyeSees) {
+  // One cube three ways: counter-clockwise faces with outward normals (GL's
+  // front faces), the same faces wound clockwise (files disagree on
+  // winding, as guenter's own parametric objects did), and outward faces
+  // whose normals point inward (a surface seen from its back). Shading
+  // takes the normal of the side the eye sees, so all three look alike.
+  // Shaded by gl_FrontFacing's word, as before, the clockwise and the
+  // inward cubes were lit from inside: up to 160 codes off the first.
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("foveate-winding-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const float v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                         {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  // Counter-clockwise seen from outside, with each face's outward normal.
+  const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {0, 4, 7, 3},
+                           {5, 1, 2, 6}, {7, 6, 2, 3}, {0, 1, 5, 4}};
+  const int normals[6][3] = {{0, 0, 1}, {0, 0, -1}, {-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+  const auto write = [&](const std::string& name, bool clockwise, float normal_sign) {
+    std::ofstream f(dir / name);
+    for (const auto& p : v) f << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& n : normals)
+      f << "vn " << normal_sign * float(n[0]) << ' ' << normal_sign * float(n[1]) << ' '
+        << normal_sign * float(n[2]) << '\n';
+    for (int i = 0; i < 6; ++i) {
+      f << 'f';
+      for (int k = 0; k < 4; ++k) {
+        const int c = clockwise ? faces[i][3 - k] : faces[i][k];
+        f << ' ' << c + 1 << "//" << i + 1;
+      }
+      f << '\n';
+    }
+    return (dir / name).string();
+  };
+  const std::string paths[3] = {write("ccw.obj", false, 1.0f), write("cw.obj", true, 1.0f),
+                                write("inward.obj", false, -1.0f)};
+  Image img[3];
+  for (int i = 0; i < 3; ++i) {
+    auto scene = load_scene(paths[i]);
+    img[i] = shade(*scene, View::full(96, 72), 96, 72);
+  }
+  fs::remove_all(dir);
+  ASSERT_EQ(img[0].at(48, 36)[3], 255);  // the cube fills the centre (alpha: geometry)
+  for (int i = 1; i < 3; ++i) {
+    int worst = 0;
+    for (int y = 0; y < 72; ++y)
+      for (int x = 0; x < 96; ++x)
+        for (int c = 0; c < 3; ++c)
+          worst = std::max(worst, std::abs(int(img[i].at(x, y)[c]) - int(img[0].at(x, y)[c])));
+    EXPECT_LE(worst, 2) << paths[i];
   }
 }
 
