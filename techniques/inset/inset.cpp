@@ -147,7 +147,7 @@ TechniqueInfo inset_info() {
       "inset sized by the latency-aware formula, blended with a vignette.";
   t.source = "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015";
   t.params = {
-      plan_margin_param(1.25),
+      plan_margin_param(2.0),
       tuned(param("scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", "",
                   ParamType::Real, 0.05, 1.0, 0.5),
             {0.35, 0.5, 0.65}),
@@ -161,7 +161,7 @@ TechniqueInfo inset_info() {
          return std::clamp(2.0 * e, 1.0, 60.0);
        }},
       tuned(param("border", "vignette blend border as a fraction of the foveal radius", "",
-                  ParamType::Real, 0.0, 1.0, 0.2),
+                  ParamType::Real, 0.0, 1.0, 0.1),
             {0.1, 0.2, 0.4}),
       param("latency_ms",
             "worst-case total latency L_tot (the measured gaze latency is used if larger)", "ms",

@@ -126,7 +126,7 @@ TechniqueInfo vrs_info() {
       "reduced resolution over its tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
-      plan_margin_param(1.25),
+      plan_margin_param(1.5),
       listed(tuned(param("tile", "shading-rate tile size", "px", ParamType::Integer, 8, 32, 16),
                    {8, 16}),
              {kShadingRateTiles.begin(), kShadingRateTiles.end()}),

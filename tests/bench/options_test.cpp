@@ -184,13 +184,13 @@ TEST(Savings, SmallRendersOfTheDesktopDisplayHaveNothingToSave) {
 // At 960x540 and 640x360 the desktop display leaves too little to save for
 // the techniques' own plans (checkerboard shaded 100 %, layered ran 0.39x at
 // 960x540): the note is given below kLittleToSaveBound at the finest plan the
-// techniques make by default (the strictest own margin: lodmask's 2.5), not
+// techniques make by default (the strictest own margin: lodmask's 3), not
 // only near 1x.
 TEST(Savings, TheNoteIsGivenUnderTheClearThresholdAtTheTechniquesOwnPlans) {
   const Display d = Display::load("desktop-1080p");
   const AcuityModel a = AcuityModel::preset("A");
   const double margin = strictest_plan_margin(std::nullopt);
-  EXPECT_DOUBLE_EQ(margin, 2.5);
+  EXPECT_DOUBLE_EQ(margin, 3.0);
   EXPECT_DOUBLE_EQ(own_plan_margin("layered"), 1.5);
   EXPECT_DOUBLE_EQ(own_plan_margin("native"), 1.0);
   EXPECT_DOUBLE_EQ(strictest_plan_margin(1.25), 1.25);
@@ -198,7 +198,7 @@ TEST(Savings, TheNoteIsGivenUnderTheClearThresholdAtTheTechniquesOwnPlans) {
     const SavingsCheck c = check_savings(d.resized(w, h), a, margin);
     EXPECT_TRUE(c.nothing_to_save) << w << "x" << h << ": bound " << c.pixel_bound;
     const std::string note = c.note.render();
-    EXPECT_NE(note.find("at planning margin 2.5 ("), std::string::npos) << note;
+    EXPECT_NE(note.find("at planning margin 3 ("), std::string::npos) << note;
     EXPECT_NE(note.find("under 1.5x"), std::string::npos) << note;
     EXPECT_NE(note.find("try size 1920x1080"), std::string::npos) << note;
   }
