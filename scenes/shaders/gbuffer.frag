@@ -15,11 +15,11 @@ void main() {
   vec3 c = u_base_color.rgb;
   if (u_has_tex != 0) c *= pow(texture(u_albedo_tex, v_uv).rgb, vec3(2.2));  // sRGB texels to linear
   // The normal of the side the eye sees, whatever the triangle's winding
-  // (files disagree on it, and gl_FrontFacing on a clockwise mesh turned
-  // every normal inward: lit from behind, and Fresnel at grazing
-  // everywhere). The face's own normal comes from the screen-space
-  // derivatives of its world position, turned towards the eye; a degenerate
-  // face (a zero cross product) keeps the mesh's normal.
+  // (files disagree on it, and by gl_FrontFacing's word a clockwise mesh's
+  // normals would point inward: lit from behind). The face's own normal
+  // comes from the screen-space derivatives of its world position, turned
+  // towards the eye; a degenerate face (a zero cross product) keeps the
+  // mesh's normal.
   vec3 n = normalize(v_normal);
   vec3 face = cross(dFdx(v_world), dFdy(v_world));
   if (dot(face, u_eye - v_world) < 0.0) face = -face;

@@ -223,10 +223,9 @@ class Checkerboard final : public Technique {
   // kTileReach, kReadReach). The slack shades a few pixels more, true
   // samples all; since nothing unshaded is read, the targets need no clear.
   PixelCount shade_packed(Scene& scene, const GazeState& gaze, const Borders& b, int W, int H) {
-    constexpr double kTile = kTileReach, kRead = kReadReach;
     const Vec2d g = to_gl(gaze.gaze_px, H);
     const View view = View::full(W, H);
-    const std::vector<PixelRect> fovea = disc_rects(g.x, g.y, b.pattern[0] + kTile, W, H);
+    const std::vector<PixelRect> fovea = disc_rects(g.x, g.y, b.pattern[0] + kTileReach, W, H);
     PixelCount shaded = kit_.shade(
         scene, view, kMapRect, frame_,
         [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, {}, false,
@@ -235,7 +234,8 @@ class Checkerboard final : public Technique {
     // quad 2 in region 1 (out to pattern[1], its own pixels only), quad 3
     // in regions 1 and 2, and the neighbours of their pixels.
     const std::array<double, 3> end = {std::numeric_limits<double>::infinity(),
-                                       b.pattern[1] + kTile, b.pattern[2] + kTile + kRead};
+                                       b.pattern[1] + kTileReach,
+                                       b.pattern[2] + kTileReach + kReadReach};
     const int tw = (W + 1) / 2, th = (H + 1) / 2;
     for (size_t i = 0; i < kPackedQuads.size(); ++i) {
       const auto [ox, oy] = quad_offset(kPackedQuads[i], H);
@@ -245,10 +245,10 @@ class Checkerboard final : public Technique {
       t.color().set_wrap(GL_CLAMP_TO_EDGE);
       // Texel (i, j) samples GL pixel (2 i + ox, 2 j + oy): distances halve.
       const std::vector<PixelRect> ring =
-          end[i] <= b.pattern[0] + kTile
+          end[i] <= b.pattern[0] + kTileReach
               ? std::vector<PixelRect>{}
               : annulus_rects(0.5 * (g.x - ox + 0.5), 0.5 * (g.y - oy + 0.5),
-                              0.5 * (b.pattern[0] - kRead - 1.0), 0.5 * end[i], tw, th);
+                              0.5 * (b.pattern[0] - kReadReach - 1.0), 0.5 * end[i], tw, th);
       const View grid{0, 0, double(2 * tw), double(2 * th), tw, th, 1.0};
       View at = grid;
       at.x0 += ox - 0.5, at.x1 += ox - 0.5, at.y0 += oy - 0.5, at.y1 += oy - 0.5;

@@ -169,9 +169,8 @@ TEST_F(Meshes, EachSurfaceIsLitOnTheSideTheEyeSees) {
   // front faces), the same faces wound clockwise (files disagree on
   // winding, as guenter's own parametric objects did), and outward faces
   // whose normals point inward (a surface seen from its back). Shading
-  // takes the normal of the side the eye sees, so all three look alike.
-  // Shaded by gl_FrontFacing's word, as before, the clockwise and the
-  // inward cubes were lit from inside: up to 160 codes off the first.
+  // takes the normal of the side the eye sees, so all three look alike
+  // (by gl_FrontFacing's word the second and third would be lit from inside).
   namespace fs = std::filesystem;
   const fs::path dir =
       fs::temp_directory_path() / ("foveate-winding-" + std::to_string(::getpid()));
