@@ -4,10 +4,13 @@
 // foveal inset, whose diameter follows the latency-aware formula (eq. 1), is
 // blended over it with a vignette mask.
 #include <cmath>
+#include <limits>
 #include <tuple>
+#include <vector>
 
 #include "../registry/registry.hpp"
 #include "foveate/techniques/pass_kit.hpp"
+#include "foveate/techniques/rect_pass.hpp"
 
 namespace foveate::tech {
 
@@ -58,24 +61,41 @@ class Inset final : public Technique {
       pv.skip_x1 = g.x + hidden;
       pv.skip_y1 = g.y + hidden;
     }
-    scene.prepass(pv);
-    periphery_.ensure(pw, ph);
-    const PixelCount np =
-        kit_.shade(scene, pv, kMapRect, periphery_,
-                   [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, pv); });
     // Foveal inset at native resolution, clipped to the screen.
     const double x0 = std::max(0.0, std::floor(g.x - half)),
                  y0 = std::max(0.0, std::floor(g.y - half));
     const double x1 = std::min(double(W), std::ceil(g.x + half)),
                  y1 = std::min(double(H), std::ceil(g.y + half));
-    PixelCount ni;
     const bool has_inset = x1 > x0 && y1 > y0;
+    scene.prepass(pv);
+    periphery_.ensure(pw, ph);
+    // The periphery is shaded around a hole where the inset is opaque
+    // (weight 1 within its radius less the border), less what the blur and
+    // the upscale's bilinear read reach into it: every screen pixel that
+    // shows a texel of the hole, or a blur of one, is overwritten whole by
+    // the inset.
+    const double sx = double(pw) / W, sy = double(ph) / H;
+    const double hole = (half - f.blend_border_px) * std::min(sx, sy) - (blur_ + 3.0);
+    const std::vector<PixelRect> around =
+        annulus_rects(g.x * sx, g.y * sy, has_inset ? std::max(0.0, hole) : 0.0,
+                      std::numeric_limits<double>::infinity(), pw, ph);
+    const PixelCount np = kit_.shade(
+        scene, pv, kMapRect, periphery_,
+        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, pv); }, {}, false,
+        &around);
+    PixelCount ni;
     if (has_inset) {
       const View iv{x0, y0, x1, y1, static_cast<int>(x1 - x0), static_cast<int>(y1 - y0), 1.0};
       scene.prepass(iv);
       inset_.ensure(iv.target_width, iv.target_height);
-      ni = kit_.shade(scene, iv, kMapRect, inset_,
-                      [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, iv); });
+      // Only the disc the composite shows (its texels are the screen's
+      // pixels, read at their centres: nothing beyond the disc is fetched).
+      const std::vector<PixelRect> disc =
+          disc_rects(g.x - x0, g.y - y0, half, iv.target_width, iv.target_height);
+      ni = kit_.shade(
+          scene, iv, kMapRect, inset_,
+          [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, iv); }, {}, false,
+          &disc);
     }
     // Composite: the periphery blurred at its own resolution (no pass at
     // blur 0), upscaled over the screen (one fetch per pixel), then the inset

@@ -562,19 +562,39 @@ TEST_F(Techniques, InsetCountsAndFovea) {
   FrameStats s;
   const Image img = run(*t, *scene, gaze, &s);
   ASSERT_EQ(s.parts.size(), 2u);
-  EXPECT_EQ(s.parts[0].pixels, double(kW / 2) * (kH / 2));
-  // The inset: the latency-aware diameter (eq. 1), clipped to the screen.
+  // The inset: the latency-aware diameter (eq. 1), here wholly on the screen.
   double diameter = 0;
   for (const auto& [k, v] : t->parameters()) {
     if (k == "diameter_px") diameter = v;
   }
-  const double side_x =
-      std::min(double(kW), std::ceil(gaze.x + diameter / 2)) - std::floor(gaze.x - diameter / 2);
-  const double side_y = std::min(double(kH), std::ceil(kH - gaze.y + diameter / 2)) -
-                        std::max(0.0, std::floor(kH - gaze.y - diameter / 2));
-  EXPECT_EQ(s.parts[1].pixels, side_x * side_y);
-  const double inner = 0.5 * diameter * (1 - 0.2) - 1;
+  const double r = diameter / 2, pi = std::numbers::pi;
+  ASSERT_LT(r, kH / 2.0);
+  // It shades the disc the composite shows, in bands of rows with a pixel
+  // around it: not its square's corners.
+  EXPECT_GE(s.parts[1].pixels, pi * r * r);
+  EXPECT_LE(s.parts[1].pixels, 1.15 * pi * r * r);
+  EXPECT_LT(s.parts[1].pixels, 0.9 * 4 * r * r);
+  // The quarter-resolution periphery leaves out the disc where the inset is
+  // opaque (its radius less the border, 0.1 of it), less what the upscale
+  // reads into it (3 of its texels); drawn in bands of 4 rows, merged where
+  // that shades little more, it leaves out a little less.
+  const double hole = 0.5 * r * (1 - 0.1) - 3;
+  const double quarter = double(kW / 2) * (kH / 2);
+  EXPECT_GE(s.parts[0].pixels, quarter - pi * hole * hole);
+  EXPECT_LE(s.parts[0].pixels, quarter - pi * (hole - 8) * (hole - 8));
+  const double inner = r * (1 - 0.1) - 1;
   EXPECT_MATCHES_NATIVE(compare_disc(ref, img, gaze, inner));
+  // Nothing left out is shown: after a frame at another gaze (the hole and
+  // the disc elsewhere, their texels stale) the image is a fresh run's, with
+  // the blur pass (which reaches further into the hole) and without.
+  for (const auto& params : {std::map<std::string, double>{},
+                             std::map<std::string, double>{{"blur", 2.0}, {"border", 0.0}}}) {
+    auto moved = make_technique("inset", config(params));
+    (void)run(*moved, *scene, gaze);
+    const Image after = run(*moved, *scene, {200, 150});
+    auto fresh = make_technique("inset", config(params));
+    EXPECT_EQ(compare_all(run(*fresh, *scene, {200, 150}), after).max, 0.0) << params.size();
+  }
 }
 
 TEST_F(Techniques, InsetAtFullScaleIsNative) {
