@@ -130,9 +130,9 @@ RateApi checked_api(const RatesArgs& a) {
     throw Error("--max-saccade: expected 0..1000 degrees per second, got " +
                 format_fixed(a.max_saccade, 3));
   }
-  if (std::find(kShadingRateTiles.begin(), kShadingRateTiles.end(), a.tile) ==
-      kShadingRateTiles.end()) {
-    throw Error("--tile: expected 8, 16 or 32 pixels, got " + std::to_string(a.tile));
+  if (!is_shading_rate_tile(a.tile)) {
+    throw Error("--tile: expected " + shading_rate_tiles_text() + " pixels, got " +
+                std::to_string(a.tile));
   }
   try {
     return parse_rate_api(a.api);
@@ -298,7 +298,8 @@ void register_rates(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--gaze", a->gaze,
                   "Gaze point X,Y in pixels or normalized (0.5,0.5); default centre");
-  sub->add_option("--tile", a->tile, "Tile size in pixels: 8, 16 or 32")->capture_default_str();
+  sub->add_option("--tile", a->tile, "Tile size in pixels: " + shading_rate_tiles_text())
+      ->capture_default_str();
   sub->add_option("--api", a->api,
                   "Encoding: vulkan (attachment texels), d3d12 (D3D12_SHADING_RATE) or gl-nv "
                   "(palette indices, rows bottom-to-top)")

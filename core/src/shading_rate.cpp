@@ -144,10 +144,24 @@ const std::array<unsigned, 7>& gl_nv_palette() {
   return palette;
 }
 
+bool is_shading_rate_tile(int px) {
+  return std::find(kShadingRateTiles.begin(), kShadingRateTiles.end(), px) !=
+         kShadingRateTiles.end();
+}
+
+std::string shading_rate_tiles_text() {
+  std::string out;
+  for (size_t i = 0; i < kShadingRateTiles.size(); ++i) {
+    if (i > 0) out += i + 1 == kShadingRateTiles.size() ? " or " : ", ";
+    out += std::to_string(kShadingRateTiles[i]);
+  }
+  return out;
+}
+
 void ShadingRateOptions::validate() const {
-  if (std::find(kShadingRateTiles.begin(), kShadingRateTiles.end(), tile_px) ==
-      kShadingRateTiles.end()) {
-    throw Error("tile: expected 8, 16 or 32 pixels, got " + std::to_string(tile_px));
+  if (!is_shading_rate_tile(tile_px)) {
+    throw Error("tile: expected " + shading_rate_tiles_text() + " pixels, got " +
+                std::to_string(tile_px));
   }
   if (!std::isfinite(latency_travel_deg) || latency_travel_deg < 0.0) {
     throw Error("latency travel: expected a finite number of degrees >= 0, got " +

@@ -70,7 +70,7 @@ bad() {  # bad EXPECTED-RC TEXT ARGS...: fails with that code, names TEXT, write
   err=$("$FOVEATE" rates "$@" 2>&1); rc=$?
   check "bad '$*' exits $want naming $text" '[[ $rc -eq $want && "$err" == *"$text"* && ! -e "$tmp/bad.bin" ]]'
 }
-bad 1 "--tile" --tile 12 --out "$tmp/bad.bin"
+bad 1 "--tile: expected 8, 16 or 32 pixels, got 12" --tile 12 --out "$tmp/bad.bin"
 bad 1 "--api" --api metal --out "$tmp/bad.bin"
 bad 1 "--out" --out "$tmp/bad.txt"
 bad 1 "1x1" --rates 2x2,4x4 --out "$tmp/bad.bin"

@@ -302,7 +302,9 @@ TEST(ShadingRate, BadInputIsRefused) {
   };
   ShadingRateOptions o;
   o.tile_px = 12;
-  fails(o, "tile");
+  fails(o, "tile: expected 8, 16 or 32 pixels, got 12");
+  EXPECT_TRUE(is_shading_rate_tile(32));
+  EXPECT_FALSE(is_shading_rate_tile(4));
   o = {};
   o.latency_travel_deg = -1.0;
   fails(o, "latency travel");

@@ -85,6 +85,10 @@ const std::array<unsigned, 7>& gl_nv_palette();
 /// The tile sizes shading-rate images come in (Vulkan's and D3D12's
 /// attachment texel sizes in common use; GL_NV_shading_rate_image's is 16).
 inline constexpr std::array<int, 3> kShadingRateTiles = {8, 16, 32};
+/// Whether `px` is one of kShadingRateTiles.
+bool is_shading_rate_tile(int px);
+/// kShadingRateTiles in words, for help and errors: "8, 16 or 32".
+std::string shading_rate_tiles_text();
 
 struct ShadingRateOptions {
   int tile_px = 16;                 ///< one of kShadingRateTiles
