@@ -131,7 +131,7 @@ class Search {
   std::vector<Candidate> stage2() const {
     std::vector<Candidate> c;
     for (const std::string& t : techniques_) {
-      const TunePoint* best = best_point(scene_, t);
+      const TunePoint* best = best_point(scene_, t, 1);
       if (!best) continue;
       for (const Axis& a : axes_of(t)) {
         if (a.key == kPlanMarginKey) {
@@ -161,7 +161,7 @@ class Search {
   std::vector<Candidate> stage3() const {
     std::vector<Candidate> c;
     for (const std::string& t : techniques_) {
-      const TunePoint* best = best_point(scene_, t);
+      const TunePoint* best = best_point(scene_, t, 1);
       if (!best) continue;
       std::vector<TunePoint> stage2;
       for (const TunePoint& p : out_.points) {
@@ -220,20 +220,11 @@ class Search {
     });
   }
 
-  // The fastest point within the bound, else the one closest to it.
-  const TunePoint* best_point(const std::string& scene, const std::string& technique) const {
-    const TunePoint* best = nullptr;
-    for (const TunePoint& p : out_.points) {
-      if (p.scene != scene || p.technique != technique) continue;
-      if (!best) {
-        best = &p;
-      } else if (p.within_bound != best->within_bound) {
-        if (p.within_bound) best = &p;
-      } else if (p.within_bound ? p.speedup > best->speedup : p.below_native < best->below_native) {
-        best = &p;
-      }
-    }
-    return best;
+  // The fastest point within the bound, else the one closest to it (of
+  // `stage` only, when above 0).
+  const TunePoint* best_point(const std::string& scene, const std::string& technique,
+                              int stage = 0) const {
+    return tune_best_point(out_.points, scene, technique, stage);
   }
 
   // Benchmarks the candidates on the current scene; `again`: those already

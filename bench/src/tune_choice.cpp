@@ -96,6 +96,22 @@ std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string&
 
 }  // namespace
 
+const TunePoint* tune_best_point(const std::vector<TunePoint>& points, const std::string& scene,
+                                 const std::string& technique, int stage) {
+  const TunePoint* best = nullptr;
+  for (const TunePoint& p : points) {
+    if (p.scene != scene || p.technique != technique || (stage > 0 && p.stage != stage)) continue;
+    if (!best) {
+      best = &p;
+    } else if (p.within_bound != best->within_bound) {
+      if (p.within_bound) best = &p;
+    } else if (p.within_bound ? p.speedup > best->speedup : p.below_native < best->below_native) {
+      best = &p;
+    }
+  }
+  return best;
+}
+
 std::vector<Params> tune_combinations(
     const std::vector<TunePoint>& stage2, const TunePoint& best,
     const std::vector<std::pair<std::string, std::vector<double>>>& axes) {

@@ -350,6 +350,61 @@ TEST(Tune, CombinesTheChangesThatPaidAndSpendsQualityOnCoarserPlans) {
   EXPECT_TRUE(tune_combinations({point({{"margin", 1.0}}, 1.2, 9.70)}, lowest, axes).empty());
 }
 
+// tune's stages 2 and 3 start from stage 1's best point, even where a
+// change of stage 2 is faster within the bound (no GL: points written by
+// hand, from inset's run of 2026-11-27 on guenter). Stage 3 combined the
+// changes on the faster point before, of which the JOD-raising change
+// (scale 0.65) was no single change, so it was never tried at coarser plans.
+TEST(Tune, StageThreeCombinesOnThePointStageTwoChanged) {
+  const auto point = [](std::map<std::string, double> params, int stage, double speedup,
+                        double jod) {
+    TunePoint p;
+    p.scene = "guenter";
+    p.technique = "inset";
+    p.params = std::move(params);
+    p.stage = stage;
+    p.speedup = speedup;
+    p.jod = jod;
+    p.within_bound = jod >= 9.541;
+    p.below_native = 9.791 - jod;
+    return p;
+  };
+  std::vector<TunePoint> points = {point({{"margin", 1.5}}, 1, 2.02, 9.527),
+                                   point({{"margin", 2.0}}, 1, 1.71, 9.589),
+                                   point({{"margin", 3.0}}, 1, 1.18, 9.68),
+                                   point({{"margin", 2.0}, {"scale", 0.65}}, 2, 1.52, 9.716),
+                                   point({{"margin", 2.0}, {"border", 0.1}}, 2, 1.78, 9.582)};
+  // Another scene's and another technique's points do not count.
+  points.push_back(point({{"margin", 1.0}}, 1, 3.0, 9.7));
+  points.back().scene = "raymarch";
+  points.push_back(point({{"margin", 1.0}}, 1, 3.0, 9.7));
+  points.back().technique = "vrs";
+  const TunePoint* any = tune_best_point(points, "guenter", "inset");
+  const TunePoint* base = tune_best_point(points, "guenter", "inset", 1);
+  ASSERT_TRUE(any && base);
+  EXPECT_EQ(any->params.at("border"), 0.1);  // the fastest within the bound
+  EXPECT_EQ(base->params, (std::map<std::string, double>{{"margin", 2.0}}));
+  std::vector<TunePoint> stage2;
+  for (const TunePoint& p : points) {
+    if (p.stage == 2) stage2.push_back(p);
+  }
+  const std::vector<std::pair<std::string, std::vector<double>>> axes = {
+      {"margin", {1.0, 1.25, 1.5, 2.0, 2.5, 3.0}},
+      {"scale", {0.35, 0.5, 0.65}},
+      {"border", {0.1, 0.2, 0.4}}};
+  using P = std::map<std::string, double>;
+  EXPECT_EQ(
+      tune_combinations(stage2, *base, axes),
+      (std::vector<P>{{{"margin", 1.5}, {"scale", 0.65}}, {{"margin", 1.25}, {"scale", 0.65}}}));
+  // From the faster point nothing is a single change: nothing to try.
+  EXPECT_TRUE(tune_combinations(stage2, *any, axes).empty());
+  // No point of the stage asked for: none.
+  EXPECT_EQ(tune_best_point(points, "guenter", "inset", 3), nullptr);
+  // None within the bound: the closest to it.
+  for (TunePoint& p : points) p.within_bound = false;
+  EXPECT_EQ(tune_best_point(points, "guenter", "inset", 1)->params.at("margin"), 3.0);
+}
+
 // tune's stage 5 (no GL: points written by hand): the settings timed again
 // side by side are the best one and the next within the bound on every scene
 // whose speed (geometric mean over the scenes) is at least 0.85 of the

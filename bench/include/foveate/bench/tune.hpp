@@ -8,10 +8,11 @@
 // native (timed in the same run, interleaved) and share the reference frames:
 //  1. every tuned value of the planning margin, the other parameters at their
 //     defaults;
-//  2. from each technique's best point (the fastest within the bound, else the
-//     closest to it), every other tuned parameter's values one at a time, and
-//     the margin one step either side;
-//  3. the changes of stage 2 that kept the bound and gained speed, combined;
+//  2. from each technique's best point of stage 1 (the fastest within the
+//     bound, else the closest to it), every other tuned parameter's values one
+//     at a time, and the margin one step either side;
+//  3. on that same point, the changes of stage 2 that kept the bound and
+//     gained speed, combined;
 //     and those that raised JOD, combined, at the two margins below the best
 //     point's (quality one parameter buys can pay for a coarser plan);
 //  4. (several scenes) each scene's best settings on the other scenes;
@@ -101,10 +102,17 @@ TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks =
 /// beats in both speed and JOD, by speedup.
 std::vector<TunePoint> tune_front(const TuneResult& r, const std::string& scene,
                                   const std::string& technique);
-/// Stage 3 of the search for one technique on one scene, from its best point
-/// and its stage-2 points (one tuned parameter changed at a time from the
-/// best): the changes that kept the bound and gained speed, together (when
-/// there are two or more), and the changes that raised JOD by more than 0.02,
+/// The best point of one technique on one scene: the fastest within the
+/// bound, else the one closest to it; of stage `stage` only when it is above
+/// 0. Stages 2 and 3 start from stage 1's: stage 2 changes one parameter of
+/// it at a time, so stage 3 combines those changes on it, even where one of
+/// them is now the faster point (they are not single changes of that one).
+const TunePoint* tune_best_point(const std::vector<TunePoint>& points, const std::string& scene,
+                                 const std::string& technique, int stage = 0);
+/// Stage 3 of the search for one technique on one scene, from the point stage
+/// 2 started from (tune_best_point of stage 1) and its stage-2 points (one
+/// tuned parameter changed at a time from it): the changes that kept the bound and gained speed,
+/// together (when there are two or more), and the changes that raised JOD by more than 0.02,
 /// together at the two margins below the best point's (quality one parameter
 /// buys can pay for a coarser plan). `axes`: each tuned key and its values,
 /// the margin's ascending.
