@@ -1,6 +1,6 @@
 // inset: Swafford, Cosker, Mitchell, "Latency Aware Foveated Rendering in
-// Unreal Engine 4" (2015). The periphery is rendered at a quarter of the
-// pixels (half per axis) and upscaled with a slight blur; a full-resolution
+// Unreal Engine 4" (2015). The periphery is rendered at reduced resolution
+// (half per axis in the paper) and upscaled with a slight blur; a full-resolution
 // foveal inset, whose diameter follows the latency-aware formula (eq. 1), is
 // blended over it with a vignette mask.
 #include <cmath>
@@ -138,7 +138,7 @@ class Inset final : public Technique {
     const LatencyAwareFovea f = fovea(gaze);
     const double half = 0.5 * f.diameter_px(display_);
     return {{OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half, 0, 1, 0.1f, 0.1f,
-             "full-resolution inset: edge (quarter-resolution periphery outside)"},
+             "full-resolution inset: edge (reduced-resolution periphery outside)"},
             {OverlayShape::Kind::Circle, gaze.gaze_px.x, gaze.gaze_px.y, half - f.blend_border_px,
              0, 0.1f, 0.9f, 0.2f, "inset blends into the periphery from this ring (vignette)"},
             gaze_dot(gaze)};
@@ -163,14 +163,16 @@ TechniqueInfo inset_info() {
   TechniqueInfo t;
   t.name = "inset";
   t.summary =
-      "Quarter-resolution periphery upscaled with a slight blur, and a full-resolution foveal "
-      "inset sized by the latency-aware formula, blended with a vignette.";
+      "Reduced-resolution periphery (a quarter of the pixels in the paper), upscaled, and a "
+      "full-resolution foveal inset sized by the latency-aware formula, blended with a vignette.";
   t.source = "Swafford, Cosker, Mitchell, Latency Aware Foveated Rendering in UE4, 2015";
   t.params = {
-      plan_margin_param(2.0),
-      tuned(param("scale", "periphery resolution per axis (0.5 = a quarter of the pixels)", "",
-                  ParamType::Real, 0.05, 1.0, 0.5),
-            {0.35, 0.5, 0.65}),
+      plan_margin_param(1.0),
+      tuned(param("scale",
+                  "periphery resolution per axis (the paper's 0.5 = a quarter of the pixels; the "
+                  "default is tune's, docs/fidelity.md)",
+                  "", ParamType::Real, 0.05, 1.0, 0.55),
+            {0.35, 0.5, 0.55, 0.6, 0.65}),
       // The fovea the inset must cover: where the acuity model first accepts
       // the periphery's sampling factor 1/scale (w(e) = w* / scale), both sides.
       {"fovea_deg", "angle the fovea subtends (alpha of eq. 1); default from the acuity model",
@@ -181,7 +183,7 @@ TechniqueInfo inset_info() {
          return std::clamp(2.0 * e, 1.0, 60.0);
        }},
       tuned(param("border", "vignette blend border as a fraction of the foveal radius", "",
-                  ParamType::Real, 0.0, 1.0, 0.1),
+                  ParamType::Real, 0.0, 1.0, 0.4),
             {0.1, 0.2, 0.4}),
       param("latency_ms",
             "worst-case total latency L_tot (the measured gaze latency is used if larger)", "ms",

@@ -557,7 +557,9 @@ TEST_F(Techniques, CheckerboardReconstructsBlackPixelsAsValid) {
 TEST_F(Techniques, InsetCountsAndFovea) {
   auto scene = load_scene("detail");
   const Image ref = native(*scene);
-  auto t = make_technique("inset", config());
+  // The paper's quarter-resolution periphery (half per axis).
+  const std::map<std::string, double> half{{"scale", 0.5}, {"border", 0.1}};
+  auto t = make_technique("inset", config(half));
   const Vec2d gaze{320, 180};
   FrameStats s;
   const Image img = run(*t, *scene, gaze, &s);
