@@ -142,7 +142,7 @@ std::vector<double> candidate_radii(const Geometry& g, const PlannerOptions& opt
 std::vector<double> first_radii(const Geometry& g, const std::vector<double>& grid,
                                 const AcuityModel& acuity, const PlannerOptions& opt) {
   if (!opt.fixed_s2) return grid;
-  if (opt.layers < 3) throw Error("fixed s2: needs at least 3 layers");
+  if (opt.layers < 2) throw Error("fixed s2: needs at least 2 layers");
   const double s2 = *opt.fixed_s2;
   if (!(s2 >= 1.0)) throw Error("fixed s2: must be >= 1");
   const double e1 = acuity.eccentricity_for_mar(s2 * g.sharp);

@@ -31,6 +31,7 @@
 
 #include "../registry/registry.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate::tech {
 
@@ -68,7 +69,13 @@ Layered::Layered(const TechniqueConfig& c, const ParamValues& v)
   // planner weighs their pixels by the area that adds.
   po.weights.assign(static_cast<size_t>(po.layers), (1 + transition_) * (1 + transition_));
   po.weights.back() = 1.0;
-  plan_ = plan_layers(display_, c.acuity, po);
+  if (v.real("s2") > 0.0) po.fixed_s2 = v.real("s2");
+  try {
+    plan_ = plan_layers(display_, c.acuity, po);
+  } catch (const Error& e) {
+    if (!po.fixed_s2) throw;
+    throw Error("layered parameter s2=" + format_number(*po.fixed_s2) + ": " + e.what());
+  }
   if (msaa_ > 1) check_msaa(msaa_);
 }
 
@@ -314,6 +321,11 @@ TechniqueInfo layered_info() {
       tuned(param("layers", "number of layers n (1 = native)", "", ParamType::Integer, 1,
                   layered::kMaxLayers, 2),
             {2, 3, 4}),
+      param("s2",
+            "sampling factor of the second layer, fixed (the paper's 3* plan fixes it at 2): the "
+            "first layer then ends where the planned MAR reaches it, and the optimiser places any "
+            "further layers; 0 = chosen by the optimiser with the rest",
+            "", ParamType::Real, 0.0, 8.0, 0.0),
       tuned(
           param(
               "transition",
@@ -357,6 +369,14 @@ TechniqueInfo layered_info() {
             "normals by more than the MAR hides",
             "", ParamType::Integer, 0, 2, 0),
       param("grid_step", "planner search step", "deg", ParamType::Real, 0.01, 1.0, 0.05),
+  };
+  t.check = [](const ParamValues& v) {
+    const double s2 = v.real("s2");
+    if (s2 > 0.0 && s2 < 1.0)
+      throw Error("layered parameter s2 must be 0 (the optimiser's) or at least 1, got " +
+                  format_number(s2));
+    if (s2 > 0.0 && v.integer("layers") < 2)
+      throw Error("layered parameter s2 needs layers >= 2 (one layer is native)");
   };
   t.resolve_passes = {"temporal", "temporal_reproject", "copy",
                       "warp",     "composite",          "composite_one"};

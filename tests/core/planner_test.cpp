@@ -101,6 +101,16 @@ TEST(Planner, FixedS2) {
   EXPECT_NEAR(p.layers[0].radius_deg, (2 * kDesk.sharpness_deg() - a.w0_deg) / a.slope, 1e-9);
   // Restricting a variable cannot beat the free optimum.
   EXPECT_GE(p.total_pixels, plan_layers(kDesk, a).total_pixels * 0.999);
+  // Two layers: s2 places the only radius, where w(e) = 2.5 w* (1080p, preset
+  // A: (2.5 x 0.0516 - 0.0208) / 0.0275 = 3.93 deg), and the outer layer
+  // samples at 2.5 pixels there.
+  o.layers = 2;
+  o.fixed_s2 = 2.5;
+  const LayerPlan two = plan_layers(kDesk, a, o);
+  ASSERT_EQ(two.layers.size(), 2u);
+  EXPECT_NEAR(two.layers[0].radius_deg, (2.5 * kDesk.sharpness_deg() - a.w0_deg) / a.slope, 1e-9);
+  EXPECT_NEAR(two.layers[0].radius_deg, 3.93, 0.01);
+  EXPECT_NEAR(two.layers[1].sampling_factor, 2.5, 1e-9);
 }
 
 TEST(Planner, WeightsShiftTheOptimum) {

@@ -70,14 +70,29 @@ TEST(Parameters, ParametersResolveFromTheirDeclarations) {
   const std::string unknown = error_of([&] {
     resolve_parameters(layered, config(640, 360, {{"sigma", 2}}));
   });
-  EXPECT_NE(unknown.find("layered has no parameter 'sigma' (it has: margin, layers, transition"),
-            std::string::npos)
+  EXPECT_NE(
+      unknown.find("layered has no parameter 'sigma' (it has: margin, layers, s2, transition"),
+      std::string::npos)
       << unknown;
   const std::string cross = error_of([&] {
     resolve_parameters(technique_info("lodmask"),
                        config(640, 360, {{"inner_deg", 10}, {"outer_deg", 5}}));
   });
   EXPECT_NE(cross.find("outer_deg must be >= inner_deg"), std::string::npos) << cross;
+}
+
+TEST(Parameters, LayeredSecondLayersFactorIsTheOptimisersOrAtLeastOne) {
+  const TechniqueInfo& layered = technique_info("layered");
+  EXPECT_EQ(resolve_parameters(layered, config(1920, 1080)).real("s2"), 0.0);
+  EXPECT_EQ(resolve_parameters(layered, config(640, 360, {{"s2", 2}})).real("s2"), 2.0);
+  const std::string below = error_of([&] {
+    resolve_parameters(layered, config(640, 360, {{"s2", 0.5}}));
+  });
+  EXPECT_EQ(below, "layered parameter s2 must be 0 (the optimiser's) or at least 1, got 0.5");
+  const std::string one = error_of([&] {
+    resolve_parameters(layered, config(640, 360, {{"s2", 2}, {"layers", 1}}));
+  });
+  EXPECT_EQ(one, "layered parameter s2 needs layers >= 2 (one layer is native)");
 }
 
 TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {

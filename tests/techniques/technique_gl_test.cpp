@@ -199,6 +199,27 @@ TEST_F(Techniques, LayeredFoveaMatchesNativeAndCountsMatchThePlan) {
   EXPECT_LT(all.mean, 60.0);
 }
 
+TEST_F(Techniques, LayeredWithAFixedSecondFactorEndsItsFoveaWhereTheMarReachesIt) {
+  // s2 (the paper's 3* fixes it at 2): the first layer ends where the MAR
+  // reaches s2 display pixels, w(e1) = s2 w*, and the second samples at s2.
+  auto t = make_technique("layered", config({{"s2", 2.0}}));
+  std::map<std::string, double> p;
+  for (const auto& [k, v] : t->parameters()) p[k] = v;
+  const AcuityModel a = AcuityModel::preset("A");
+  const double w_star = config().display.sharpness_deg();
+  EXPECT_DOUBLE_EQ(p.at("layer2.sampling_factor"), 2.0);
+  EXPECT_NEAR(p.at("layer1.radius_deg"), (2.0 * w_star - a.w0_deg) / a.slope, 1e-9);
+  // A factor the MAR never reaches on this display is refused, by name.
+  try {
+    (void)make_technique("layered", config({{"s2", 8.0}}));
+    ADD_FAILURE() << "s2 = 8 accepted at 640x360";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("layered parameter s2=8: "), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("outside the display"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(Techniques, LayeredNeverShowsAnUnshadedHoleWhenTheGazeMoves) {
   // A layer rendered together with the one inside it leaves out the disc
   // that layer covers. Where a stale layer is shown as rendered (a still
