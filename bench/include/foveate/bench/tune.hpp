@@ -111,9 +111,10 @@ const TunePoint* tune_best_point(const std::vector<TunePoint>& points, const std
                                  const std::string& technique, int stage = 0);
 /// Stage 3 of the search for one technique on one scene, from the point stage
 /// 2 started from (tune_best_point of stage 1) and its stage-2 points (one
-/// tuned parameter changed at a time from it): the changes that kept the bound and gained speed,
-/// together (when there are two or more), and the changes that raised JOD by more than 0.02,
-/// together at the two margins below the best point's (quality one parameter
+/// tuned parameter changed at a time from it): the changes that kept the
+/// bound and gained speed, together (when there are two or more), and the
+/// changes that raised JOD by more than 0.02, together at the two margins
+/// below that point's (quality one parameter
 /// buys can pay for a coarser plan). `axes`: each tuned key and its values,
 /// the margin's ascending.
 std::vector<std::map<std::string, double>> tune_combinations(
