@@ -126,8 +126,9 @@ void register_tune(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "tune",
       "Search every technique's tuned parameters (its planning margin first) for the fastest "
-      "setting whose FovVideoVDP JOD stays within --bound of native's on every scene; writes "
-      "params.json for --params-file");
+      "setting whose FovVideoVDP JOD stays within --bound of native's on every scene (settings "
+      "within 5 % of its speed tie: the most JOD, then the fewest pixels); writes params.json "
+      "for --params-file");
   sub->add_option("--scenes", a->scenes, "Comma-separated scenes to tune on")
       ->capture_default_str();
   sub->add_option("--techniques", a->techniques,

@@ -24,6 +24,15 @@ namespace {
 constexpr double kJodRaise = 0.02;
 constexpr std::ptrdiff_t kLowerMargins = 2;
 
+// The choice: settings within the bound whose speed is within kSpeedTie of
+// the fastest one's tie with it (timings of one setting differ by about that
+// much between runs); among them the one that keeps the most JOD (its worst
+// distance below native, within kJodTie of the least), then the one that
+// shades the fewest pixels (within kPixelTie), then the fastest.
+constexpr double kSpeedTie = 0.05;
+constexpr double kJodTie = 0.01;
+constexpr double kPixelTie = 0.005;
+
 // Stage 5: settings within this share of the fastest one's speed are timed
 // again together, at most kContenders of them per technique.
 constexpr double kContenderShare = 0.85;
@@ -55,12 +64,13 @@ void take(Params& to, const Params& from, const std::string& key) {
 
 // A setting of a technique judged on every scene it was run on: whether it
 // is within the bound on each, the geometric mean of its speedups, its worst
-// distance below native.
+// distance below native, the mean of its pixel ratios.
 struct RankedSetting {
   Params params;
   bool within = false;
   double speed = 0.0;
   double worst = 0.0;
+  double pixels = 0.0;
 };
 
 // The technique's settings judged on every scene it ran on, best first: those
@@ -77,12 +87,13 @@ std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string&
   std::vector<RankedSetting> out;
   for (const auto& [params, by_scene] : settings) {
     if (by_scene.size() != scenes.size()) continue;  // not judged on every scene
-    RankedSetting s{params, true, 0.0, -std::numeric_limits<double>::infinity()};
+    RankedSetting s{params, true, 0.0, -std::numeric_limits<double>::infinity(), 0.0};
     double log_speed = 0.0;
     for (const auto& [scene, p] : by_scene) {
       s.within = s.within && p->within_bound;
       log_speed += std::log(p->speedup);
       s.worst = std::max(s.worst, p->below_native);
+      s.pixels += p->pixel_ratio / static_cast<double>(by_scene.size());
     }
     s.speed = std::exp(log_speed / static_cast<double>(by_scene.size()));
     out.push_back(s);
@@ -92,6 +103,24 @@ std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string&
     return a.within ? a.speed > b.speed : a.worst < b.worst;
   });
   return out;
+}
+
+// Among the settings within the bound that tie with the fastest in speed
+// (ranked: rank_settings' order, the fastest first and within the bound):
+// the most JOD, then the fewest pixels, then the fastest.
+const RankedSetting& tie_break(const std::vector<RankedSetting>& ranked) {
+  std::vector<const RankedSetting*> tied;
+  for (const RankedSetting& s : ranked) {
+    if (s.within && s.speed >= (1.0 - kSpeedTie) * ranked.front().speed) tied.push_back(&s);
+  }
+  double least_worst = std::numeric_limits<double>::infinity();
+  for (const RankedSetting* s : tied) least_worst = std::min(least_worst, s->worst);
+  std::erase_if(tied, [&](const RankedSetting* s) { return s->worst > least_worst + kJodTie; });
+  double fewest = std::numeric_limits<double>::infinity();
+  for (const RankedSetting* s : tied) fewest = std::min(fewest, s->pixels);
+  std::erase_if(tied,
+                [&](const RankedSetting* s) { return s->pixels > fewest * (1.0 + kPixelTie); });
+  return *tied.front();  // still in order of speed
 }
 
 }  // namespace
@@ -195,6 +224,7 @@ void choose_parameters(TuneResult& r) {
       r.verdict[t] = "no setting was judged on every scene";
       continue;
     }
+    if (best->within) best = &tie_break(ranked);
     r.chosen[t] = best->params;
     r.verdict[t] =
         best->within

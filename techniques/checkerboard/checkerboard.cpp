@@ -429,7 +429,7 @@ TechniqueInfo checkerboard_info() {
               "to the reconstruction filter (and the filter widens towards each next region), as a "
               "fraction of r1's eccentricity (layered's blend band is 0.2 of e_i); regions 1-3 "
               "begin after it (1-pixel quads interpolate: the band is native)",
-              "", ParamType::Real, 0.0, 1.0, 0.2),
+              "", ParamType::Real, 0.0, 1.0, 0.1),
           {0.1, 0.2, 0.4}),
   };
   t.resolve_passes = {"reconstruct_down",        "reconstruct_h",     "reconstruct",

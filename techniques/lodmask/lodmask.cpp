@@ -195,7 +195,7 @@ TechniqueInfo lodmask_info() {
     return std::min(90.0, c.acuity.eccentricity_for_mar(error_px * c.display.sharpness_deg()));
   };
   t.params = {
-      plan_margin_param(3.0),
+      plan_margin_param(2.0),
       {"inner_deg",
        "radius of the full-detail circle; default where half a resolvable cycle covers the mid "
        "LOD's silhouette error (about 10 x native's half pixel: w(e) = 5 w*)",

@@ -411,7 +411,8 @@ TEST(Bench, ShardsMergedEqualOneRun) {
 }
 
 // tune: every margin evaluated beside native; the choice is the fastest
-// setting within the bound, its parameters a file that a benchmark takes.
+// setting within the bound (or one within 5 % of its speed that keeps more
+// JOD), its parameters a file that a benchmark takes.
 TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
   TuneOptions o;
   o.bench = tiny();
@@ -433,7 +434,9 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
     }
     EXPECT_EQ(margins, 6) << t;
     ASSERT_TRUE(r.chosen.count(t)) << t;
-    // No evaluated setting within the bound is faster than the chosen one.
+    // No evaluated setting within the bound is faster than the chosen one
+    // by more than the 5 % within which speeds tie (and JOD decides:
+    // Tune.SettingsWithinTheTimingNoiseAreChosenByJodThenPixels).
     const TunePoint* chosen = nullptr;
     for (const TunePoint& p : r.points) {
       if (p.technique == t && p.params == r.chosen.at(t)) chosen = &p;
@@ -442,7 +445,7 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
     if (chosen->within_bound) {
       for (const TunePoint& p : r.points) {
         if (p.technique == t && p.within_bound) {
-          EXPECT_LE(p.speedup, chosen->speedup);
+          EXPECT_LE(0.95 * p.speedup, chosen->speedup + 1e-12);
         }
       }
     }

@@ -100,7 +100,7 @@ TEST(Parameters, ThePlanningMarginIsEachTechniquesOwnUnlessGiven) {
   // `foveate tune` chose at 1920x1080 (docs/fidelity.md).
   const std::map<std::string, double> own = {
       {"layered", 1.5}, {"logpolar", 1.5}, {"checkerboard", 1.0}, {"vrs", 1.5},
-      {"inset", 1.0},   {"lodmask", 3.0},  {"marwarp", 2.0}};
+      {"inset", 1.0},   {"lodmask", 2.0},  {"marwarp", 2.0}};
   for (const auto& [name, margin] : own) {
     const TechniqueInfo& t = technique_info(name);
     ASSERT_FALSE(t.params.empty()) << name;

@@ -79,8 +79,11 @@ struct TuneResult {
   int warmup = 0;
   std::vector<TunePoint> points;
   /// Per technique: the fastest setting within the bound on every scene (by
-  /// the geometric mean of its speedups); a technique with none keeps its
-  /// closest setting and says so in `verdict`.
+  /// the geometric mean of its speedups), where settings within 5 % of its
+  /// speed tie with it: of those the one with the least worst distance below
+  /// native (within 0.01 JOD), then the fewest pixels, then the fastest. A
+  /// technique with none within the bound keeps its closest setting and says
+  /// so in `verdict`.
   TechniqueParams chosen;
   std::map<std::string, std::string> verdict;
   int merged_shards = 0;
