@@ -434,7 +434,8 @@ technique's layers or regions and the gaze.)");
         py::arg("shard") = "",
         R"(Runs `foveate tune` in this process: for every technique (techniques: a list,
 None = every one but native) the fastest setting of its tuned parameters whose
-FovVideoVDP JOD stays within `bound` of native's on every scene, judged against
+FovVideoVDP JOD stays within `bound` of native's on every scene (settings within
+5 % of its speed tie: the one with the most JOD, then the fewest pixels), judged against
 `reference` over `frames` frames of a moving camera. Returns tune.json as a
 dict: "points" (every candidate: scene, technique, params, stage, speedup, jod,
 below_native, pixel_ratio, within_bound), "chosen" (technique -> parameters),

@@ -24,12 +24,11 @@ namespace {
 constexpr double kJodRaise = 0.02;
 constexpr std::ptrdiff_t kLowerMargins = 2;
 
-// The choice: settings within the bound whose speed is within kSpeedTie of
-// the fastest one's tie with it (timings of one setting differ by about that
-// much between runs); among them the one that keeps the most JOD (its worst
-// distance below native, within kJodTie of the least), then the one that
-// shades the fewest pixels (within kPixelTie), then the fastest.
-constexpr double kSpeedTie = 0.05;
+// The choice: settings within the bound whose speed is within kTuneSpeedTie
+// of the fastest one's tie with it (tune.hpp); among them the one that keeps
+// the most JOD (its worst distance below native, within kJodTie of the
+// least), then the one that shades the fewest pixels (within kPixelTie),
+// then the fastest.
 constexpr double kJodTie = 0.01;
 constexpr double kPixelTie = 0.005;
 
@@ -111,7 +110,7 @@ std::vector<RankedSetting> rank_settings(const TuneResult& r, const std::string&
 const RankedSetting& tie_break(const std::vector<RankedSetting>& ranked) {
   std::vector<const RankedSetting*> tied;
   for (const RankedSetting& s : ranked) {
-    if (s.within && s.speed >= (1.0 - kSpeedTie) * ranked.front().speed) tied.push_back(&s);
+    if (s.within && s.speed >= (1.0 - kTuneSpeedTie) * ranked.front().speed) tied.push_back(&s);
   }
   double least_worst = std::numeric_limits<double>::infinity();
   for (const RankedSetting* s : tied) least_worst = std::min(least_worst, s->worst);

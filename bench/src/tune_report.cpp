@@ -207,7 +207,9 @@ std::string tune_markdown(const TuneResult& r) {
     s << " (every candidate judged on frames " << r.warmup << "-"
       << r.warmup + r.options.bench.frames - 1 << ", after " << r.warmup << " of warm-up)";
   }
-  s << ":\n\n| technique | chosen | verdict |\n|---|---|---|\n";
+  s << "; settings within " << format_number(100.0 * kTuneSpeedTie)
+    << " % of its speed tie with it, and of those the one with the most JOD, then the fewest "
+       "pixels, is chosen:\n\n| technique | chosen | verdict |\n|---|---|---|\n";
   for (const std::string& t : techniques_of(r)) {
     const auto c = r.chosen.find(t);
     s << "| " << t << " | " << (c == r.chosen.end() ? "-" : params_text(c->second)) << " | "

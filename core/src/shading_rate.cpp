@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 
 namespace foveate {
 
@@ -150,12 +151,9 @@ bool is_shading_rate_tile(int px) {
 }
 
 std::string shading_rate_tiles_text() {
-  std::string out;
-  for (size_t i = 0; i < kShadingRateTiles.size(); ++i) {
-    if (i > 0) out += i + 1 == kShadingRateTiles.size() ? " or " : ", ";
-    out += std::to_string(kShadingRateTiles[i]);
-  }
-  return out;
+  std::vector<std::string> tiles;
+  for (int t : kShadingRateTiles) tiles.push_back(std::to_string(t));
+  return format_alternatives(tiles);
 }
 
 void ShadingRateOptions::validate() const {

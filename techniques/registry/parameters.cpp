@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/parse.hpp"
 #include "foveate/techniques/technique.hpp"
 #include "param_number.hpp"
 
@@ -81,12 +82,9 @@ void check_value(const TechniqueInfo& info, const ParamDecl& p, double x) {
 }  // namespace
 
 std::string allowed_text(const ParamDecl& p) {
-  std::string values;
-  for (size_t i = 0; i < p.allowed.size(); ++i) {
-    const bool last = i + 1 == p.allowed.size();
-    values += (i == 0 ? "" : last ? " or " : ", ") + param_number(p.allowed[i]);
-  }
-  return values;
+  std::vector<std::string> values;
+  for (double v : p.allowed) values.push_back(param_number(v));
+  return format_alternatives(values);
 }
 
 void check_parameter(const TechniqueInfo& info, const std::string& key, double value) {

@@ -445,7 +445,7 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
     if (chosen->within_bound) {
       for (const TunePoint& p : r.points) {
         if (p.technique == t && p.within_bound) {
-          EXPECT_LE(0.95 * p.speedup, chosen->speedup + 1e-12);
+          EXPECT_LE((1.0 - kTuneSpeedTie) * p.speedup, chosen->speedup + 1e-12);
         }
       }
     }

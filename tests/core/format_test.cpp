@@ -26,6 +26,13 @@ TEST(FormatNumber, NoExponentNoTrailingZeros) {
   EXPECT_EQ(format_number(std::nan("")), "nan");
 }
 
+TEST(FormatAlternatives, AsASentenceListsThem) {
+  EXPECT_EQ(format_alternatives({}), "");
+  EXPECT_EQ(format_alternatives({"2"}), "2");
+  EXPECT_EQ(format_alternatives({"2", "4"}), "2 or 4");
+  EXPECT_EQ(format_alternatives({"8", "16", "32"}), "8, 16 or 32");
+}
+
 TEST(FormatNumber, ErrorsUseIt) {
   try {
     (void)AcuityModel::with_slope(2.0);

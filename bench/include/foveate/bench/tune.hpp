@@ -55,6 +55,11 @@ struct TuneOptions {
   static BenchOptions default_bench();
 };
 
+/// Settings within this share of the fastest one's speed tie with it in
+/// tune's choice (timings of one setting differ by about that much between
+/// runs): TuneResult::chosen.
+inline constexpr double kTuneSpeedTie = 0.05;
+
 /// One evaluated candidate on one scene.
 struct TunePoint {
   std::string scene;

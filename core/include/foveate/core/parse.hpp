@@ -13,6 +13,9 @@ namespace foveate {
 /// "2073600", 0.0275 -> "0.0275", 1.0 / 3 -> "0.333333"); "nan", "inf", "-inf".
 std::string format_number(double value, int max_decimals = 6);
 
+/// Alternatives as a sentence lists them: "a", "a or b", "a, b or c".
+std::string format_alternatives(const std::vector<std::string>& items);
+
 /// A number with exactly `digits` decimals ("%.*f"): table cells and reports.
 std::string format_fixed(double value, int digits);
 
