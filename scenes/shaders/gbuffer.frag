@@ -1,10 +1,15 @@
 // Fills the G-buffer: albedo and material id, normal and gloss, world position.
+// Compiled twice: with FOVEATE_ALBEDO_TEXTURE for textured materials, without
+// for the rest. A texture read under a uniform branch still costs llvmpipe
+// its fetch on every fragment (a third of a 1080p G-buffer pass on `guenter`,
+// whose materials have no texture); the two programs write the same values.
 in vec3 v_world;
 in vec3 v_normal;
-in vec2 v_uv;
 uniform vec4 u_base_color;
+#ifdef FOVEATE_ALBEDO_TEXTURE
+in vec2 v_uv;
 uniform sampler2D u_albedo_tex;
-uniform int u_has_tex;
+#endif
 uniform float u_material;
 uniform float u_gloss;
 uniform vec3 u_eye;  // world position of the eye
@@ -13,7 +18,9 @@ layout(location = 1) out vec4 o_normal;
 layout(location = 2) out vec4 o_position;
 void main() {
   vec3 c = u_base_color.rgb;
-  if (u_has_tex != 0) c *= pow(texture(u_albedo_tex, v_uv).rgb, vec3(2.2));  // sRGB texels to linear
+#ifdef FOVEATE_ALBEDO_TEXTURE
+  c *= pow(texture(u_albedo_tex, v_uv).rgb, vec3(2.2));  // sRGB texels to linear
+#endif
   // The normal of the side the eye sees, whatever the triangle's winding
   // (files disagree on it, and by gl_FrontFacing's word a clockwise mesh's
   // normals would point inward: lit from behind). The face's own normal

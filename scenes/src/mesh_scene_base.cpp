@@ -16,6 +16,11 @@ MeshSceneBase::MeshSceneBase(std::string name, std::string description, CameraPa
     : name_(std::move(name)), description_(std::move(description)), camera_(std::move(camera)) {
   gpu::ShaderCompiler c({embedded::scenes_shaders()});
   prepass_program_ = c.build("gbuffer.vert", "gbuffer.frag");
+  prepass_textured_ =
+      c.build({{GL_VERTEX_SHADER, {{"gbuffer.vert", {}}}},
+               {GL_FRAGMENT_SHADER,
+                {{"textured", "#define FOVEATE_ALBEDO_TEXTURE 1\n"}, {"gbuffer.frag", {}}}}},
+              "gbuffer.frag (textured)");
 }
 
 SceneInfo MeshSceneBase::info() const {
@@ -115,8 +120,6 @@ void MeshSceneBase::prepass_begin(const View& view) {
 }
 
 void MeshSceneBase::prepass_draw(const View& view, int lod) {
-  const gpu::Program& p = prepass_program_;
-  p.use();
   // Depth test and writes, colour on; the stencil test is the caller's
   // (lodmask draws under stencil masks). No face culling: files disagree on
   // winding.
@@ -125,11 +128,16 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_BLEND);
-  p.set_mat4("u_view_proj", glm::value_ptr(view_proj_));
-  p.set("u_albedo_tex", 0);
   const double focal = camera_focal_px();
   const glm::vec3 eye(eye_pose().position);
-  p.set("u_eye", eye.x, eye.y, eye.z);
+  for (const gpu::Program* q : {&prepass_textured_, &prepass_program_}) {
+    q->use();
+    q->set_mat4("u_view_proj", glm::value_ptr(view_proj_));
+    q->set("u_eye", eye.x, eye.y, eye.z);
+  }
+  prepass_textured_.use();
+  prepass_textured_.set("u_albedo_tex", 0);
+  const gpu::Program* in_use = &prepass_textured_;
   // A sub-rectangle of the prepass's view culls to its own frustum (the
   // geometry is still drawn with the prepass's projection).
   const bool same = view.x0 == last_view_.x0 && view.y0 == last_view_.y0 &&
@@ -169,13 +177,17 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     const GpuMesh::Lod& lv =
         m.lods[static_cast<size_t>(std::min<int>(l, static_cast<int>(m.lods.size()) - 1))];
     const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(item.model)));
+    const gpu::Program& p = item.material.texture ? prepass_textured_ : prepass_program_;
+    if (in_use != &p) {
+      p.use();
+      in_use = &p;
+    }
     p.set_mat4("u_model", glm::value_ptr(item.model));
     p.set_mat3("u_normal_matrix", glm::value_ptr(nm));
     p.set("u_base_color", item.material.base_color.r, item.material.base_color.g,
           item.material.base_color.b, 1.0f);
     p.set("u_gloss", item.material.gloss);
     p.set("u_material", item.material.id);
-    p.set("u_has_tex", item.material.texture ? 1 : 0);
     if (item.material.texture) item.material.texture->bind(0);
     glBindVertexArray(m.vao.id());
     glDrawElements(

@@ -83,7 +83,8 @@ class MeshSceneBase : public Scene {
   GBuffer& gbuffer_for(int width, int height, int samples);
   std::vector<std::unique_ptr<GBuffer>> gbuffers_;  ///< most recently used last
   GBuffer* gbuffer_ = nullptr;                      ///< of the last prepass
-  gpu::Program prepass_program_;
+  gpu::Program prepass_program_;                    ///< materials without a texture
+  gpu::Program prepass_textured_;                   ///< with an albedo texture
   View last_view_;
   gpu::FramebufferBinding outer_;  ///< what prepass_begin found
 };
