@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "foveate/core/error.hpp"
+#include "foveate/core/image.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
@@ -214,6 +215,50 @@ TEST_F(Meshes, EachSurfaceIsLitOnTheSideTheEyeSees) {
           worst = std::max(worst, std::abs(int(img[i].at(x, y)[c]) - int(img[0].at(x, y)[c])));
     EXPECT_LE(worst, 2) << paths[i];
   }
+}
+
+TEST_F(Meshes, AWhiteTextureChangesNothing) {
+  // The prepass has a program for materials with an albedo texture and one
+  // for those without (the texture read costs llvmpipe every fragment even
+  // under a branch not taken). A white texture multiplies the albedo by one,
+  // so the same cube with and without it must shade the same: the two
+  // programs write the same G-buffer.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("foveate-white-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  Image white(2, 2);
+  std::fill(white.rgba.begin(), white.rgba.end(), std::uint8_t{255});
+  write_png((dir / "white.png").string(), white);
+  const auto write = [&](const std::string& name, bool textured) {
+    std::ofstream m(dir / (name + ".mtl"));
+    m << "newmtl clay\nKd 0.8 0.5 0.3\nNs 10\n" << (textured ? "map_Kd white.png\n" : "");
+    std::ofstream f(dir / (name + ".obj"));
+    f << "mtllib " << name << ".mtl\n";
+    for (const char* v :
+         {"-1 -1 -1", "1 -1 -1", "1 1 -1", "-1 1 -1", "-1 -1 1", "1 -1 1", "1 1 1", "-1 1 1"})
+      f << "v " << v << '\n';
+    f << "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl clay\n";
+    for (const char* q : {"5/1 6/2 7/3 8/4", "2/1 1/2 4/3 3/4", "1/1 5/2 8/3 4/4",
+                          "6/1 2/2 3/3 7/4", "8/1 7/2 3/3 4/4", "1/1 2/2 6/3 5/4"})
+      f << "f " << q << '\n';
+    return (dir / (name + ".obj")).string();
+  };
+  const std::string paths[2] = {write("plain", false), write("white", true)};
+  Image img[2];
+  for (int i = 0; i < 2; ++i) {
+    auto scene = load_scene(paths[i]);
+    img[i] = shade(*scene, View::full(96, 72), 96, 72);
+  }
+  fs::remove_all(dir);
+  ASSERT_EQ(img[0].at(48, 36)[3], 255);  // the cube fills the centre
+  // The clay colour shows (red over green over blue), lit.
+  const uint8_t* c = img[0].at(48, 36);
+  EXPECT_GT(c[0], c[1]);
+  EXPECT_GT(c[1], c[2]);
+  int worst = 0;
+  for (size_t i = 0; i < img[0].rgba.size(); ++i)
+    worst = std::max(worst, std::abs(int(img[0].rgba[i]) - int(img[1].rgba[i])));
+  EXPECT_EQ(worst, 0) << "largest channel difference between the plain and the white-textured cube";
 }
 
 TEST_F(Meshes, BadModelFiles) {
