@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "foveate/gpu/profiler.hpp"
+
 namespace foveate::tech::vrs {
 
 namespace {
@@ -28,9 +30,38 @@ std::array<int, 2> class_size(ShadingRate r, int width, int height) {
 
 }  // namespace
 
+void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int height) {
+  if (!adapt_) return;
+  ContentAdapt& a = *adapt_;
+  const bool same = a.grid_x() == gx && a.grid_y() == gy && last_size_[0] == width &&
+                    last_size_[1] == height &&
+                    last_classes_.size() == static_cast<size_t>(gx) * size_t(gy);
+  if (!same) {
+    a.reset(gx, gy);
+  } else {
+    const gpu::ProfileScope timed("adapt");
+    std::vector<std::uint8_t> bytes;
+    for (int k = 1; k < kClasses; ++k) {
+      const bool refines = adapt_refines(k);
+      if (!refines && k != 3) continue;
+      if (std::find(last_classes_.begin(), last_classes_.end(), k) == last_classes_.end()) continue;
+      const gpu::RenderTarget& t = targets_[static_cast<size_t>(k)];
+      bytes.resize(static_cast<size_t>(t.width()) * size_t(t.height()) * 4);
+      glGetTextureImage(t.color().id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                        static_cast<GLsizei>(bytes.size()), bytes.data());
+      a.measure(bytes, t.width(), t.height(), kShadingRates[static_cast<size_t>(k)], last_classes_,
+                k, !refines, tile_, width, height);
+    }
+    a.settle();
+  }
+  a.refine(classes);
+}
+
 FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx,
                                 int gy, const gpu::RenderTarget& target) {
   const int W = target.width(), H = target.height();
+  last_classes_ = classes.of_tile;
+  last_size_ = {W, H};
   std::array<bool, kClasses> present{};
   for (int k = 0; k < kClasses; ++k) present[size_t(k)] = classes.count[size_t(k)] > 0;
   // The classes around each tile: its finest neighbour, and which classes

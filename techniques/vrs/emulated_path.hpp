@@ -15,15 +15,27 @@
 // drawn over the tiles that need it, so each output pixel runs one shader
 // once.
 #include <array>
+#include <optional>
 
+#include "content_adapt.hpp"
 #include "rate_classes.hpp"
 
 namespace foveate::tech::vrs {
 
 class EmulatedPath {
  public:
-  EmulatedPath(int tile, double edge_contrast, int edge_samples)
-      : tile_(tile), edge_(edge_contrast), edge_samples_(edge_samples) {}
+  /// `adapt` above 0: content-adaptive rates (ContentAdapt) with that share,
+  /// judged by `edge_contrast` (0.25 when edges are off).
+  EmulatedPath(int tile, double edge_contrast, int edge_samples, double adapt = 0.0)
+      : tile_(tile), edge_(edge_contrast), edge_samples_(edge_samples) {
+    if (adapt > 0.0) adapt_.emplace(edge_contrast > 0.0 ? edge_contrast : 0.25, adapt, kAdaptHold);
+  }
+  /// Frames a tile refined by `adapt` stays so without being found busy again.
+  static constexpr int kAdaptHold = 8;
+  /// With `adapt`: measures what the last frame shaded (its class targets,
+  /// read back: the frame is done by then) and refines this frame's
+  /// `classes` of a gx x gy grid for a width x height frame. A no-op without.
+  void adapt(TileClasses& classes, int gx, int gy, int width, int height);
   /// Renders with `classes` (merged: merge_small_classes) of a gx x gy grid.
   FrameStats render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx, int gy,
                     const gpu::RenderTarget& target);
@@ -61,6 +73,10 @@ class EmulatedPath {
   std::array<int, 2> grid_{};
   std::array<gpu::RenderTarget, kClasses> targets_;
   std::array<gpu::RenderTarget, kClasses> scratch_;  ///< supersample_edges' copies
+  std::optional<ContentAdapt> adapt_;
+  /// The last frame's classes (merged) and size, which its targets hold.
+  std::vector<std::uint8_t> last_classes_;
+  std::array<int, 2> last_size_{};
 };
 
 }  // namespace foveate::tech::vrs

@@ -32,7 +32,7 @@ class Vrs final : public Technique {
         hardware_(driver_rates(v) && (simulate_ || vrs::hardware_available(v.integer("tile")))),
         fixed_(v.boolean("fixed")),
         hardware_path_(tile_, simulate_),
-        emulated_path_(tile_, v.real("edge_contrast"), v.integer("edge_samples")) {
+        emulated_path_(tile_, v.real("edge_contrast"), v.integer("edge_samples"), v.real("adapt")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
     o.validate();
@@ -73,6 +73,7 @@ class Vrs final : public Technique {
     const ShadingRateImage& m = rates(gaze, target.width(), target.height());
     vrs::TileClasses classes = vrs::tile_classes(m);
     if (hardware_) return hardware_path_.render(kit_, scene, m, classes.of_tile, target);
+    emulated_path_.adapt(classes, m.tiles_x, m.tiles_y, target.width(), target.height());
     vrs::merge_small_classes(classes, min_class_);
     return emulated_path_.render(kit_, scene, classes, m.tiles_x, m.tiles_y, target);
   }
@@ -121,12 +122,13 @@ TechniqueInfo vrs_info() {
   TechniqueInfo t;
   t.name = "vrs";
   t.summary =
-      "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4): the driver's "
-      "(GL_NV_shading_rate_image) where it has it, else emulated: each rate class shaded at its "
-      "reduced resolution over its tiles, reconstructed in linear light.";
+      "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4), tiles of busy "
+      "content refined to 2x2 from the last frame: the driver's (GL_NV_shading_rate_image) where "
+      "it has it, else emulated: each rate class shaded at its reduced resolution over its "
+      "tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
-      plan_margin_param(1.5),
+      plan_margin_param(1.0),
       listed(tuned(param("tile", "shading-rate tile size", "px", ParamType::Integer, 8, 32, 16),
                    {8, 16}),
              {kShadingRateTiles.begin(), kShadingRateTiles.end()}),
@@ -146,6 +148,15 @@ TechniqueInfo vrs_info() {
       "in the coarse classes, the emulation's only: above 0 vrs takes the emulation on every "
       "driver"));
   t.params.push_back(edge_samples_param(2.0));
+  t.params.push_back(tuned(
+      param("adapt",
+            "content-adaptive rates, the emulation's only: a tile the model gives a rate of 4 in "
+            "either axis is shaded at 2x2 while at least this share of its last frame's samples, "
+            "4 pixels apart, differ from their neighbour by more than edge_contrast (0.25 when "
+            "edges are off), and for 8 frames after; small objects and fine texture blur at a "
+            "4-pixel spacing where smooth content does not (0 = off)",
+            "", ParamType::Real, 0.0, 1.0, 0.25),
+      {0.0, 0.25, 0.5}));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

@@ -411,10 +411,13 @@ TEST_F(Fidelity, VrsFoveaIsNativeAndThePeripheryKeepsItsLuminance) {
     const Image ref = native(*scene, W, H);
     for (const double simulate : {0.0, 1.0}) {
       SCOPED_TRACE(simulate);
-      // (The driver's rates come without edge reshading.)
+      // (The driver's rates come without edge reshading; the model's rates
+      // alone, without the content-adaptive refinement, which
+      // Techniques.VrsAdaptRefinesBusyContentOnly checks.)
       auto t = make_technique("vrs", config(W, H,
                                             {{"simulate_driver", simulate},
-                                             {"edge_contrast", simulate > 0 ? 0.0 : 0.25}}));
+                                             {"edge_contrast", simulate > 0 ? 0.0 : 0.25},
+                                             {"adapt", 0.0}}));
       for (const Vec2d gaze : {Vec2d{960, 540}, Vec2d{400, 300}}) {
         FrameStats s;
         const Image img = run(*t, *scene, gaze, 0, &s);

@@ -55,6 +55,13 @@ inline constexpr std::array<ShadingRate, 7> kShadingRates = {
     ShadingRate{1, 1}, ShadingRate{1, 2}, ShadingRate{2, 1}, ShadingRate{2, 2},
     ShadingRate{2, 4}, ShadingRate{4, 2}, ShadingRate{4, 4}};
 
+/// The planning margin at which the model's rates alone, as an engine ships
+/// one image per gaze, stay within 0.25 JOD of native on the built-in scenes
+/// at 1920x1080 (`foveate tune` on vrs without its content-adaptive rates:
+/// docs/fidelity.md). What `foveate rates` plans by default; the vrs
+/// technique plans coarser (margin 1) and refines busy tiles frame by frame.
+inline constexpr double kStaticRatesMargin = 1.5;
+
 /// "1x1", "2x4", ...: one of kShadingRates; throws foveate::Error otherwise.
 ShadingRate parse_shading_rate(const std::string& text);
 /// A comma-separated list of rates ("1x1,2x2,4x4"); must contain 1x1, no repeats.

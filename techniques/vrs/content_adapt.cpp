@@ -1,0 +1,102 @@
+#include "content_adapt.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace foveate::tech::vrs {
+
+namespace {
+
+// sRGB bytes to linear light.
+const std::array<float, 256>& linear_of_srgb() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) {
+      const double c = i / 255.0;
+      t[size_t(i)] =
+          static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return t;
+  }();
+  return table;
+}
+
+constexpr int kTwoBy2 = 3;  // kShadingRates[3] = 2x2
+
+}  // namespace
+
+bool adapt_refines(int k) {
+  const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
+  return r.width == 4 || r.height == 4;
+}
+
+void ContentAdapt::reset(int gx, int gy) {
+  gx_ = gx;
+  gy_ = gy;
+  hold_.assign(static_cast<size_t>(gx) * size_t(gy), 0);
+  busy_.assign(hold_.size(), 0);
+}
+
+void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, ShadingRate rate,
+                           const std::vector<std::uint8_t>& classes, int cls, bool refined_only,
+                           int tile, int width, int height) {
+  const auto& lin = linear_of_srgb();
+  const auto at = [&](int i, int j) {
+    return rgba.data() + (size_t(j) * size_t(tw) + size_t(i)) * 4;
+  };
+  const auto luminance = [&](const std::uint8_t* p) {
+    return 0.2126f * lin[p[0]] + 0.7152f * lin[p[1]] + 0.0722f * lin[p[2]];
+  };
+  // Samples 4 pixels apart whatever the class, so that a tile refined to
+  // 2x2 is judged as it was at 4x4.
+  const int sx = std::max(1, 4 / rate.width), sy = std::max(1, 4 / rate.height);
+  const auto differs = [&](const std::uint8_t* a, const std::uint8_t* b) {
+    if (a[3] != 255 || b[3] != 255) return -1;  // either unshaded: no pair
+    const float la = luminance(a), lb = luminance(b);
+    return std::abs(la - lb) > static_cast<float>(contrast_) * std::max(la, lb) ? 1 : 0;
+  };
+  for (int ty = 0; ty < gy_; ++ty) {
+    for (int tx = 0; tx < gx_; ++tx) {
+      const size_t t = static_cast<size_t>(ty) * size_t(gx_) + size_t(tx);
+      if (classes[t] != cls || (refined_only && hold_[t] == 0)) continue;
+      const PixelRect p = tile_pixels(tx, ty, tile, width, height);
+      int pairs = 0, differing = 0;
+      for (int j = p[1] / rate.height; j <= (p[3] - 1) / rate.height && j < th; j += sy) {
+        for (int i = p[0] / rate.width; i <= (p[2] - 1) / rate.width && i < tw; i += sx) {
+          for (const auto [di, dj] : {std::array<int, 2>{sx, 0}, std::array<int, 2>{0, sy}}) {
+            if (i + di >= tw || j + dj >= th) continue;
+            const int d = differs(at(i, j), at(i + di, j + dj));
+            if (d < 0) continue;
+            ++pairs;
+            differing += d;
+          }
+        }
+      }
+      if (pairs > 0 && differing >= share_ * pairs) busy_[t] = 1;
+    }
+  }
+}
+
+void ContentAdapt::settle() {
+  for (size_t t = 0; t < hold_.size(); ++t) {
+    if (busy_[t])
+      hold_[t] = hold_frames_;
+    else if (hold_[t] > 0)
+      --hold_[t];
+    busy_[t] = 0;
+  }
+}
+
+void ContentAdapt::refine(TileClasses& classes) const {
+  if (classes.of_tile.size() != hold_.size()) return;
+  for (size_t t = 0; t < hold_.size(); ++t) {
+    std::uint8_t& c = classes.of_tile[t];
+    if (hold_[t] == 0 || !adapt_refines(c)) continue;
+    --classes.count[c];
+    c = kTwoBy2;
+    ++classes.count[kTwoBy2];
+  }
+}
+
+}  // namespace foveate::tech::vrs

@@ -1,0 +1,63 @@
+#pragma once
+// vrs's content-adaptive rates (`adapt`). The acuity model gives each tile
+// the coarsest rate the eye cannot tell from native on average content; on
+// busy content (many small objects, fine texture, silhouettes) FovVideoVDP
+// sees a 4-pixel spacing blur where the same rate on smooth content is
+// invisible. So a tile the model gives a rate of 4 in either axis is shaded
+// at 2x2 while its last frame's samples, taken 4 pixels apart, show enough
+// contrast between neighbours. The measure reads what the frame before
+// shaded (its class targets), so it costs no pass; a tile refined stays
+// refined for `hold` frames after it was last found busy, so that its rate
+// does not flip back and forth. Pure CPU: no GL here.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rate_classes.hpp"
+
+namespace foveate::tech::vrs {
+
+class ContentAdapt {
+ public:
+  /// `contrast`: a sample pair differs when its linear luminances differ by
+  /// more than this share of the brighter; `share`: a tile is busy when at
+  /// least this share of its pairs differ; `hold`: frames a refined tile
+  /// stays refined without being found busy again.
+  ContentAdapt(double contrast, double share, int hold)
+      : contrast_(contrast), share_(share), hold_frames_(hold) {}
+
+  /// Starts over on a gx x gy grid (a new size or tile grid): nothing is busy.
+  void reset(int gx, int gy);
+  [[nodiscard]] int grid_x() const { return gx_; }
+  [[nodiscard]] int grid_y() const { return gy_; }
+
+  /// Measures the tiles of class `cls` (per `classes`, the last frame's) in
+  /// that class's target: `rgba` its sRGB bytes, `tw` x `th` texels, rows
+  /// from the bottom, alpha 0 where nothing was shaded; `rate` the class's
+  /// rate; `width` x `height` the frame in tiles of `tile` pixels. With
+  /// `refined_only`, only tiles this object refined are measured (a class
+  /// the model also gives: its own tiles stay as they are).
+  void measure(std::span<const std::uint8_t> rgba, int tw, int th, ShadingRate rate,
+               const std::vector<std::uint8_t>& classes, int cls, bool refined_only, int tile,
+               int width, int height);
+  /// Ends a frame's measurements: busy tiles hold for `hold` frames from
+  /// now, the others count down.
+  void settle();
+  /// Shades every held tile whose class has a rate of 4 in either axis at
+  /// 2x2 instead (and counts the classes again).
+  void refine(TileClasses& classes) const;
+  /// Whether tile `i` (row-major) is held refined.
+  [[nodiscard]] bool held(size_t i) const { return i < hold_.size() && hold_[i] > 0; }
+
+ private:
+  double contrast_, share_;
+  int hold_frames_;
+  int gx_ = 0, gy_ = 0;
+  std::vector<int> hold_;           ///< frames left, per tile
+  std::vector<std::uint8_t> busy_;  ///< found busy in this frame's measurements
+};
+
+/// Whether class `k` is one that `adapt` refines (a rate of 4 in either axis).
+bool adapt_refines(int k);
+
+}  // namespace foveate::tech::vrs

@@ -1,0 +1,123 @@
+// vrs's content-adaptive rates (vrs/content_adapt.hpp): which tiles a frame's
+// coarse samples call busy, how long a refined tile holds, and what it
+// refines to. Pure CPU.
+#include "../../techniques/vrs/content_adapt.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace foveate::tech::vrs {
+namespace {
+
+constexpr int kTile = 16;
+constexpr int k4x4 = 6, k2x2 = 3;  // kShadingRates' classes
+
+// A class target of `tw` x `th` texels, every one shaded (alpha 255) with
+// the grey `value(i, j)` (sRGB code).
+template <typename F>
+std::vector<std::uint8_t> target(int tw, int th, F value) {
+  std::vector<std::uint8_t> t(static_cast<size_t>(tw) * size_t(th) * 4);
+  for (int j = 0; j < th; ++j)
+    for (int i = 0; i < tw; ++i) {
+      std::uint8_t* p = &t[(size_t(j) * size_t(tw) + size_t(i)) * 4];
+      p[0] = p[1] = p[2] = static_cast<std::uint8_t>(value(i, j));
+      p[3] = 255;
+    }
+  return t;
+}
+
+// Two 4x4 tiles side by side (a 32 x 16 frame): 8 x 4 texels at 4x4.
+TileClasses two_coarse_tiles() {
+  TileClasses c;
+  c.of_tile = {k4x4, k4x4};
+  c.count[k4x4] = 2;
+  return c;
+}
+
+TEST(ContentAdapt, BusyTilesAreShadedAt2x2AndSmoothOnesAreNot) {
+  ContentAdapt a(0.25, 0.5, 8);
+  a.reset(2, 1);
+  TileClasses c = two_coarse_tiles();
+  // Left tile: a checker of black and white texels; right tile: flat grey.
+  const auto t = target(8, 4, [](int i, int j) { return i < 4 ? ((i + j) % 2) * 255 : 128; });
+  a.measure(t, 8, 4, kShadingRates[k4x4], c.of_tile, k4x4, false, kTile, 32, 16);
+  a.settle();
+  a.refine(c);
+  EXPECT_EQ(c.of_tile[0], k2x2);
+  EXPECT_EQ(c.of_tile[1], k4x4);
+  EXPECT_EQ(c.count[k2x2], 1u);
+  EXPECT_EQ(c.count[k4x4], 1u);
+}
+
+TEST(ContentAdapt, ContrastBelowTheThresholdAndUnshadedTexelsAreNotBusy) {
+  ContentAdapt a(0.25, 0.5, 8);
+  a.reset(2, 1);
+  TileClasses c = two_coarse_tiles();
+  // Codes 200 and 188 are 0.58 and 0.50 in linear light: 14 % apart, under 25 %.
+  auto t = target(8, 4, [](int i, int j) { return (i + j) % 2 ? 200 : 188; });
+  // The right tile's checker is black and white, but nothing was shaded there.
+  for (int j = 0; j < 4; ++j)
+    for (int i = 4; i < 8; ++i) {
+      std::uint8_t* p = &t[(size_t(j) * 8 + size_t(i)) * 4];
+      p[0] = p[1] = p[2] = static_cast<std::uint8_t>(((i + j) % 2) * 255);
+      p[3] = 0;
+    }
+  a.measure(t, 8, 4, kShadingRates[k4x4], c.of_tile, k4x4, false, kTile, 32, 16);
+  a.settle();
+  a.refine(c);
+  EXPECT_EQ(c.of_tile[0], k4x4);
+  EXPECT_EQ(c.of_tile[1], k4x4);
+}
+
+TEST(ContentAdapt, ARefinedTileHoldsForItsFramesAndIsJudgedAtFourPixels) {
+  ContentAdapt a(0.25, 0.5, 3);
+  a.reset(2, 1);
+  // Busy on the left tile only.
+  const auto busy = target(8, 4, [](int i, int j) { return i < 4 ? ((i + j) % 2) * 255 : 128; });
+  TileClasses model = two_coarse_tiles();
+  a.measure(busy, 8, 4, kShadingRates[k4x4], model.of_tile, k4x4, false, kTile, 32, 16);
+  a.settle();
+  TileClasses c = model;
+  a.refine(c);
+  ASSERT_EQ(c.of_tile[0], k2x2);
+  // Shaded at 2x2 (16 x 8 texels), the tiles' content is judged 4 pixels
+  // apart, every second texel: a checker of 2x2 texels (4-pixel cells) is
+  // still busy there, although neighbouring 2x2 texels match in pairs.
+  const auto checker4 =
+      target(16, 8, [](int i, int j) { return i < 8 ? ((i / 2 + j / 2) % 2) * 255 : 128; });
+  a.measure(checker4, 16, 8, kShadingRates[k2x2], c.of_tile, k2x2, true, kTile, 32, 16);
+  a.settle();
+  EXPECT_TRUE(a.held(0));
+  EXPECT_FALSE(a.held(1));  // never busy
+  // Smooth from now on: the tile holds 3 frames, then goes back to 4x4.
+  const auto flat = target(16, 8, [](int, int) { return 128; });
+  for (int frame = 0; frame < 3; ++frame) {
+    EXPECT_TRUE(a.held(0)) << frame;
+    a.measure(flat, 16, 8, kShadingRates[k2x2], c.of_tile, k2x2, true, kTile, 32, 16);
+    a.settle();
+  }
+  EXPECT_FALSE(a.held(0));
+  c = model;
+  a.refine(c);
+  EXPECT_EQ(c.of_tile[0], k4x4);
+}
+
+TEST(ContentAdapt, OnlyRatesOfFourAreRefined) {
+  for (int k = 0; k < kClasses; ++k) {
+    const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
+    EXPECT_EQ(adapt_refines(k), r.width == 4 || r.height == 4) << r.name();
+  }
+  // A model 2x2 tile that was never refined is not measured as a refined one.
+  ContentAdapt a(0.25, 0.5, 8);
+  a.reset(1, 1);
+  const std::vector<std::uint8_t> classes = {k2x2};
+  const auto busy = target(8, 8, [](int i, int j) { return ((i + j) % 2) * 255; });
+  a.measure(busy, 8, 8, kShadingRates[k2x2], classes, k2x2, true, kTile, 16, 16);
+  a.settle();
+  EXPECT_FALSE(a.held(0));
+}
+
+}  // namespace
+}  // namespace foveate::tech::vrs
