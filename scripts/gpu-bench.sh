@@ -124,18 +124,19 @@ if [ "$quality" = 1 ]; then
 fi
 # vrs: the driver's shading-rate image (GL_NV_shading_rate_image, where the
 # renderer has it) against the emulation, against the 4x4 reference, both
-# without edge reshading (the driver's coarse pixels have none: with it, vrs
-# takes the emulation everywhere, as the tables above show). On a renderer
+# without edge reshading or content-adaptive rates (the driver's coarse pixels
+# have neither: with edges, vrs takes the emulation everywhere, as the tables
+# above show). On a renderer
 # without the extension both rows are the emulation (the results'
 # parameters say hardware_path 0).
 dir="$work/vrs-hardware"
 echo "gpu-bench.sh: vrs hardware against emulation" >&2
-"$bin" bench --scene guenter --size $first --techniques native,vrs --param vrs.edge_contrast=0 \
+"$bin" bench --scene guenter --size $first --techniques native,vrs --param vrs.edge_contrast=0 --param vrs.adapt=0 \
   --sweep vrs.hardware=0:1:1 --reference ssaa:4 --frames 3 --warmup 2 --passes "${plan[@]}" --quiet --out "$dir" >/dev/null
 {
   echo "## vrs: hardware rates against the emulation (guenter at $first)"
   echo
-  echo "\`foveate bench --scene guenter --size $first --techniques native,vrs --param vrs.edge_contrast=0 --sweep vrs.hardware=0:1:1 --reference ssaa:4 --frames 3 --warmup 2 --passes$shown_plan\`"
+  echo "\`foveate bench --scene guenter --size $first --techniques native,vrs --param vrs.edge_contrast=0 --param vrs.adapt=0 --sweep vrs.hardware=0:1:1 --reference ssaa:4 --frames 3 --warmup 2 --passes$shown_plan\`"
   echo
   cat "$dir/results.md"
   echo

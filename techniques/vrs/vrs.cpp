@@ -154,7 +154,8 @@ TechniqueInfo vrs_info() {
             "either axis is shaded at 2x2 while at least this share of its last frame's samples, "
             "4 pixels apart, differ from their neighbour by more than edge_contrast (0.25 when "
             "edges are off), and for 8 frames after; small objects and fine texture blur at a "
-            "4-pixel spacing where smooth content does not (0 = off)",
+            "4-pixel spacing where smooth content does not (0 = off; the driver's rates, with "
+            "edge_contrast=0, are not refined: plan those at margin 1.5, as foveate rates does)",
             "", ParamType::Real, 0.0, 1.0, 0.25),
       {0.0, 0.25, 0.5}));
   t.params.push_back(param("hardware",
