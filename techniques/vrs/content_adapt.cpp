@@ -22,9 +22,9 @@ const std::array<float, 256>& linear_of_srgb() {
   return table;
 }
 
-constexpr int kTwoBy2 = 3;  // kShadingRates[3] = 2x2
-
 }  // namespace
+
+static_assert(kShadingRates[kRefinedClass].width == 2 && kShadingRates[kRefinedClass].height == 2);
 
 bool adapt_refines(int k) {
   const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
@@ -78,6 +78,10 @@ void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, S
   }
 }
 
+bool ContentAdapt::any_held() const {
+  return std::any_of(hold_.begin(), hold_.end(), [](int h) { return h > 0; });
+}
+
 void ContentAdapt::settle() {
   for (size_t t = 0; t < hold_.size(); ++t) {
     if (busy_[t])
@@ -94,8 +98,8 @@ void ContentAdapt::refine(TileClasses& classes) const {
     std::uint8_t& c = classes.of_tile[t];
     if (hold_[t] == 0 || !adapt_refines(c)) continue;
     --classes.count[c];
-    c = kTwoBy2;
-    ++classes.count[kTwoBy2];
+    c = kRefinedClass;
+    ++classes.count[kRefinedClass];
   }
 }
 

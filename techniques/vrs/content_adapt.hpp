@@ -48,6 +48,8 @@ class ContentAdapt {
   void refine(TileClasses& classes) const;
   /// Whether tile `i` (row-major) is held refined.
   [[nodiscard]] bool held(size_t i) const { return i < hold_.size() && hold_[i] > 0; }
+  /// Whether any tile is.
+  [[nodiscard]] bool any_held() const;
 
  private:
   double contrast_, share_;
@@ -59,5 +61,7 @@ class ContentAdapt {
 
 /// Whether class `k` is one that `adapt` refines (a rate of 4 in either axis).
 bool adapt_refines(int k);
+/// The class a refined tile is shaded at: 2x2 (kShadingRates[3]).
+inline constexpr int kRefinedClass = 3;
 
 }  // namespace foveate::tech::vrs

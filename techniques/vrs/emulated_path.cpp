@@ -40,17 +40,19 @@ void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int he
     a.reset(gx, gy);
   } else {
     const gpu::ProfileScope timed("adapt");
-    std::vector<std::uint8_t> bytes;
+    // The classes the last frame shaded that adapt refines, and the 2x2
+    // class where it holds tiles refined (their own 2x2 tiles stay).
     for (int k = 1; k < kClasses; ++k) {
       const bool refines = adapt_refines(k);
-      if (!refines && k != 3) continue;
-      if (std::find(last_classes_.begin(), last_classes_.end(), k) == last_classes_.end()) continue;
+      if (!last_present_[static_cast<size_t>(k)] ||
+          !(refines || (k == kRefinedClass && a.any_held())))
+        continue;
       const gpu::RenderTarget& t = targets_[static_cast<size_t>(k)];
-      bytes.resize(static_cast<size_t>(t.width()) * size_t(t.height()) * 4);
+      readback_.resize(static_cast<size_t>(t.width()) * size_t(t.height()) * 4);
       glGetTextureImage(t.color().id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                        static_cast<GLsizei>(bytes.size()), bytes.data());
-      a.measure(bytes, t.width(), t.height(), kShadingRates[static_cast<size_t>(k)], last_classes_,
-                k, !refines, tile_, width, height);
+                        static_cast<GLsizei>(readback_.size()), readback_.data());
+      a.measure(readback_, t.width(), t.height(), kShadingRates[static_cast<size_t>(k)],
+                last_classes_, k, !refines, tile_, width, height);
     }
     a.settle();
   }
@@ -60,10 +62,11 @@ void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int he
 FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx,
                                 int gy, const gpu::RenderTarget& target) {
   const int W = target.width(), H = target.height();
-  last_classes_ = classes.of_tile;
-  last_size_ = {W, H};
   std::array<bool, kClasses> present{};
   for (int k = 0; k < kClasses; ++k) present[size_t(k)] = classes.count[size_t(k)] > 0;
+  last_classes_ = classes.of_tile;
+  last_present_ = present;
+  last_size_ = {W, H};
   // The classes around each tile: its finest neighbour, and which classes
   // it borders.
   const Grid grid{classes.of_tile, neighbourhood_classes(classes.of_tile, gx, gy), gx, gy};

@@ -74,9 +74,12 @@ class EmulatedPath {
   std::array<gpu::RenderTarget, kClasses> targets_;
   std::array<gpu::RenderTarget, kClasses> scratch_;  ///< supersample_edges' copies
   std::optional<ContentAdapt> adapt_;
-  /// The last frame's classes (merged) and size, which its targets hold.
+  /// The last frame's classes (merged), those present and its size, which
+  /// its targets hold.
   std::vector<std::uint8_t> last_classes_;
+  std::array<bool, kClasses> last_present_{};
   std::array<int, 2> last_size_{};
+  std::vector<std::uint8_t> readback_;  ///< adapt's copy of a class target, kept
 };
 
 }  // namespace foveate::tech::vrs
