@@ -35,6 +35,7 @@ GLint Program::uniform(const char* name) const {
 
 void Program::set(const char* n, float v) const { glProgramUniform1f(id(), uniform(n), v); }
 void Program::set(const char* n, int v) const { glProgramUniform1i(id(), uniform(n), v); }
+void Program::set(const char* n, int x, int y) const { glProgramUniform2i(id(), uniform(n), x, y); }
 void Program::set(const char* n, float x, float y) const {
   glProgramUniform2f(id(), uniform(n), x, y);
 }

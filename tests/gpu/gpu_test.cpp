@@ -1,11 +1,15 @@
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
+#include "foveate/gpu/readback.hpp"
 #include "foveate/gpu/shader.hpp"
 #include "foveate_embedded/gpu_test_shaders.hpp"
 #include "gl_fixture.hpp"
@@ -226,6 +230,40 @@ TEST_F(Gpu, RenderTargetsOwnTheirViewportAndClearThroughMasks) {
 // The EGL device platform (the only one NVIDIA's driver offers) makes a
 // working context: Mesa exposes its software renderer as a device too, so the
 // path is exercised here without a GPU. FOVEATE_EGL picks the platform.
+TEST_F(Gpu, AReadBackHoldsTheTextureAsItWasWhenQueued) {
+  // The copy is queued behind the work sent before it: what the texture
+  // holds later does not reach it. Rows come tightly packed from the bottom,
+  // also one byte wide on a width that is no multiple of 4.
+  gpu::Texture t = gpu::Texture::create_2d(GL_R8UI, 5, 3);
+  std::vector<std::uint8_t> first(15), second(15, 200);
+  for (size_t i = 0; i < first.size(); ++i) first[i] = static_cast<std::uint8_t>(i);
+  t.upload(5, 3, GL_RED_INTEGER, GL_UNSIGNED_BYTE, first.data());
+  gpu::TextureReadback r;
+  EXPECT_FALSE(r.pending());
+  EXPECT_THROW(r.read([](std::span<const std::uint8_t>) {}), Error);
+  r.queue(t, GL_RED_INTEGER, GL_UNSIGNED_BYTE, 1);
+  t.upload(5, 3, GL_RED_INTEGER, GL_UNSIGNED_BYTE, second.data());
+  EXPECT_TRUE(r.pending());
+  EXPECT_EQ(r.width(), 5);
+  EXPECT_EQ(r.height(), 3);
+  std::vector<std::uint8_t> got;
+  r.read([&](std::span<const std::uint8_t> b) { got.assign(b.begin(), b.end()); });
+  EXPECT_EQ(got, first);
+  EXPECT_FALSE(r.pending());
+  // Queued again (RGBA bytes of a colour texture), moved, and discarded.
+  gpu::Texture c = gpu::Texture::create_2d(GL_RGBA8, 2, 2);
+  const std::vector<std::uint8_t> rgba = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  c.upload(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  r.queue(c);
+  gpu::TextureReadback moved = std::move(r);
+  EXPECT_TRUE(moved.pending());
+  moved.read([&](std::span<const std::uint8_t> b) { got.assign(b.begin(), b.end()); });
+  EXPECT_EQ(got, rgba);
+  moved.queue(c);
+  moved.discard();
+  EXPECT_FALSE(moved.pending());
+}
+
 TEST(EglPlatform, DevicePlatformRendersAndBadChoiceIsNamed) {
   struct EnvGuard {
     ~EnvGuard() { unsetenv("FOVEATE_EGL"); }

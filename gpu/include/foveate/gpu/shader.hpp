@@ -33,6 +33,7 @@ class Program : public Handle<detail::delete_program> {
   void use() const { glUseProgram(id()); }
   void set(const char* name, float v) const;
   void set(const char* name, int v) const;
+  void set(const char* name, int x, int y) const;
   void set(const char* name, float x, float y) const;
   void set(const char* name, float x, float y, float z) const;
   void set(const char* name, float x, float y, float z, float w) const;
