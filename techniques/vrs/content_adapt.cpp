@@ -78,6 +78,18 @@ void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, S
   }
 }
 
+void ContentAdapt::mark(std::span<const std::uint8_t> busy,
+                        const std::vector<std::uint8_t>& classes,
+                        const std::array<bool, kClasses>& measured) {
+  const size_t n = std::min({busy.size(), classes.size(), busy_.size()});
+  for (size_t t = 0; t < n; ++t) {
+    const int k = classes[t];
+    if (k >= kClasses || !measured[static_cast<size_t>(k)]) continue;
+    if (!adapt_refines(k) && hold_[t] == 0) continue;
+    if (busy[t]) busy_[t] = 1;
+  }
+}
+
 bool ContentAdapt::any_held() const {
   return std::any_of(hold_.begin(), hold_.end(), [](int h) { return h > 0; });
 }

@@ -8,7 +8,9 @@
 // contrast between neighbours. The measure reads what the frame before
 // shaded (its class targets), so it costs no pass; a tile refined stays
 // refined for `hold` frames after it was last found busy, so that its rate
-// does not flip back and forth. Pure CPU: no GL here.
+// does not flip back and forth. Pure CPU: no GL here (the GPU's measure is
+// BusyTiles; measure() is its reference).
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -40,6 +42,13 @@ class ContentAdapt {
   void measure(std::span<const std::uint8_t> rgba, int tw, int th, ShadingRate rate,
                const std::vector<std::uint8_t>& classes, int cls, bool refined_only, int tile,
                int width, int height);
+  /// Takes a frame's busy tiles as measured elsewhere (on the GPU:
+  /// BusyTiles, which judges as measure() does): `busy` a byte per tile,
+  /// row-major, 1 where busy, for the tiles of `classes` (the frame's) whose
+  /// class is `measured`. As measure() would, it counts the tiles of a class
+  /// adapt refines, and those of another class only where held refined.
+  void mark(std::span<const std::uint8_t> busy, const std::vector<std::uint8_t>& classes,
+            const std::array<bool, kClasses>& measured);
   /// Ends a frame's measurements: busy tiles hold for `hold` frames from
   /// now, the others count down.
   void settle();

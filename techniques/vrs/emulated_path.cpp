@@ -38,22 +38,13 @@ void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int he
                     last_classes_.size() == static_cast<size_t>(gx) * size_t(gy);
   if (!same) {
     a.reset(gx, gy);
+    busy_->discard();
   } else {
     const gpu::ProfileScope timed("adapt");
-    // The classes the last frame shaded that adapt refines, and the 2x2
-    // class where it holds tiles refined (their own 2x2 tiles stay).
-    for (int k = 1; k < kClasses; ++k) {
-      const bool refines = adapt_refines(k);
-      if (!last_present_[static_cast<size_t>(k)] ||
-          !(refines || (k == kRefinedClass && a.any_held())))
-        continue;
-      const gpu::RenderTarget& t = targets_[static_cast<size_t>(k)];
-      readback_.resize(static_cast<size_t>(t.width()) * size_t(t.height()) * 4);
-      glGetTextureImage(t.color().id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                        static_cast<GLsizei>(readback_.size()), readback_.data());
-      a.measure(readback_, t.width(), t.height(), kShadingRates[static_cast<size_t>(k)],
-                last_classes_, k, !refines, tile_, width, height);
-    }
+    // The busy tiles of what the last frame shaded (measure_busy_tiles).
+    if (busy_->pending())
+      busy_->read(
+          [&](std::span<const std::uint8_t> busy) { a.mark(busy, last_classes_, measured_); });
     a.settle();
   }
   a.refine(classes);
@@ -80,6 +71,7 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
       shaded[static_cast<size_t>(k)] = shade_class(kit, scene, grid, k, W, H);
   }
   reconstruct(kit, grid, present, target);
+  measure_busy_tiles(kit, present, gx, gy, W, H);
   // Read once the frame's last pass is sent (PixelCount).
   double edges = 0;
   for (int k = 0; k < kClasses; ++k) {
@@ -92,6 +84,30 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   }
   if (edge_ > 0.0) s.parts.push_back({"supersampled edges", edge_samples_ * edges});
   return s;
+}
+
+void EmulatedPath::measure_busy_tiles(const PassKit& kit, const std::array<bool, kClasses>& present,
+                                      int gx, int gy, int width, int height) {
+  if (!adapt_) return;
+  const gpu::ProfileScope timed("adapt");
+  // The classes adapt refines, and the 2x2 class while it holds tiles
+  // refined (there it counts those tiles alone; its own 2x2 tiles stay).
+  bool any = false;
+  for (int k = 1; k < kClasses; ++k) {
+    const auto i = static_cast<size_t>(k);
+    measured_[i] = present[i] && (adapt_refines(k) || (k == kRefinedClass && adapt_->any_held()));
+    any = any || measured_[i];
+  }
+  if (!any) {
+    busy_->discard();
+    return;
+  }
+  busy_->begin(kit, gx, gy);
+  for (int k = 1; k < kClasses; ++k) {
+    if (measured_[static_cast<size_t>(k)])
+      busy_->measure(classes_, targets_[static_cast<size_t>(k)].color(), k, tile_, width, height);
+  }
+  busy_->queue();
 }
 
 EmulatedPath::Shaded EmulatedPath::shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k,

@@ -17,6 +17,7 @@
 #include <array>
 #include <optional>
 
+#include "busy_tiles.hpp"
 #include "content_adapt.hpp"
 #include "rate_classes.hpp"
 
@@ -28,12 +29,17 @@ class EmulatedPath {
   /// judged by `edge_contrast` (0.25 when edges are off).
   EmulatedPath(int tile, double edge_contrast, int edge_samples, double adapt = 0.0)
       : tile_(tile), edge_(edge_contrast), edge_samples_(edge_samples) {
-    if (adapt > 0.0) adapt_.emplace(edge_contrast > 0.0 ? edge_contrast : 0.25, adapt, kAdaptHold);
+    if (adapt > 0.0) {
+      const double contrast = edge_contrast > 0.0 ? edge_contrast : 0.25;
+      adapt_.emplace(contrast, adapt, kAdaptHold);
+      busy_.emplace(contrast, adapt);
+    }
   }
   /// Frames a tile refined by `adapt` stays so without being found busy again.
   static constexpr int kAdaptHold = 8;
-  /// With `adapt`: measures what the last frame shaded (its class targets,
-  /// read back: the frame is done by then) and refines this frame's
+  /// With `adapt`: takes the busy tiles of what the last frame shaded
+  /// (measured on the GPU at its end and read back now, with no stall) and
+  /// refines this frame's
   /// `classes` of a gx x gy grid for a width x height frame. A no-op without.
   void adapt(TileClasses& classes, int gx, int gy, int width, int height);
   /// Renders with `classes` (merged: merge_small_classes) of a gx x gy grid.
@@ -63,6 +69,10 @@ class EmulatedPath {
   /// reconstruction reads of it.
   Shaded shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int width, int height);
   /// Puts the frame together from the class targets into `target`.
+  /// With `adapt`: measures the busy tiles in this frame's class targets
+  /// for the next frame's adapt(), and queues their read-back.
+  void measure_busy_tiles(const PassKit& kit, const std::array<bool, kClasses>& present, int gx,
+                          int gy, int width, int height);
   void reconstruct(PassKit& kit, const Grid& grid, const std::array<bool, kClasses>& present,
                    const gpu::RenderTarget& target);
 
@@ -79,7 +89,10 @@ class EmulatedPath {
   std::vector<std::uint8_t> last_classes_;
   std::array<bool, kClasses> last_present_{};
   std::array<int, 2> last_size_{};
-  std::vector<std::uint8_t> readback_;  ///< adapt's copy of a class target, kept
+  /// adapt's measure on the GPU, and the classes it measured in the frame
+  /// whose read-back is queued.
+  std::optional<BusyTiles> busy_;
+  std::array<bool, kClasses> measured_{};
 };
 
 }  // namespace foveate::tech::vrs

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -117,6 +118,39 @@ TEST(ContentAdapt, OnlyRatesOfFourAreRefined) {
   a.measure(busy, 8, 8, kShadingRates[k2x2], classes, k2x2, true, kTile, 16, 16);
   a.settle();
   EXPECT_FALSE(a.held(0));
+}
+
+TEST(ContentAdapt, BusyTilesMarkedFromTheGpuCountAsMeasuredOnes) {
+  // mark() takes the GPU's verdicts (BusyTiles) as measure() would count
+  // them: in a class measured that adapt refines, every busy tile; in the
+  // 2x2 class, only tiles held refined; in a class not measured, none.
+  ContentAdapt a(0.25, 0.5, 8);
+  a.reset(4, 1);
+  std::vector<std::uint8_t> classes = {k4x4, k4x4, k2x2, k4x4};
+  const std::vector<std::uint8_t> busy = {1, 0, 1, 1};
+  std::array<bool, kClasses> measured{};
+  measured[k4x4] = measured[k2x2] = true;
+  a.mark(busy, classes, measured);
+  a.settle();
+  EXPECT_TRUE(a.held(0));
+  EXPECT_FALSE(a.held(1));
+  EXPECT_FALSE(a.held(2));  // a model 2x2 tile, never refined
+  EXPECT_TRUE(a.held(3));
+  // Next frame tile 0 is shaded at 2x2 (refined); found busy again there it
+  // holds anew, while tile 3, whose class was not measured, counts down.
+  classes = {k2x2, k4x4, k2x2, k4x4};
+  measured[k4x4] = false;
+  for (int f = 0; f < 7; ++f) {
+    a.mark(busy, classes, measured);
+    a.settle();
+  }
+  EXPECT_TRUE(a.held(0));
+  EXPECT_TRUE(a.held(3));  // 8 frames of hold, 7 passed
+  a.mark(busy, classes, measured);
+  a.settle();
+  EXPECT_TRUE(a.held(0));
+  EXPECT_FALSE(a.held(3));
+  EXPECT_FALSE(a.held(2));
 }
 
 }  // namespace

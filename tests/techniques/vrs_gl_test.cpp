@@ -3,9 +3,12 @@
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "../../techniques/vrs/busy_tiles.hpp"
+#include "../../techniques/vrs/content_adapt.hpp"
 #include "foveate/core/shading_rate.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/techniques/pass_kit.hpp"
@@ -148,6 +151,76 @@ TEST_F(Vrs, HardwareReconstructionFadesIntoTheFinerTile) {
   for (int y = F::kTile; y < 2 * F::kTile; ++y)
     for (int x = F::kTile; x < 2 * F::kTile; ++x) mean += img.at(x, y)[0];
   EXPECT_NEAR(mean / (F::kTile * F::kTile), 127.5, 3.0);
+}
+
+TEST_F(Vrs, BusyTilesOnTheGpuAreTheCpuMeasuresBusyTiles) {
+  // vrs adapt measures on the GPU (busy_tiles.comp); ContentAdapt::measure
+  // is its reference. Tiles of 16 px on a 192 x 90 frame (the top row 10 px
+  // high), of every class, their targets grey at levels far apart in
+  // luminance (so no pair lies near the threshold): a tile flat, or changing
+  // level at some of its texels, with some texels left unshaded (alpha 0).
+  constexpr int kTile = 16, W = 192, H = 90, gx = 12, gy = 6;
+  constexpr double kContrast = 0.25, kShare = 0.5;
+  const std::uint8_t levels[4] = {30, 90, 160, 250};
+  std::vector<std::uint8_t> classes(size_t(gx * gy));
+  for (size_t t = 0; t < classes.size(); ++t) classes[t] = std::uint8_t(t % 7);
+  gpu::Texture classes_t = gpu::Texture::create_2d(GL_R8UI, gx, gy);
+  classes_t.set_filter(GL_NEAREST, GL_NEAREST);
+  classes_t.upload(gx, gy, GL_RED_INTEGER, GL_UNSIGNED_BYTE, classes.data());
+  PassKit kit;
+  vrs::BusyTiles gpu_busy(kContrast, kShare);
+  gpu_busy.begin(kit, gx, gy);
+  std::vector<int> cpu_busy(classes.size(), 0);
+  std::vector<gpu::Texture> targets;
+  for (int k = 1; k < 7; ++k) {
+    const ShadingRate r = kShadingRates[size_t(k)];
+    const int tw = (W + r.width - 1) / r.width, th = (H + r.height - 1) / r.height;
+    std::vector<std::uint8_t> rgba(size_t(tw * th * 4));
+    for (int j = 0; j < th; ++j) {
+      for (int i = 0; i < tw; ++i) {
+        const int tx = i * r.width / kTile, ty = j * r.height / kTile;
+        const unsigned h =
+            unsigned(i) * 73856093u ^ unsigned(j) * 19349663u ^ unsigned(k) * 83492791u;
+        // Per tile, how often a texel leaves the tile's level: never, a
+        // third, or two thirds of the time.
+        const unsigned busyness = unsigned(tx * 7 + ty * 3 + k) % 3;
+        const bool changes = (h >> 4) % 3 < busyness;
+        std::uint8_t* p = &rgba[size_t((j * tw + i) * 4)];
+        p[0] = p[1] = p[2] = levels[changes ? (h >> 8) % 4 : unsigned(tx + ty) % 4];
+        p[3] = (h >> 12) % 11 == 0 ? 0 : 255;
+      }
+    }
+    gpu::Texture t = gpu::Texture::create_2d(GL_SRGB8_ALPHA8, tw, th);
+    t.upload(tw, th, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    gpu_busy.measure(classes_t, t, k, kTile, W, H);
+    targets.push_back(std::move(t));
+    // The CPU's verdict on this class's tiles: a fresh object holds exactly
+    // the tiles it found busy.
+    vrs::ContentAdapt cpu(kContrast, kShare, 8);
+    cpu.reset(gx, gy);
+    cpu.measure(rgba, tw, th, r, classes, k, false, kTile, W, H);
+    cpu.settle();
+    for (size_t t2 = 0; t2 < classes.size(); ++t2)
+      if (classes[t2] == k) cpu_busy[t2] = cpu.held(t2) ? 1 : 0;
+  }
+  gpu_busy.queue();
+  ASSERT_TRUE(gpu_busy.pending());
+  std::vector<int> found;
+  gpu_busy.read([&](std::span<const std::uint8_t> b) { found.assign(b.begin(), b.end()); });
+  EXPECT_FALSE(gpu_busy.pending());
+  ASSERT_EQ(found.size(), classes.size());
+  int busy = 0, mismatched = 0;
+  for (size_t t = 0; t < classes.size(); ++t) {
+    busy += cpu_busy[t];
+    if (found[t] != cpu_busy[t]) ++mismatched;
+    EXPECT_EQ(found[t], cpu_busy[t])
+        << "tile " << t % gx << "," << t / gx << " class " << int(classes[t]);
+  }
+  // Both verdicts occur among the measured tiles (class 0 is never busy).
+  const int measured = gx * gy - (gx * gy + 6) / 7;
+  EXPECT_GT(busy, measured / 5);
+  EXPECT_LT(busy, measured * 4 / 5);
+  EXPECT_EQ(mismatched, 0);
 }
 
 }  // namespace
