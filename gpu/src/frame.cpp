@@ -57,11 +57,14 @@ Texture upload_image(const Image& image, bool mipmaps) {
 
 bool FrameTimer::gpu_timer_meaningful() {
   const auto* r = glGetString(GL_RENDERER);
-  const std::string name = r ? reinterpret_cast<const char*>(r) : "";
+  return gpu_timer_meaningful(r ? reinterpret_cast<const char*>(r) : "");
+}
+
+bool FrameTimer::gpu_timer_meaningful(const std::string& renderer) {
   for (const char* soft : {"llvmpipe", "softpipe", "SwiftShader", "Software"}) {
-    if (name.find(soft) != std::string::npos) return false;
+    if (renderer.find(soft) != std::string::npos) return false;
   }
-  return !name.empty();
+  return !renderer.empty();
 }
 
 FrameTimer::FrameTimer() : use_query_(gpu_timer_meaningful()), gpu_ms_(std::nan("")) {

@@ -159,7 +159,13 @@ TEST_F(Marwarp, KeepsItsStorageAsTheGazeMoves) {
   const Image expected = run(*fresh, *scene, gazes[0]);
   const test::Comparison c = test::compare_images(expected, centre, 0);
   EXPECT_TRUE(c.size_matches);
-  EXPECT_EQ(c.max_error, 0);
+  // The taller buffer puts the same rows at other texture coordinates: on
+  // llvmpipe the frames are bit-identical; NVIDIA's driver rounds the
+  // filter's weights there by one code at most (an H100). Rows read from
+  // the taller buffer's unused part would differ by far more.
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool llvmpipe = r && std::string(r).find("llvmpipe") != std::string::npos;
+  EXPECT_LE(c.max_error, llvmpipe ? 0 : 1);
 }
 
 TEST_F(Marwarp, NoRingInTheResolve) {

@@ -2,6 +2,7 @@
 // Reading frames back and timing them. On llvmpipe GPU timer queries report
 // meaningless numbers, so frames are timed with a steady clock around glFinish.
 #include <chrono>
+#include <string>
 
 #include "foveate/core/image.hpp"
 #include "foveate/gpu/gl.hpp"
@@ -29,6 +30,9 @@ class FrameTimer {
   [[nodiscard]] double gpu_ms() const { return gpu_ms_; }
   /// Whether the current renderer reports meaningful GPU timer queries.
   static bool gpu_timer_meaningful();
+  /// The same for a renderer named `renderer` (GL_RENDERER): false for the
+  /// software rasterizers (llvmpipe, softpipe, SwiftShader) and for no name.
+  static bool gpu_timer_meaningful(const std::string& renderer);
 
  private:
   std::chrono::steady_clock::time_point t0_;
