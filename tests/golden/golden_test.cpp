@@ -33,8 +33,7 @@ const bool kBarsRegistered = (test::register_bars_technique(), true);
 // (logpolar, whose edge test picks the texels it reshades by a contrast
 // threshold: a texel near it flips with the rounding, and its samples move).
 test::Tolerance tolerance() {
-  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (r && std::string(r).find("llvmpipe") != std::string::npos) return {};
+  if (test::on_llvmpipe()) return {};
   test::Tolerance t;
   t.max_error = 255;
   t.mean_error = 1.0;

@@ -4,10 +4,20 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
 
 #include "foveate/gpu/context.hpp"
+#include "foveate/gpu/gl.hpp"
 
 namespace foveate::test {
+
+/// Whether the current context is Mesa's llvmpipe, where the references
+/// and the tightest tolerances were made; another renderer rounds
+/// otherwise, and a test that holds bits says how it holds them there.
+inline bool on_llvmpipe() {
+  const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return r && std::string(r).find("llvmpipe") != std::string::npos;
+}
 
 class GlTest : public ::testing::Test {
  protected:

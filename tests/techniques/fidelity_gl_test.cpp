@@ -616,9 +616,7 @@ TEST_F(Fidelity, VrsShowsNoTileStructure) {
     }
   }
   EXPECT_GT(n, 500);
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool llvmpipe = renderer && std::string(renderer).find("llvmpipe") != std::string::npos;
-  EXPECT_LT(edge / beside, llvmpipe ? 1.2 : 1.45)
+  EXPECT_LT(edge / beside, test::on_llvmpipe() ? 1.2 : 1.45)
       << edge << " / " << beside << " over " << n << " borders";
 }
 
