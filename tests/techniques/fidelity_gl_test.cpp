@@ -575,8 +575,9 @@ TEST_F(Fidelity, VrsShowsNoTileStructure) {
   // the fade removed, this ratio is 1.5 on llvmpipe (1.16 with it). The
   // error steps here average a tenth of a code, so a renderer that rounds
   // otherwise moves the ratio: an H100's frames are within 2 codes of
-  // llvmpipe's everywhere, and its ratio is 1.41 (its native frame alone,
-  // judged against llvmpipe's vrs frame, gives 1.32). There it is held at 1.45.
+  // llvmpipe's everywhere, and its ratio is 1.41 (either of its two frames
+  // paired with the other from llvmpipe gives 1.21-1.32). There it is held
+  // at 1.45.
   const int W = 960, H = 540;
   auto scene = load_scene("cheap");
   const Image ref = native(*scene, W, H);
