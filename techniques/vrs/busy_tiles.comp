@@ -6,7 +6,7 @@
 // left unshaded (alpha 0) forms no pair. Other tiles are left as they are.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r8ui, binding = 0) uniform writeonly uimage2D u_busy;
-uniform usampler2D u_classes;  // the frame's class per tile
+uniform usampler2D u_classes;  // the frame's class per tile (bits 0-2)
 uniform sampler2D u_target;    // class u_class's target (sRGB: fetched linear)
 uniform int u_class;
 uniform ivec2 u_rate;   // the class's rate in pixels
@@ -28,7 +28,7 @@ int differs(vec4 a, vec4 b) {
 void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(t, textureSize(u_classes, 0)))) return;
-  if (int(texelFetch(u_classes, t, 0).r) != u_class) return;
+  if (int(texelFetch(u_classes, t, 0).r & 7u) != u_class) return;
   ivec2 size = textureSize(u_target, 0);
   ivec2 lo = t * u_tile / u_rate;
   ivec2 hi = (min((t + 1) * u_tile, u_frame) - 1) / u_rate;

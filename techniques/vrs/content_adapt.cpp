@@ -90,6 +90,15 @@ void ContentAdapt::mark(std::span<const std::uint8_t> busy,
   }
 }
 
+std::vector<std::uint8_t> seen_by_neighbours(const std::vector<std::uint8_t>& classes,
+                                             const std::vector<std::uint8_t>& refined) {
+  std::vector<std::uint8_t> seen = classes;
+  if (refined.size() != seen.size()) return seen;
+  for (size_t t = 0; t < seen.size(); ++t)
+    if (refined[t] && seen[t] == kRefinedClass) seen[t] = static_cast<std::uint8_t>(kClasses - 1);
+  return seen;
+}
+
 bool ContentAdapt::any_held() const {
   return std::any_of(hold_.begin(), hold_.end(), [](int h) { return h > 0; });
 }

@@ -47,6 +47,11 @@ void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int he
           [&](std::span<const std::uint8_t> busy) { a.mark(busy, last_classes_, measured_); });
     a.settle();
   }
+  // The tiles adapt refines this frame: the reconstruction does not fade
+  // their neighbours into them.
+  refined_.assign(classes.of_tile.size(), 0);
+  for (size_t t = 0; t < classes.of_tile.size(); ++t)
+    refined_[t] = a.held(t) && adapt_refines(classes.of_tile[t]) ? 1 : 0;
   a.refine(classes);
 }
 
@@ -60,8 +65,14 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   last_size_ = {W, H};
   // The classes around each tile: its finest neighbour, and which classes
   // it borders.
-  const Grid grid{classes.of_tile, neighbourhood_classes(classes.of_tile, gx, gy), gx, gy};
-  upload_classes(classes_, grid_, gx, gy, classes.of_tile);
+  const std::vector<std::uint8_t> seen = seen_by_neighbours(classes.of_tile, refined_);
+  const Grid grid{classes.of_tile, neighbourhood_classes(seen, gx, gy), gx, gy};
+  // The classes texture: a tile's own class in bits 0-2, as its neighbours
+  // see it in bits 3-5.
+  std::vector<std::uint8_t> packed(seen.size());
+  for (size_t t = 0; t < seen.size(); ++t)
+    packed[t] = static_cast<std::uint8_t>(classes.of_tile[t] | seen[t] << 3);
+  upload_classes(classes_, grid_, gx, gy, packed);
   FrameStats s;
   s.native_pixels = double(W) * H;
   if (scene.info().has_meshes) scene.prepass(View::full(W, H));

@@ -93,6 +93,7 @@ class EmulatedPath {
   /// whose read-back is queued.
   std::optional<BusyTiles> busy_;
   std::array<bool, kClasses> measured_{};
+  std::vector<std::uint8_t> refined_;  ///< per tile: refined by adapt this frame
 };
 
 }  // namespace foveate::tech::vrs

@@ -4,7 +4,10 @@
 // at their common border, so the finer side (the native fovea included) is
 // untouched and no tile edge shows. Drawn over those tiles only; every other
 // tile is one bilinear read of its class (reconstruct_copy.frag).
-uniform usampler2D u_classes;  // one texel per tile: index into the rates (GL rows)
+// One texel per tile (GL rows): its class (an index into the rates) in bits
+// 0-2, the class its neighbours see in bits 3-5 (a tile refined by adapt
+// is seen as the coarsest: nothing fades into it).
+uniform usampler2D u_classes;
 uniform sampler2D u_class0, u_class1, u_class2, u_class3, u_class4, u_class5, u_class6;
 uniform vec2 u_extent[7];  // per class: its target's size in screen pixels (texels x rate)
 uniform vec2 u_shift[7];   // per class: (rate - 1) / 2, where its samples sit (vrs.cpp)
@@ -26,7 +29,7 @@ void main() {
   vec2 p = gl_FragCoord.xy;
   ivec2 tile = ivec2(p) / u_tile;
   ivec2 grid = textureSize(u_classes, 0);
-  int c = int(texelFetch(u_classes, tile, 0).r);
+  int c = int(texelFetch(u_classes, tile, 0).r & 7u);
   vec3 own = class_colour(c, p);
   float nearest = float(u_tile);
   int finer = c;
@@ -34,7 +37,7 @@ void main() {
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 n = tile + ivec2(dx, dy);
       if (any(lessThan(n, ivec2(0))) || any(greaterThanEqual(n, grid))) continue;
-      int k = int(texelFetch(u_classes, n, 0).r);
+      int k = int(texelFetch(u_classes, n, 0).r >> 3);
       // Finer: a lower index (the rates are ordered by pixels per fragment,
       // 2x4 before 4x2 and 1x2 before 2x1), so every border between classes fades.
       if (k >= c) continue;

@@ -157,7 +157,7 @@ TechniqueInfo vrs_info() {
             "4-pixel spacing where smooth content does not (0 = off; the driver's rates, with "
             "edge_contrast=0, are not refined: plan those at margin 1.5, as foveate rates does)",
             "", ParamType::Real, 0.0, 1.0, 0.25),
-      {0.0, 0.25, 0.5}));
+      {0.0, 0.1, 0.25, 0.5}));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

@@ -153,5 +153,24 @@ TEST(ContentAdapt, BusyTilesMarkedFromTheGpuCountAsMeasuredOnes) {
   EXPECT_FALSE(a.held(2));
 }
 
+TEST(ContentAdapt, NoNeighbourFadesIntoARefinedTile) {
+  // A row of four tiles: a model 2x2 tile, a 4x4 tile, a refined tile (4x4
+  // by the model, shaded at 2x2) and a 4x4 tile. Neighbours see the refined
+  // tile as the coarsest class, so the 4x4 tiles beside it do not fade into
+  // it (their neighbourhood has no 2x2 bit from it); the model's 2x2 tile
+  // still pulls the fade of the 4x4 tile beside it.
+  const std::vector<std::uint8_t> classes = {k2x2, k4x4, k2x2, k4x4};
+  const std::vector<std::uint8_t> refined = {0, 0, 1, 0};
+  const std::vector<std::uint8_t> seen = seen_by_neighbours(classes, refined);
+  EXPECT_EQ(seen, (std::vector<std::uint8_t>{k2x2, k4x4, k4x4, k4x4}));
+  const std::vector<std::uint8_t> near = neighbourhood_classes(seen, 4, 1);
+  EXPECT_EQ(finest_of(near[1]), k2x2);  // beside the model's 2x2 tile
+  EXPECT_EQ(finest_of(near[3]), k4x4);  // beside the refined tile only
+  // A refined tile merged into a finer class (merge_small_classes) is that
+  // class to its neighbours; without refined tiles nothing changes.
+  EXPECT_EQ(seen_by_neighbours({0, k4x4}, {1, 0}), (std::vector<std::uint8_t>{0, k4x4}));
+  EXPECT_EQ(seen_by_neighbours(classes, {}), classes);
+}
+
 }  // namespace
 }  // namespace foveate::tech::vrs
