@@ -61,7 +61,6 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   std::array<bool, kClasses> present{};
   for (int k = 0; k < kClasses; ++k) present[size_t(k)] = classes.count[size_t(k)] > 0;
   last_classes_ = classes.of_tile;
-  last_present_ = present;
   last_size_ = {W, H};
   // The classes around each tile: its finest neighbour, and which classes
   // it borders.

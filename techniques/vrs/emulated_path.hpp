@@ -84,10 +84,9 @@ class EmulatedPath {
   std::array<gpu::RenderTarget, kClasses> targets_;
   std::array<gpu::RenderTarget, kClasses> scratch_;  ///< supersample_edges' copies
   std::optional<ContentAdapt> adapt_;
-  /// The last frame's classes (merged), those present and its size, which
-  /// its targets hold.
+  /// The last frame's classes (merged) and its size, which its targets
+  /// hold.
   std::vector<std::uint8_t> last_classes_;
-  std::array<bool, kClasses> last_present_{};
   std::array<int, 2> last_size_{};
   /// adapt's measure on the GPU, and the classes it measured in the frame
   /// whose read-back is queued.
