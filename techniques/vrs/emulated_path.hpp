@@ -11,7 +11,8 @@
 // objects, highlights and procedural texture, which is where FovVideoVDP
 // finds vrs's error. Then the frame is put together in linear light: each pixel reads
 // its class bilinearly, and a tile next to a finer one fades into it over one
-// tile, so the 1x1 fovea is native and no tile edge shows. Every pass is
+// tile, so the 1x1 fovea is native and no tile edge shows (a tile refined by
+// `adapt` pulls no fade: seen_by_neighbours). Every pass is
 // drawn over the tiles that need it, so each output pixel runs one shader
 // once.
 #include <array>
@@ -39,8 +40,8 @@ class EmulatedPath {
   static constexpr int kAdaptHold = 8;
   /// With `adapt`: takes the busy tiles of what the last frame shaded
   /// (measured on the GPU at its end and read back now, with no stall) and
-  /// refines this frame's
-  /// `classes` of a gx x gy grid for a width x height frame. A no-op without.
+  /// refines this frame's `classes` of a gx x gy grid for a width x height
+  /// frame. A no-op without.
   void adapt(TileClasses& classes, int gx, int gy, int width, int height);
   /// Renders with `classes` (merged: merge_small_classes) of a gx x gy grid.
   FrameStats render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx, int gy,
@@ -69,12 +70,12 @@ class EmulatedPath {
   /// reconstruction reads of it.
   Shaded shade_class(PassKit& kit, Scene& scene, const Grid& grid, int k, int width, int height);
   /// Puts the frame together from the class targets into `target`.
+  void reconstruct(PassKit& kit, const Grid& grid, const std::array<bool, kClasses>& present,
+                   const gpu::RenderTarget& target);
   /// With `adapt`: measures the busy tiles in this frame's class targets
   /// for the next frame's adapt(), and queues their read-back.
   void measure_busy_tiles(const PassKit& kit, const std::array<bool, kClasses>& present, int gx,
                           int gy, int width, int height);
-  void reconstruct(PassKit& kit, const Grid& grid, const std::array<bool, kClasses>& present,
-                   const gpu::RenderTarget& target);
 
   int tile_;
   double edge_;
