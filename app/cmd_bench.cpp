@@ -40,6 +40,7 @@ struct BenchArgs {
   bool json = false;
   bool allow_fallback = false;
   std::string shard;
+  std::string memory_limit;
 };
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -90,6 +91,8 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   o.side_by_side = a.side_by_side;
   if (!a.sweep.empty()) o.sweep = parse_sweep(a.sweep);
   if (!a.shard.empty()) o.shard = bench::parse_shard(a.shard);
+  if (!a.memory_limit.empty())
+    o.memory_limit_bytes = double(parse_byte_size(a.memory_limit, "--memory-limit"));
   bench::validate(o);
   return o;
 }
@@ -124,6 +127,7 @@ void add_common(CLI::App* sub, BenchArgs& a) {
   sub->add_flag("--allow-fallback", a.allow_fallback,
                 "Measure even when a live gaze source (--gaze pupil) never answers: the gaze "
                 "falls back to the centre (an error otherwise)");
+  add_memory_limit_option(sub, a.memory_limit, "run");
   sub->add_flag("--passes", a.passes,
                 "Time every pass (G-buffer, shading, temporal, composite, ...) and report where "
                 "each technique's frame goes; glFinish between passes on software renderers");

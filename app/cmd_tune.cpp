@@ -40,6 +40,7 @@ struct TuneArgs {
   std::string reference = "ssaa:4";
   bool grid = false;
   std::string shard;
+  std::string memory_limit;
   std::string out = "tune-out";
   bool overwrite = false;
   bool json = false;
@@ -72,6 +73,8 @@ bench::TuneOptions to_options(const TuneArgs& a) {
   o.bench.command = invocation();
   o.grid = a.grid;
   if (!a.shard.empty()) o.shard = bench::parse_shard(a.shard);
+  if (!a.memory_limit.empty())
+    o.bench.memory_limit_bytes = double(parse_byte_size(a.memory_limit, "--memory-limit"));
   bench::validate(o);
   return o;
 }
@@ -158,6 +161,7 @@ void register_tune(CLI::App& app) {
   sub->add_option("--shard", a->shard,
                   "Run job K of N (K/N) of a fixed grid of candidates; 'foveate merge' joins the "
                   "jobs' --out folders");
+  add_memory_limit_option(sub, a->memory_limit, "candidate");
   sub->add_option("--out", a->out, "Output folder: tune.json, tune.md, params.json, report.html")
       ->capture_default_str();
   add_overwrite_flag(sub, a->overwrite);

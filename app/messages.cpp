@@ -23,6 +23,7 @@ std::string flag_for(const std::string& field) {
       {"gaze", "--gaze"},
       {"image_metrics", "--no-metrics"},
       {"margin", "--margin"},
+      {"memory_limit", "--memory-limit"},
       {"out", "--out"},
       {"params", "--param"},
       {"photometry.ambient_lux", "--ambient-lux"},

@@ -68,6 +68,16 @@ void add_acuity_options(CLI::App* sub, std::string& preset, std::optional<double
                   "Custom MAR slope m in degrees per degree of eccentricity (instead of --acuity)");
 }
 
+void add_memory_limit_option(CLI::App* sub, std::string& limit, const std::string& what) {
+  sub->add_option("--memory-limit", limit,
+                  "Memory the " + what +
+                      "s judged at once may hold (e.g. 8G; default 70 % of what is available "
+                      "at the start): FovVideoVDP keeps about 0.45 GB per " +
+                      what + " at 1920x1080, and beyond the limit the " + what +
+                      "s are judged in groups, one after another, each timed against its own "
+                      "native (results.json: memory_groups)");
+}
+
 namespace {
 
 void add_scene_file_options(CLI::App* sub, SessionArgs& a) {

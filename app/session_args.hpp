@@ -54,6 +54,10 @@ void add_session_options(CLI::App* sub, SessionArgs& args, bool scene_required =
 /// --acuity (alias --quality) and --slope, registered with one help text (the commands that
 /// take an acuity model without a session).
 void add_acuity_options(CLI::App* sub, std::string& preset, std::optional<double>& slope);
+
+/// --memory-limit: what the judged runs (`what`: "run", "candidate") may
+/// hold at once (BenchOptions::memory_limit_bytes).
+void add_memory_limit_option(CLI::App* sub, std::string& limit, const std::string& what);
 /// The typed options; an error in what the text says names the flag, and
 /// the library's check of the values names the field (main() writes it as
 /// its flag). An empty --date gives `default_date`.

@@ -175,7 +175,7 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
              const std::string& gaze, const std::string& reference, bool metrics, py::handle sweep,
              double fps, const std::string& out, bool overwrite, const std::string& video,
              bool side_by_side, bool images, bool stereo, py::handle vergence,
-             double frame_timeout_s, const std::string& shard) {
+             double frame_timeout_s, const std::string& shard, double memory_limit) {
   bench::BenchOptions o;
   keywords([&] {
     o.session = session_from(scene, size, display, acuity_preset, quality, slope, margin, gaze, fps,
@@ -191,6 +191,7 @@ py::dict run(const std::string& scene, std::optional<std::vector<std::string>> t
     o.side_by_side = side_by_side;
     o.sweep = sweep_from(sweep);
     if (!shard.empty()) o.shard = bench::parse_shard(shard);
+    o.memory_limit_bytes = memory_limit;
     bench::validate(o);
   });
   prepare_out(out, overwrite);
@@ -217,7 +218,7 @@ py::dict tune(const std::vector<std::string>& scenes,
               int frames, int warmup, const std::string& display, const std::string& acuity_preset,
               std::optional<double> slope, const std::string& gaze, const std::string& reference,
               double fps, bool grid, const std::string& out, bool overwrite, double frame_timeout_s,
-              const std::string& shard) {
+              const std::string& shard, double memory_limit) {
   bench::TuneOptions o;
   keywords([&] {
     o.bench.session =
@@ -232,6 +233,7 @@ py::dict tune(const std::vector<std::string>& scenes,
     o.bench.command = "foveate.tune (Python)";
     o.grid = grid;
     if (!shard.empty()) o.shard = bench::parse_shard(shard);
+    o.bench.memory_limit_bytes = memory_limit;
     bench::validate(o);
   });
   prepare_out(out, overwrite);
@@ -383,6 +385,7 @@ void bind_bench(py::module_& m) {
         py::arg("video") = "", py::arg("side_by_side") = false, py::arg("images") = false,
         py::arg("stereo") = false, py::arg("vergence") = py::none(),
         py::arg("frame_timeout_s") = defaults.session.frame_timeout_s, py::arg("shard") = "",
+        py::arg("memory_limit") = 0.0,
         R"(Runs `foveate bench` in this process (headless OpenGL) and returns the results
 as a dict with the keys of results.json (docs/bench-json.md): "results" holds one
 entry per technique (mean_ms, median_ms, speedup (mean over mean), speedup_ci95,
@@ -399,7 +402,9 @@ presets; quality= is the same, its former name) or slope a MAR slope; sweep
 results.json, .csv, .md, report.html (one holding an earlier run's output is
 refused unless overwrite=True, which removes those files first); video a
 file (.mp4) of the frames. shard "K/N": job K of N (every N-th run, native in
-each), as --shard; merge() joins the jobs' outputs.
+each), as --shard; merge() joins the jobs' outputs. memory_limit: bytes the
+runs judged at once may hold, as --memory-limit (0: 70 % of what is available;
+beyond it the runs are judged in groups, "memory_groups" in the result).
 images=True adds each technique's last frame ("image", HxWx3 uint8) and
 "native_image". stereo=True renders both eyes of a stereo display
 (display="hmd-quest2"; size is one eye's; vergence in metres, 2 or "inf"):
@@ -431,7 +436,7 @@ technique's layers or regions and the gaze.)");
         py::arg("fps") = tune_defaults.bench.session.fps, py::arg("grid") = false,
         py::arg("out") = "", py::arg("overwrite") = false,
         py::arg("frame_timeout_s") = tune_defaults.bench.session.frame_timeout_s,
-        py::arg("shard") = "",
+        py::arg("shard") = "", py::arg("memory_limit") = 0.0,
         R"(Runs `foveate tune` in this process: for every technique (techniques: a list,
 None = every one but native) the fastest setting of its tuned parameters whose
 FovVideoVDP JOD stays within `bound` of native's on every scene (settings within
@@ -443,7 +448,8 @@ below_native, pixel_ratio, within_bound), "chosen" (technique -> parameters),
 the frames after them), and "notes". out: a folder for tune.json, tune.md,
 params.json (for --params-file) and report.html, refused if it holds an earlier
 run's output unless overwrite=True. grid=True evaluates the fixed grid instead
-of the staged search; shard "K/N" its K-th slice of N (merge() joins them).
+of the staged search; shard "K/N" its K-th slice of N (merge() joins them);
+memory_limit as in bench().
 Other keywords as in bench().)");
   m.def("merge", &merge, py::arg("shards"), py::kw_only(), py::arg("out") = "",
         py::arg("overwrite") = false,

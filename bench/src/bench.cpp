@@ -1,7 +1,14 @@
 #include "foveate/bench/bench.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "bench_run.hpp"
 #include "foveate/bench/frame_order.hpp"
@@ -65,6 +72,16 @@ void validate(const BenchOptions& o) {
                                    std::to_string(o.shard.index + 1) + "/" +
                                    std::to_string(o.shard.count));
   }
+  if (!(o.memory_limit_bytes >= 0.0) || !std::isfinite(o.memory_limit_bytes)) {
+    throw OptionError("memory_limit",
+                      "expected a size of at least 0 bytes (0 = 70 % of the "
+                      "memory available)");
+  }
+  if (o.group.count < 1 || o.group.index < 0 || o.group.index >= o.group.count) {
+    throw OptionError("group", "expected group index 0 <= K < N, got " +
+                                   std::to_string(o.group.index) + " of " +
+                                   std::to_string(o.group.count));
+  }
   if (o.reference != 1 && !(o.reference >= 2 && o.reference <= 8)) {
     throw OptionError("reference", "expected 1 (native itself) or 2..8 samples per pixel and axis");
   }
@@ -81,9 +98,143 @@ void validate(const BenchOptions& o) {
   }
 }
 
+double available_memory_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key, unit;
+  double kib = 0;
+  while (meminfo >> key >> kib >> unit) {
+    if (key == "MemAvailable:") return kib * 1024.0;
+  }
+  const long pages = ::sysconf(_SC_AVPHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
+}
+
+double judged_run_bytes(const BenchOptions& o) {
+  if (!o.image_metrics) return 0.0;
+  metrics::QualityOptions q;
+  q.diagnostics = o.diagnostics;
+  q.fvvdp_options.fps = o.session.fps;
+  const int w = o.session.size.width, h = o.session.size.height;
+  // A stereo run is judged in four series of one eye's size (both eyes as
+  // two streams of one, and each eye alone) and renders two views.
+  const double series = o.session.stereo ? 4.0 : 1.0, views = o.session.stereo ? 2.0 : 1.0;
+  // About 30 bytes a pixel for a technique's targets and history.
+  return series * metrics::QualitySeries::memory_estimate(w, h, o.frames, q) +
+         views * 30.0 * double(w) * double(h);
+}
+
+namespace {
+
+// "1.5 GiB", "300 MiB".
+std::string memory_text(double bytes) {
+  const double mib = bytes / double(1 << 20);
+  return mib >= 1024.0 ? format_number(mib / 1024.0, 2) + " GiB"
+                       : format_number(std::round(mib), 0) + " MiB";
+}
+
+}  // namespace
+
+int judging_groups(const BenchOptions& o, double limit_bytes) {
+  const double per_run = judged_run_bytes(o);
+  if (limit_bytes <= 0.0 || per_run <= 0.0) return 1;
+  // This shard's runs (the count add_runs deals it; every technique listed
+  // or registered, which may be more than the scene runs).
+  int runs = 0;
+  if (!o.runs.empty()) {
+    runs = static_cast<int>(o.runs.size());
+  } else {
+    for (const std::string& t : o.techniques.value_or(technique_names())) {
+      if (t != "native")
+        runs += o.sweep.applies_to(t) ? static_cast<int>(o.sweep.values.size()) : 1;
+    }
+  }
+  const int mine = runs / o.shard.count + (o.shard.index < runs % o.shard.count ? 1 : 0);
+  const auto at_once = static_cast<int>(std::floor(limit_bytes / per_run));
+  const auto gib = [](double bytes) { return memory_text(bytes); };
+  if (at_once < 2) {
+    throw OptionError("memory_limit",
+                      FieldText{"{memory_limit}: " + gib(limit_bytes) +
+                                    " holds not even native and one run judged at " +
+                                    std::to_string(o.session.size.width) + "x" +
+                                    std::to_string(o.session.size.height) + " (about " +
+                                    gib(per_run) + " each); allow more, or judge a smaller {size}",
+                                {"memory_limit", "size"}});
+  }
+  const int groups = mine <= 0 ? 1 : (mine + at_once - 2) / (at_once - 1);
+  if (groups > 1 && !o.video.empty()) {
+    throw OptionError("video",
+                      FieldText{"{video}: every run's frames are tiled in one video, but " +
+                                    std::to_string(mine + 1) + " runs judged at once (" +
+                                    gib((mine + 1) * per_run) + ") exceed {memory_limit} (" +
+                                    gib(limit_bytes) + "); write the video of fewer {techniques}",
+                                {"video", "memory_limit", "techniques"}});
+  }
+  return groups;
+}
+
+namespace {
+
+// The groups' results as one: native from the first, every other run from
+// the group that measured it, in the order of one run.
+BenchResult join_groups(std::vector<BenchResult> parts) {
+  BenchResult out = std::move(parts.front());
+  for (size_t g = 1; g < parts.size(); ++g) {
+    out.warmup = std::max(out.warmup, parts[g].warmup);
+    for (TechniqueResult& r : parts[g].results) {
+      if (r.run_index != 0) out.results.push_back(std::move(r));
+    }
+  }
+  std::stable_sort(
+      out.results.begin(), out.results.end(),
+      [](const TechniqueResult& a, const TechniqueResult& b) { return a.run_index < b.run_index; });
+  out.techniques.clear();
+  for (const TechniqueResult& r : out.results) out.techniques.push_back(r.technique);
+  out.memory_groups = static_cast<int>(parts.size());
+  out.options.group = {};
+  return out;
+}
+
+}  // namespace
+
 BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbacks) {
   validate(options);
-  return BenchRun(options, callbacks).run();
+  const double limit =
+      options.memory_limit_bytes > 0 ? options.memory_limit_bytes : 0.7 * available_memory_bytes();
+  const int groups = options.group.count > 1 ? 1 : judging_groups(options, limit);
+  if (groups == 1) return BenchRun(options, callbacks).run();
+  if (callbacks.session.notice) {
+    callbacks.session.notice(
+        {NoticeKind::Note,
+         FieldText{"the runs judged at once would hold more memory than {memory_limit} allows (" +
+                       memory_text(limit) + "): they are judged in " + std::to_string(groups) +
+                       " groups, one after another, each timed against its own native",
+                   {"memory_limit"}}});
+  }
+  // One progress over every group: the first group's count of steps for
+  // each (the groups differ by a run at most), one finish at the end.
+  BenchCallbacks each = callbacks;
+  each.finish = nullptr;
+  // Each group sets up the same session: what it notes once is said once.
+  auto said = std::make_shared<std::set<std::string>>();
+  if (callbacks.session.notice) {
+    each.session.notice = [said, notice = callbacks.session.notice](const Notice& n) {
+      if (said->insert(n.text.render()).second) notice(n);
+    };
+  }
+  std::vector<BenchResult> parts;
+  for (int g = 0; g < groups; ++g) {
+    BenchOptions o = options;
+    o.group = {g, groups};
+    each.start = nullptr;
+    if (g == 0 && callbacks.start) {
+      each.start = [&](int steps, int metrics_steps) {
+        callbacks.start(steps * groups, metrics_steps * groups);
+      };
+    }
+    parts.push_back(BenchRun(o, each).run());
+  }
+  if (callbacks.finish) callbacks.finish();
+  return join_groups(std::move(parts));
 }
 
 BenchResult BenchRun::run() {

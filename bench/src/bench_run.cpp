@@ -134,7 +134,14 @@ void BenchRun::add_runs() {
   }
   int index = 0;
   const Shard& shard = options_.shard;
-  const auto mine = [&] { return (index - 1) % shard.count == shard.index; };
+  const Shard& group = options_.group;
+  // Every shard.count-th run from shard.index, and of those every
+  // group.count-th from group.index (run_bench's groups).
+  int dealt = 0;
+  const auto mine = [&] {
+    if ((index - 1) % shard.count != shard.index) return false;
+    return dealt++ % group.count == group.index;
+  };
   if (!options_.runs.empty()) {
     std::set<std::string> skipped;
     for (const RunSpec& spec : options_.runs) {

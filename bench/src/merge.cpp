@@ -91,6 +91,7 @@ void read_options(const nlohmann::json& j, const std::string& where, BenchResult
   o.reference = reference.rfind("ssaa:", 0) == 0 ? std::stoi(reference.substr(5)) : 1;
   b.warmup = j.value("warmup", 0);
   o.warmup = b.warmup;
+  b.memory_groups = j.value("memory_groups", 1);
   if (const auto sw = j.find("sweep"); sw != j.end() && sw->is_object()) {
     o.sweep.key = sw->value("key", "");
     o.sweep.values = sw->value("values", std::vector<double>{});

@@ -160,6 +160,7 @@ nlohmann::json bench_json(const BenchResult& b) {
           {"shard", b.merged_shards > 0 ? nlohmann::json{{"merged", b.merged_shards}}
                                         : nlohmann::json{{"index", b.options.shard.index},
                                                          {"count", b.options.shard.count}}},
+          {"memory_groups", b.memory_groups},
           {"settings", bench_settings_json(b)},
           {"results", results}};
 }

@@ -418,6 +418,56 @@ TEST(Bench, ShardsMergedEqualOneRun) {
             std::string::npos);
 }
 
+// Runs that do not fit the memory limit together are judged in groups, one
+// after another, each with native: the same runs in the same order with the
+// same pixels and JOD as all at once (timings aside), results.json says how
+// many groups, and what every group notes is said once.
+TEST(Bench, GroupsBeyondTheMemoryLimitEqualOneRun) {
+  BenchOptions o = tiny();
+  o.session.size = {96, 54};
+  o.reference = 2;
+  o.techniques = std::vector<std::string>{"native", "layered", "inset", "checkerboard"};
+  const BenchResult whole = run(o);
+  EXPECT_EQ(whole.memory_groups, 1);
+  BenchOptions grouped = o;
+  grouped.memory_limit_bytes = 2.5 * judged_run_bytes(o);  // native and one run at a time
+  std::vector<std::string> notes;
+  BenchCallbacks callbacks;
+  callbacks.session.notice = [&](const Notice& n) {
+    if (n.kind == NoticeKind::Warning) ADD_FAILURE() << n.text.render();
+    notes.push_back(n.text.render());
+  };
+  int starts = 0, finishes = 0;
+  callbacks.start = [&](int, int) { ++starts; };
+  callbacks.finish = [&] { ++finishes; };
+  const BenchResult r = run_bench(grouped, callbacks);
+  EXPECT_EQ(r.memory_groups, 3);
+  EXPECT_EQ(starts, 1);
+  EXPECT_EQ(finishes, 1);
+  ASSERT_EQ(r.results.size(), whole.results.size());
+  for (size_t i = 0; i < whole.results.size(); ++i) {
+    const TechniqueResult &a = whole.results[i], &b = r.results[i];
+    EXPECT_EQ(a.technique, b.technique);
+    EXPECT_EQ(a.run_index, b.run_index);
+    EXPECT_EQ(a.shaded_pixels, b.shaded_pixels);
+    ASSERT_TRUE(a.metrics && b.metrics && a.metrics->fvvdp && b.metrics->fvvdp);
+    EXPECT_DOUBLE_EQ(a.metrics->fvvdp->jod, b.metrics->fvvdp->jod) << a.technique;
+    EXPECT_GT(b.speedup, 0.0);
+  }
+  EXPECT_EQ(r.techniques, whole.techniques);
+  // The grouping note, then each note of the set-up (the size's little to
+  // save) once, not once per group.
+  ASSERT_FALSE(notes.empty());
+  EXPECT_NE(notes[0].find("judged in 3 groups"), std::string::npos) << notes[0];
+  for (size_t i = 0; i < notes.size(); ++i)
+    for (size_t j = i + 1; j < notes.size(); ++j) EXPECT_NE(notes[i], notes[j]);
+  const std::string out = fresh_dir("foveate-bench-groups");
+  write_bench_report(r, out);
+  EXPECT_EQ(read_json(out + "/results.json")["memory_groups"].get<int>(), 3);
+  EXPECT_EQ(read_bench_results(read_json(out + "/results.json"), out).memory_groups, 3);
+  std::filesystem::remove_all(out);
+}
+
 // tune: every margin evaluated beside native; the choice is the fastest
 // setting within the bound (or one within 5 % of its speed that keeps more
 // JOD), its parameters a file that a benchmark takes.

@@ -265,6 +265,54 @@ TEST(Options, RunsAndShardsAreChecked) {
   EXPECT_EQ(field_of([&] { validate(t); }), "techniques");
 }
 
+// Runs that would hold more memory together than the limit are judged in
+// groups, each with native: at most (limit / one run's bytes) runs at once.
+// A limit that holds not even native and one run, or a video (every run's
+// frames tiled) that would need groups, is refused naming the field.
+TEST(Options, RunsBeyondTheMemoryLimitAreJudgedInGroups) {
+  BenchOptions o;
+  o.session.size = {1920, 1080};
+  o.frames = 8;
+  o.techniques = std::vector<std::string>{"layered", "inset", "vrs", "marwarp", "checkerboard"};
+  // FovVideoVDP's state (150 bytes a pixel and 8 per frame its filters
+  // reach: 9 frames here) and 30 for the technique.
+  const double per_run = judged_run_bytes(o);
+  EXPECT_DOUBLE_EQ(per_run, 1920.0 * 1080.0 * (150.0 + 8.0 * 9.0 + 30.0));
+  EXPECT_EQ(judging_groups(o, 0.0), 1);             // no limit
+  EXPECT_EQ(judging_groups(o, 6.0 * per_run), 1);   // native and 5 runs fit
+  EXPECT_EQ(judging_groups(o, 5.99 * per_run), 2);  // 4 at a time: 4 + 1
+  EXPECT_EQ(judging_groups(o, 3.0 * per_run), 3);   // 2 at a time: 2 + 2 + 1
+  EXPECT_EQ(judging_groups(o, 2.0 * per_run), 5);   // 1 at a time
+  EXPECT_EQ(field_of([&] { (void)judging_groups(o, 1.99 * per_run); }), "memory_limit");
+  // A sweep counts each value; a shard only its own runs (3 of 5 here).
+  o.sweep = Sweep::range("margin", 1.0, 3.0, 1.0);
+  EXPECT_EQ(judging_groups(o, 2.0 * per_run), 15);
+  o.shard = {0, 5};
+  EXPECT_EQ(judging_groups(o, 2.0 * per_run), 3);
+  o.shard = {};
+  o.sweep = {};
+  // Stereo: four series of one eye's size, two views rendered.
+  BenchOptions stereo = o;
+  stereo.session.stereo = true;
+  EXPECT_DOUBLE_EQ(judged_run_bytes(stereo), 1920.0 * 1080.0 * (4.0 * (150.0 + 72.0) + 60.0));
+  // Without image metrics nothing is judged: one group whatever the limit.
+  BenchOptions plain = o;
+  plain.image_metrics = false;
+  EXPECT_EQ(judged_run_bytes(plain), 0.0);
+  EXPECT_EQ(judging_groups(plain, 1.0), 1);
+  o.video = "bench.mp4";
+  EXPECT_EQ(judging_groups(o, 6.0 * per_run), 1);
+  EXPECT_EQ(field_of([&] { (void)judging_groups(o, 3.0 * per_run); }), "video");
+  o.video.clear();
+  o.memory_limit_bytes = -1.0;
+  EXPECT_EQ(field_of([&] { validate(o); }), "memory_limit");
+  o.memory_limit_bytes = 0.0;
+  o.group = {1, 1};
+  EXPECT_EQ(field_of([&] { validate(o); }), "group");
+  // The machine says how much it has.
+  EXPECT_GT(available_memory_bytes(), 0.0);
+}
+
 // The table and results.json say which runs had little to save (†) and which
 // frames ran in the gaze's fallback (‡), so that no figure silently measures
 // a fallback.

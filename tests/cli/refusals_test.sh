@@ -127,4 +127,12 @@ run render --scene cheap --size 64x36 --technique checkerboard --param checkerbo
 check "decreasing checkerboard thresholds show their values" \
   '[[ $rc -eq 1 && "$err" == *"must not decrease, got 30, 10,"* ]] || { echo "  rc $rc: $err"; false; }'
 
+# --- A memory limit that holds not even native and one judged run.
+run bench --scene cheap --size 640x360 --frames 1 --warmup 0 --techniques layered --memory-limit 20M --out "$tmp/b-mem"
+check "bench --memory-limit too small: exit 1 naming the flag and the size, nothing written" \
+  '[[ $rc -eq 1 && "$err" == *"--memory-limit: 20 MiB holds not even native and one run"* && "$err" == *"--size"* && ! -e "$tmp/b-mem/results.json" ]] || { echo "  rc $rc: $err"; false; }'
+run bench --scene cheap --size 64x36 --frames 1 --warmup 0 --techniques layered --memory-limit lots --out "$tmp/b-mem"
+check "bench --memory-limit lots: exit 1 naming the flag" \
+  '[[ $rc -eq 1 && "$err" == *"--memory-limit"* ]] || { echo "  rc $rc: $err"; false; }'
+
 exit $fail

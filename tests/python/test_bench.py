@@ -163,6 +163,20 @@ def test_shards_merged_equal_one_run(fv, tmp_path):
         fv.tune(scenes=["cheap"], shard="x")
 
 
+def test_runs_beyond_the_memory_limit_are_judged_in_groups(fv):
+    small = dict(scene="cheap", techniques=["native", "layered", "inset", "checkerboard"],
+                 size=(96, 54), frames=2, warmup=1, reference="ssaa:2")
+    whole = fv.bench(**small)
+    # One run at 96x54 over 2 frames holds about 1.1 MB: native and one at a time.
+    grouped = fv.bench(**small, memory_limit=2.5e6)
+    assert whole["memory_groups"] == 1 and grouped["memory_groups"] == 3
+    runs = lambda r: [(t["technique"], t["shaded_pixels"], t["quality"]["jod"])
+                      for t in r["results"]]
+    assert runs(grouped) == runs(whole)
+    with pytest.raises(fv.Error, match="memory_limit: .* holds not even native and one run"):
+        fv.bench(**small, memory_limit=1e6)
+
+
 def test_tune_shards_merge(fv, tmp_path):
     small = dict(scenes=["cheap"], techniques=["inset"], size=(96, 54), frames=2, warmup=1,
                  reference="ssaa:2", bound=0.5)

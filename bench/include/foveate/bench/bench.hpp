@@ -94,6 +94,16 @@ struct BenchOptions {
   /// is an error unless this is set; then the fallback gaze is measured.
   bool allow_fallback = false;
   double connect_timeout_s = 3.0;
+  /// The memory the judged runs may hold at once, in bytes (FovVideoVDP
+  /// keeps about 200 bytes a pixel per run: 0.45 GB at 1920x1080); 0 = 70 %
+  /// of what the machine has available when the benchmark starts. Runs that
+  /// need more together are judged in groups, one group after another, each
+  /// timed against its own native (as shards are), and joined into one
+  /// result (BenchResult::memory_groups).
+  double memory_limit_bytes = 0;
+  /// Which group of this shard's runs to measure: run_bench deals them out
+  /// (every count-th run from index) when they do not fit together.
+  Shard group;
 };
 
 struct TechniqueResult {
@@ -165,6 +175,9 @@ struct BenchResult {
   std::array<Vec2d, 2> sample_eye_gaze_px{};  ///< each eye's gaze at the last frame
   /// A result merged from this many shards (merge_shards); 0 for one run.
   int merged_shards = 0;
+  /// The groups the runs were judged in to stay within the memory limit
+  /// (BenchOptions::memory_limit_bytes): 1 = all at once.
+  int memory_groups = 1;
   /// What shards of one benchmark share (results.json's "settings", as text;
   /// set by read_bench_results, empty for a result in memory).
   std::string settings_key;
@@ -188,6 +201,21 @@ void validate(const BenchOptions& options);
 
 /// "technique {key=value, ...}": an explicit run's label when it has none.
 std::string run_spec_label(const RunSpec& spec);
+
+/// The memory the machine has available now, in bytes (Linux's
+/// MemAvailable, else the free physical pages); 0 when it cannot tell.
+double available_memory_bytes();
+
+/// About how many bytes one run of `options` holds while it is judged (its
+/// technique's targets and its quality series); 0 without image metrics.
+double judged_run_bytes(const BenchOptions& options);
+
+/// How many groups run_bench judges this shard's runs in, so that each
+/// group's runs, native included, hold at most `limit_bytes` (0 = no limit:
+/// one group). Throws an OptionError naming "memory_limit" when not even
+/// native and one run fit, and "video" when a video (every run's frames
+/// tiled) would need more than one group.
+int judging_groups(const BenchOptions& options, double limit_bytes);
 
 /// Runs the benchmark. Throws an OptionError naming the field of a bad value.
 BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbacks = {});

@@ -309,6 +309,13 @@ class QualitySeries {
   [[nodiscard]] int frames() const { return frames_; }
   [[nodiscard]] const Display& display() const { return display_; }
   [[nodiscard]] const QualityOptions& options() const { return options_; }
+  /// About how many bytes a series holds at most while judging `frames`
+  /// frames of one stream at width x height with `options`: FovVideoVDP's
+  /// frames within its temporal filters' reach (test and reference) and
+  /// its per-pixel tables and pyramids. Measured (docs/performance.md), not
+  /// exact: for planning how many series fit in memory at once.
+  [[nodiscard]] static double memory_estimate(int width, int height, int frames,
+                                              const QualityOptions& options);
 
  private:
   Display display_;
