@@ -363,14 +363,39 @@ TEST(Bench, FovVideoVdpJudgesEveryRunAgainstTheReference) {
   std::filesystem::remove_all(out);
 }
 
-// A benchmark split into shards, merged, measures the same runs in the same
-// order with the same pixels and JOD as one unsharded run (timings aside);
-// merging refuses shards of other settings, repeated or missing shards.
-TEST(Bench, ShardsMergedEqualOneRun) {
+namespace {
+
+// Native and three techniques judged against a 2x2 supersampled reference.
+BenchOptions four_runs_judged() {
   BenchOptions o = tiny();
   o.session.size = {96, 54};
   o.reference = 2;
   o.techniques = std::vector<std::string>{"native", "layered", "inset", "checkerboard"};
+  return o;
+}
+
+// The same runs in the same order with the same pixels and JOD (timings
+// aside: each measured against its own native).
+void expect_same_runs(const BenchResult& whole, const BenchResult& parts) {
+  ASSERT_EQ(parts.results.size(), whole.results.size());
+  for (size_t i = 0; i < whole.results.size(); ++i) {
+    const TechniqueResult &a = whole.results[i], &b = parts.results[i];
+    EXPECT_EQ(a.technique, b.technique);
+    EXPECT_EQ(a.run_index, b.run_index);
+    EXPECT_EQ(a.shaded_pixels, b.shaded_pixels);
+    ASSERT_TRUE(a.metrics && b.metrics && a.metrics->fvvdp && b.metrics->fvvdp);
+    EXPECT_DOUBLE_EQ(a.metrics->fvvdp->jod, b.metrics->fvvdp->jod) << a.technique;
+    EXPECT_GT(b.speedup, 0.0);
+  }
+}
+
+}  // namespace
+
+// A benchmark split into shards, merged, measures the same runs in the same
+// order with the same pixels and JOD as one unsharded run (timings aside);
+// merging refuses shards of other settings, repeated or missing shards.
+TEST(Bench, ShardsMergedEqualOneRun) {
+  const BenchOptions o = four_runs_judged();
   const BenchResult whole = run(o);
   std::vector<BenchResult> shards;
   std::vector<std::string> names;
@@ -385,15 +410,7 @@ TEST(Bench, ShardsMergedEqualOneRun) {
   }
   EXPECT_EQ(shards[0].results.size(), 2u);  // native and checkerboard (run 3 of 3)
   const BenchResult merged = merge_shards(shards, names);
-  ASSERT_EQ(merged.results.size(), whole.results.size());
-  for (size_t i = 0; i < whole.results.size(); ++i) {
-    const TechniqueResult &a = whole.results[i], &b = merged.results[i];
-    EXPECT_EQ(a.technique, b.technique);
-    EXPECT_EQ(a.run_index, b.run_index);
-    EXPECT_EQ(a.shaded_pixels, b.shaded_pixels);
-    ASSERT_TRUE(a.metrics && b.metrics && a.metrics->fvvdp && b.metrics->fvvdp);
-    EXPECT_DOUBLE_EQ(a.metrics->fvvdp->jod, b.metrics->fvvdp->jod) << a.technique;
-  }
+  expect_same_runs(whole, merged);
   const std::string out = fresh_dir("foveate-bench-merged");
   write_bench_report(merged, out);
   EXPECT_EQ(read_json(out + "/results.json")["shard"]["merged"].get<int>(), 2);
@@ -423,10 +440,7 @@ TEST(Bench, ShardsMergedEqualOneRun) {
 // same pixels and JOD as all at once (timings aside), results.json says how
 // many groups, and what every group notes is said once.
 TEST(Bench, GroupsBeyondTheMemoryLimitEqualOneRun) {
-  BenchOptions o = tiny();
-  o.session.size = {96, 54};
-  o.reference = 2;
-  o.techniques = std::vector<std::string>{"native", "layered", "inset", "checkerboard"};
+  const BenchOptions o = four_runs_judged();
   const BenchResult whole = run(o);
   EXPECT_EQ(whole.memory_groups, 1);
   BenchOptions grouped = o;
@@ -444,16 +458,7 @@ TEST(Bench, GroupsBeyondTheMemoryLimitEqualOneRun) {
   EXPECT_EQ(r.memory_groups, 3);
   EXPECT_EQ(starts, 1);
   EXPECT_EQ(finishes, 1);
-  ASSERT_EQ(r.results.size(), whole.results.size());
-  for (size_t i = 0; i < whole.results.size(); ++i) {
-    const TechniqueResult &a = whole.results[i], &b = r.results[i];
-    EXPECT_EQ(a.technique, b.technique);
-    EXPECT_EQ(a.run_index, b.run_index);
-    EXPECT_EQ(a.shaded_pixels, b.shaded_pixels);
-    ASSERT_TRUE(a.metrics && b.metrics && a.metrics->fvvdp && b.metrics->fvvdp);
-    EXPECT_DOUBLE_EQ(a.metrics->fvvdp->jod, b.metrics->fvvdp->jod) << a.technique;
-    EXPECT_GT(b.speedup, 0.0);
-  }
+  expect_same_runs(whole, r);
   EXPECT_EQ(r.techniques, whole.techniques);
   // The grouping note, then each note of the set-up (the size's little to
   // save) once, not once per group.
