@@ -75,7 +75,7 @@ void add_memory_limit_option(CLI::App* sub, std::string& limit, const std::strin
                       "at the start): FovVideoVDP keeps about 0.45 GB per " +
                       what + " at 1920x1080, and beyond the limit the " + what +
                       "s are judged in groups, one after another, each timed against its own "
-                      "native (results.json: memory_groups)");
+                      "native (a note says so; in bench's results.json: memory_groups)");
 }
 
 namespace {
