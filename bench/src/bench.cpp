@@ -150,24 +150,25 @@ int judging_groups(const BenchOptions& o, double limit_bytes) {
   }
   const int mine = runs / o.shard.count + (o.shard.index < runs % o.shard.count ? 1 : 0);
   const auto at_once = static_cast<int>(std::floor(limit_bytes / per_run));
-  const auto gib = [](double bytes) { return memory_text(bytes); };
   if (at_once < 2) {
-    throw OptionError("memory_limit",
-                      FieldText{"{memory_limit}: " + gib(limit_bytes) +
-                                    " holds not even native and one run judged at " +
-                                    std::to_string(o.session.size.width) + "x" +
-                                    std::to_string(o.session.size.height) + " (about " +
-                                    gib(per_run) + " each); allow more, or judge a smaller {size}",
-                                {"memory_limit", "size"}});
+    throw OptionError(
+        "memory_limit",
+        FieldText{"{memory_limit}: " + memory_text(limit_bytes) +
+                      " holds not even native and one run judged at " +
+                      std::to_string(o.session.size.width) + "x" +
+                      std::to_string(o.session.size.height) + " (about " + memory_text(per_run) +
+                      " each); allow more, or judge a smaller {size}",
+                  {"memory_limit", "size"}});
   }
   const int groups = mine <= 0 ? 1 : (mine + at_once - 2) / (at_once - 1);
   if (groups > 1 && !o.video.empty()) {
-    throw OptionError("video",
-                      FieldText{"{video}: every run's frames are tiled in one video, but " +
-                                    std::to_string(mine + 1) + " runs judged at once (" +
-                                    gib((mine + 1) * per_run) + ") exceed {memory_limit} (" +
-                                    gib(limit_bytes) + "); write the video of fewer {techniques}",
-                                {"video", "memory_limit", "techniques"}});
+    throw OptionError(
+        "video",
+        FieldText{"{video}: every run's frames are tiled in one video, but " +
+                      std::to_string(mine + 1) + " runs judged at once (" +
+                      memory_text((mine + 1) * per_run) + ") exceed {memory_limit} (" +
+                      memory_text(limit_bytes) + "); write the video of fewer {techniques}",
+                  {"video", "memory_limit", "techniques"}});
   }
   return groups;
 }
