@@ -375,7 +375,7 @@ BenchOptions four_runs_judged() {
 }
 
 // The same runs in the same order with the same pixels and JOD (timings
-// aside: each measured against its own native).
+// aside: each measured against its own native, so not compared).
 void expect_same_runs(const BenchResult& whole, const BenchResult& parts) {
   ASSERT_EQ(parts.results.size(), whole.results.size());
   for (size_t i = 0; i < whole.results.size(); ++i) {
@@ -385,7 +385,6 @@ void expect_same_runs(const BenchResult& whole, const BenchResult& parts) {
     EXPECT_EQ(a.shaded_pixels, b.shaded_pixels);
     ASSERT_TRUE(a.metrics && b.metrics && a.metrics->fvvdp && b.metrics->fvvdp);
     EXPECT_DOUBLE_EQ(a.metrics->fvvdp->jod, b.metrics->fvvdp->jod) << a.technique;
-    EXPECT_GT(b.speedup, 0.0);
   }
 }
 
