@@ -113,6 +113,11 @@ void MeshSceneBase::prepass_begin(const View& view) {
   gbuffer_ = &gbuffer_for(view.target_width, view.target_height, std::max(1, view.samples));
   gbuffer_->fbo.bind();
   glViewport(0, 0, view.target_width, view.target_height);
+  // No scissor, stencil or blending left by the technique's last pass: the
+  // clears and the draws honour them (a scissored pass before a prepass
+  // left the G-buffer uncleared outside it). A caller that masks geometry
+  // (lodmask) sets its stencil after this.
+  gpu::apply(gpu::PassState{});
   gpu::open_write_masks();  // clears honour them
   const float zero[4] = {0, 0, 0, 0};
   for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gbuffer_->fbo.id(), GL_COLOR, i, zero);

@@ -3,6 +3,8 @@
 // shading over a view) for the mesh tests.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/scenes/scene.hpp"
@@ -15,13 +17,19 @@ class MeshRender : public GlTest {
   // Renders `view` of `scene` (prepass, then one shading pass over the view's
   // target, with the rect mapping every technique uses), returning the target;
   // its alpha is 255 where the prepass drew geometry and 0 elsewhere.
-  Image shade(Scene& scene, const View& view, int width, int height, double time = 1.0) {
+  // `before_prepass`, when given, runs just before the prepass (to leave GL
+  // state behind as a technique's earlier pass would); the shading pass
+  // after it runs with the default PassState.
+  Image shade(Scene& scene, const View& view, int width, int height, double time = 1.0,
+              const std::function<void()>& before_prepass = {}) {
     FrameInput f;
     f.width = width;
     f.height = height;
     f.time_s = time;
     scene.update(f);
+    if (before_prepass) before_prepass();
     scene.prepass(view);
+    gpu::apply(gpu::PassState{});
     gpu::ShaderCompiler c({scene_shader_files()});
     std::vector<gpu::StageSource::Piece> pieces = {
         {"map",

@@ -275,6 +275,30 @@ TEST_F(Meshes, BadModelFiles) {
   EXPECT_NE(load_error(kModels).find("directory"), std::string::npos);
 }
 
+TEST_F(Meshes, PrepassIgnoresTheStateItFinds) {
+  // A technique's pass before a prepass may leave a scissor, a stencil test
+  // or blending on (vrs's class passes are scissored): the prepass clears and
+  // draws its whole G-buffer regardless, so the frame is the same.
+  auto scene = load_scene(kModels + "/cube.obj");
+  const View view = View::full(64, 48);
+  const Image clean = shade(*scene, view, 64, 48);
+  const Image after = shade(*scene, view, 64, 48, 1.0, [] {
+    gpu::PassState dirty = gpu::PassState::stencil_equal(7);
+    dirty.scissor = {0, 0, 8, 8};
+    gpu::apply(dirty);
+    glEnable(GL_BLEND);
+  });
+  int geometry = 0, differ = 0;
+  for (int y = 0; y < 48; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      geometry += clean.at(x, y)[3] == 255 ? 1 : 0;
+      differ += std::equal(clean.at(x, y), clean.at(x, y) + 4, after.at(x, y)) ? 0 : 1;
+    }
+  }
+  EXPECT_GT(geometry, 64 * 48 / 10);  // the cube covers part of the frame
+  EXPECT_EQ(differ, 0);
+}
+
 TEST_F(Meshes, PrepassRestoresTheFramebufferItFound) {
   auto scene = load_scene(kModels + "/cube.obj");
   FrameInput f;
