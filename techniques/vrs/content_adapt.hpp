@@ -6,10 +6,11 @@
 // invisible. So a tile the model gives a rate of 4 in either axis is shaded
 // at 2x2 while its last frame's samples, taken 4 pixels apart, show enough
 // contrast between neighbours. The measure reads what the frame before
-// shaded (its class targets), so it costs no pass; a tile refined stays
+// shaded (its class targets), so nothing is shaded for it (on the GPU it is
+// a dispatch per class over the tiles: BusyTiles); a tile refined stays
 // refined for `hold` frames after it was last found busy, so that its rate
-// does not flip back and forth. Pure CPU: no GL here (the GPU's measure is
-// BusyTiles; measure() is its reference).
+// does not flip back and forth. Pure CPU: no GL here (measure() is the
+// GPU's reference).
 #include <array>
 #include <cstdint>
 #include <span>
