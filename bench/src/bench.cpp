@@ -38,6 +38,8 @@ void validate(const BenchOptions& o) {
     if (o.techniques->empty()) throw OptionError("techniques", "give at least one technique");
     for (const std::string& t : *o.techniques)
       for_field("techniques", [&] { return technique_info(t); });
+    reject_repeats("techniques", *o.techniques,
+                   {"each runs once; compare settings of one technique with {sweep}", {"sweep"}});
   }
   o.params.validate(o.techniques.value_or(technique_names()));
   const auto check_runs = [](const std::vector<RunSpec>& runs, const std::string& field) {

@@ -340,12 +340,14 @@ void validate(const TuneOptions& o) {
     throw OptionError("bound_jod", "expected a JOD distance in (0, 10]");
   }
   if (o.scenes.empty()) throw OptionError("scenes", "give at least one scene");
+  reject_repeats("scenes", o.scenes, {"each scene is judged once", {}});
   if (o.techniques) {
     if (o.techniques->empty()) throw OptionError("techniques", "give at least one technique");
     for (const std::string& t : *o.techniques) {
       for_field("techniques", [&] { return technique_info(t); });
       if (t == "native") throw OptionError("techniques", "native is the baseline, not tuned");
     }
+    reject_repeats("techniques", *o.techniques, {"each is searched once", {}});
   }
   if (o.shard.count < 1 || o.shard.index < 0 || o.shard.index >= o.shard.count) {
     throw OptionError("shard", "expected job K of N with 1 <= K <= N");

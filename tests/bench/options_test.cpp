@@ -265,6 +265,37 @@ TEST(Options, RunsAndShardsAreChecked) {
   EXPECT_EQ(field_of([&] { validate(t); }), "techniques");
 }
 
+// A technique or scene given twice would be run (or searched, judged) twice
+// and reported twice under one name: refused, naming the list and the name.
+TEST(Options, ATechniqueOrSceneListedTwiceIsRefused) {
+  BenchOptions o;
+  o.techniques = std::vector<std::string>{"inset", "layered", "inset"};
+  const auto flags = [](const std::string& f) { return "--" + f; };
+  try {
+    validate(o);
+    ADD_FAILURE() << "no error";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.field(), "techniques");
+    EXPECT_EQ(e.message(flags),
+              "--techniques: 'inset' is listed twice (each runs once; compare settings of one "
+              "technique with --sweep)");
+  }
+  o.techniques = std::vector<std::string>{"native", "native"};
+  EXPECT_EQ(field_of([&] { validate(o); }), "techniques");
+  o.techniques = std::vector<std::string>{"native", "inset", "layered"};
+  EXPECT_EQ(field_of([&] { validate(o); }), "no error");
+  TuneOptions t;
+  t.scenes = {"guenter", "raymarch", "guenter"};
+  EXPECT_EQ(error_of([&] { validate(t); }),
+            "scenes: 'guenter' is listed twice (each scene is judged once)");
+  t.scenes = {"guenter", "raymarch"};
+  t.techniques = std::vector<std::string>{"vrs", "vrs"};
+  EXPECT_EQ(error_of([&] { validate(t); }),
+            "techniques: 'vrs' is listed twice (each is searched once)");
+  t.techniques = std::vector<std::string>{"vrs", "inset"};
+  EXPECT_EQ(field_of([&] { validate(t); }), "no error");
+}
+
 // Runs that would hold more memory together than the limit are judged in
 // groups, each with native: at most (limit / one run's bytes) runs at once.
 // A limit that holds not even native and one run, or a video (every run's

@@ -41,6 +41,12 @@ class OptionError : public Error {
   FieldText text_;
 };
 
+/// Refuses a name that `names` (the list in `field`) holds twice: a second
+/// copy would run or judge the same thing again and report it twice under
+/// one name. `hint` follows the reason (a FieldText may name other fields).
+void reject_repeats(const std::string& field, const std::vector<std::string>& names,
+                    const FieldText& hint = {});
+
 /// Runs `fn`; a foveate::Error it throws becomes an OptionError of `field`
 /// ("FIELD: what the error said"). An OptionError passes unchanged.
 template <class Fn>
