@@ -232,7 +232,14 @@ std::string TraceSource::describe() const {
 }
 
 std::string TraceSource::report() const {
-  return "trace " + name_ + ": " + trace_.dropped.summary();
+  // Rows the file could not give a sample for are counted here too: their
+  // warnings went by when the file was read, and the run's summary is what
+  // is left to say that the trace played had gaps.
+  std::string s = "trace " + name_ + ": " + trace_.dropped.summary();
+  if (trace_.skipped_rows > 0)
+    s += ", " + std::to_string(trace_.skipped_rows) + " unreadable row" +
+         (trace_.skipped_rows == 1 ? "" : "s") + " skipped";
+  return s;
 }
 
 }  // namespace foveate::gaze

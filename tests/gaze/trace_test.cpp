@@ -146,6 +146,9 @@ TEST(TraceCsv, UnreadableRowsAreSkippedAndNamed) {
   EXPECT_EQ(t.warnings[1],
             "f.csv:5: expected 3 fields as in the header (line 1), got 2 (the last line is cut "
             "off: no newline at its end); row skipped");
+  // The source's summary after the run counts them too.
+  EXPECT_EQ(TraceSource(t, "f.csv").report(),
+            "trace f.csv: none dropped, 2 unreadable rows skipped");
   // A complete last line without a newline is read.
   EXPECT_EQ(parse_trace_csv("time_s,x,y\n0,0.5,0.5\n0.1,0.5,0.5", "f.csv").samples.size(), 2u);
   // Nothing readable at all: the error names the first row.
