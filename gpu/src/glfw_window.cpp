@@ -69,7 +69,11 @@ std::unique_ptr<Window> create_window(int width, int height, const std::string& 
   if (!glfwInit()) {
     const char* desc = nullptr;
     glfwGetError(&desc);
-    throw Error(std::string("cannot open a window: ") + (desc ? desc : "GLFW failed to start") +
+    // GLFW names the display it tried after its text: nothing, and a
+    // trailing space, when DISPLAY is empty.
+    std::string why = desc ? desc : "GLFW failed to start";
+    while (!why.empty() && why.back() == ' ') why.pop_back();
+    throw Error("cannot open a window: " + why +
                 " (is there a display? try Xvfb, or use the headless commands)");
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
