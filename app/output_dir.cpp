@@ -40,6 +40,16 @@ void add_overwrite_flag(CLI::App* sub, bool& overwrite) {
 
 OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag, bool overwrite,
                              const std::string& overwrite_flag) {
+  // The folders make_output_dir is about to create, innermost first.
+  std::error_code probe;
+  std::filesystem::path p = std::filesystem::absolute(dir, probe).lexically_normal();
+  if (!probe && p.filename().empty()) p = p.parent_path();  // a trailing separator
+  while (!probe && p.has_filename()) {
+    const bool there = std::filesystem::exists(p, probe);
+    if (probe || there) break;
+    created_.push_back(p);
+    p = p.parent_path();
+  }
   make_output_dir(dir, flag);
   const std::string name = flag + " " + dir;
   path_ = (std::filesystem::path(dir) / ".foveate.lock").string();
@@ -110,6 +120,14 @@ void OutputDirLock::release() {
   fd_ = -1;
 }
 
-OutputDirLock::~OutputDirLock() { release(); }
+OutputDirLock::~OutputDirLock() {
+  release();
+  // A folder this run made and left empty (it failed before writing): gone
+  // again, innermost first; remove() leaves a folder that holds anything.
+  for (const std::filesystem::path& p : created_) {
+    std::error_code ec;
+    if (!std::filesystem::is_empty(p, ec) || ec || !std::filesystem::remove(p, ec)) break;
+  }
+}
 
 }  // namespace foveate::app

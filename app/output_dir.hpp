@@ -6,7 +6,9 @@
 // unless the run replaces it (--overwrite), so that no folder ever holds a
 // mix of two runs' files.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace foveate::app {
 
@@ -20,7 +22,9 @@ void add_overwrite_flag(CLI::App* sub, bool& overwrite);
 /// naming the folder and the run that holds it. A folder holding the output
 /// of an earlier run (run_outputs_in) is an error naming `flag` and
 /// `overwrite_flag`, unless `overwrite`: then those files are removed first,
-/// and a note says how many.
+/// and a note says how many. The folders it had to create (the folder and
+/// any parents that did not exist) are removed again on destruction if they
+/// are still empty: a run that fails before writing leaves nothing behind.
 class OutputDirLock {
  public:
   OutputDirLock(const std::string& dir, const std::string& flag, bool overwrite,
@@ -33,6 +37,7 @@ class OutputDirLock {
   void lock(const std::string& name);
   void release();
   std::string path_;
+  std::vector<std::filesystem::path> created_;  // innermost first
   int fd_ = -1;
 };
 

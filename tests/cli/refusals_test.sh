@@ -111,6 +111,13 @@ run render --scene cheap --size 32x18 --frames 1 --out "$tmp/other"
 check "a folder with other files only is not another run's output" '[[ $rc -eq 0 && -s "$tmp/other/notes.txt" ]]'
 run bench --scene cheap --size 32x18 --frames 1 --warmup 0 --techniques layered --no-metrics --out "$tmp/b2"
 check "bench refuses its own earlier output too" '[[ $rc -eq 1 && "$err" == *"holds the output of an earlier run"* ]] || { echo "  rc $rc: $err"; false; }'
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 3\n' > "$tmp/bad.obj"
+run render --scene "$tmp/bad.obj" --size 32x18 --frames 1 --out "$tmp/new/a/b"
+check "a run that fails before writing removes the folders it made for --out" \
+  '[[ $rc -eq 1 && "$err" == *"bad.obj"* && ! -e "$tmp/new" ]] || { echo "  rc $rc: $err"; ls -R "$tmp/new"; false; }'
+mkdir -p "$tmp/mine"
+run render --scene "$tmp/bad.obj" --size 32x18 --frames 1 --out "$tmp/mine"
+check "...but never a folder that was there before" '[[ $rc -eq 1 && -d "$tmp/mine" ]]'
 
 # --- Messages that name their input and the reason.
 cat > "$tmp/tiny.json" <<'JSON'
