@@ -113,15 +113,18 @@ void ContentAdapt::settle() {
   }
 }
 
-void ContentAdapt::refine(TileClasses& classes) const {
-  if (classes.of_tile.size() != hold_.size()) return;
+std::vector<std::uint8_t> ContentAdapt::refine(TileClasses& classes) const {
+  if (classes.of_tile.size() != hold_.size()) return {};
+  std::vector<std::uint8_t> refined(hold_.size(), 0);
   for (size_t t = 0; t < hold_.size(); ++t) {
     std::uint8_t& c = classes.of_tile[t];
     if (hold_[t] == 0 || !adapt_refines(c)) continue;
     --classes.count[c];
     c = kRefinedClass;
     ++classes.count[kRefinedClass];
+    refined[t] = 1;
   }
+  return refined;
 }
 
 }  // namespace foveate::tech::vrs

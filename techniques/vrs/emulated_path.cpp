@@ -47,12 +47,9 @@ void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int he
           [&](std::span<const std::uint8_t> busy) { a.mark(busy, last_classes_, measured_); });
     a.settle();
   }
-  // The tiles adapt refines this frame: the reconstruction does not fade
-  // their neighbours into them.
-  refined_.assign(classes.of_tile.size(), 0);
-  for (size_t t = 0; t < classes.of_tile.size(); ++t)
-    refined_[t] = a.held(t) && adapt_refines(classes.of_tile[t]) ? 1 : 0;
-  a.refine(classes);
+  // The tiles refined this frame: the reconstruction does not fade their
+  // neighbours into them.
+  refined_ = a.refine(classes);
 }
 
 FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx,

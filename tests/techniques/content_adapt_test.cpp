@@ -45,7 +45,7 @@ TEST(ContentAdapt, BusyTilesAreShadedAt2x2AndSmoothOnesAreNot) {
   const auto t = target(8, 4, [](int i, int j) { return i < 4 ? ((i + j) % 2) * 255 : 128; });
   a.measure(t, 8, 4, kShadingRates[k4x4], c.of_tile, k4x4, false, kTile, 32, 16);
   a.settle();
-  a.refine(c);
+  EXPECT_EQ(a.refine(c), (std::vector<std::uint8_t>{1, 0}));
   EXPECT_EQ(c.of_tile[0], k2x2);
   EXPECT_EQ(c.of_tile[1], k4x4);
   EXPECT_EQ(c.count[k2x2], 1u);
