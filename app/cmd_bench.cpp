@@ -53,25 +53,29 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-/// --sweep KEY=FROM:TO:STEP.
+/// --sweep KEY=FROM:TO:STEP or KEY=V1,V2,...
 bench::Sweep parse_sweep(const std::string& text) {
   const auto eq = text.find('=');
+  const std::string rest = eq == std::string::npos ? "" : text.substr(eq + 1);
+  const bool list = rest.find(':') == std::string::npos;
   std::vector<std::string> parts;
-  if (eq != std::string::npos) {
-    std::stringstream in(text.substr(eq + 1));
-    for (std::string item; std::getline(in, item, ':');) parts.push_back(item);
-  }
-  if (eq == std::string::npos || eq == 0 || parts.size() != 3) {
+  std::stringstream in(rest);
+  for (std::string item; std::getline(in, item, list ? ',' : ':');) parts.push_back(item);
+  if (!rest.empty() && rest.back() == (list ? ',' : ':')) parts.emplace_back();
+  if (eq == std::string::npos || eq == 0 || parts.empty() || (!list && parts.size() != 3)) {
     throw Error(
-        "--sweep: expected KEY=FROM:TO:STEP (e.g. slope=0.015:0.035:0.005 or "
-        "layered.layers=2:5:1), got '" +
+        "--sweep: expected KEY=FROM:TO:STEP or KEY=V1,V2,... (e.g. slope=0.015:0.035:0.005, "
+        "layered.layers=2:5:1 or vrs.adapt=0,0.25,0.4), got '" +
         text + "'");
   }
-  double v[3];
-  for (size_t i = 0; i < 3; ++i) {
-    if (!parse_number(parts[i], v[i])) throw Error("--sweep: '" + parts[i] + "' is not a number");
+  std::vector<double> v;
+  for (const std::string& p : parts) {
+    double x = 0;
+    if (!parse_number(p, x)) throw Error("--sweep: '" + p + "' is not a number");
+    v.push_back(x);
   }
-  return bench::Sweep::range(text.substr(0, eq), v[0], v[1], v[2]);
+  const std::string key = text.substr(0, eq);
+  return list ? bench::Sweep::of(key, v) : bench::Sweep::range(key, v[0], v[1], v[2]);
 }
 
 bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
@@ -192,8 +196,9 @@ void register_bench(CLI::App& app) {
       "bench", "Compare techniques side by side: time, pixels and image quality");
   add_common(sub, *a);
   sub->add_option("--sweep", a->sweep,
-                  "Sweep KEY=FROM:TO:STEP: slope (the techniques' plan and the metrics' "
-                  "yardstick), margin (the plan only: see --margin), or a technique parameter");
+                  "Sweep KEY=FROM:TO:STEP or KEY=V1,V2,... (run in ascending order): slope (the "
+                  "techniques' plan and the metrics' yardstick), margin (the plan only: see "
+                  "--margin), or a technique parameter (KEY or TECHNIQUE.KEY)");
   sub->add_option("--shard", a->shard,
                   "Run job K of N (K/N): every N-th technique or swept run, native in every job "
                   "as its baseline; 'foveate merge' joins the jobs' --out folders (README: "

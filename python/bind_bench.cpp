@@ -144,7 +144,11 @@ void prepare_out(const std::string& out, bool overwrite) {
 bench::Sweep sweep_from(py::handle sweep) {
   if (sweep.is_none()) return {};
   const auto t = sweep.cast<py::tuple>();
-  if (t.size() != 4) throw py::value_error("sweep: expected (key, from, to, step)");
+  if (t.size() == 2 && !py::isinstance<py::str>(t[1]) && py::isinstance<py::iterable>(t[1])) {
+    return bench::Sweep::of(t[0].cast<std::string>(), t[1].cast<std::vector<double>>());
+  }
+  if (t.size() != 4)
+    throw py::value_error("sweep: expected (key, from, to, step) or (key, [values])");
   return bench::Sweep::range(t[0].cast<std::string>(), t[1].cast<double>(), t[2].cast<double>(),
                              t[3].cast<double>());
 }
@@ -397,8 +401,8 @@ in "skipped"). size "WxH" or (w, h); params {"layers": 3} or
 technique for an acuity that many times finer than the metrics'; None: each
 technique's own planning margin); acuity_preset "A" or "B" (Guenter et al.'s
 presets; quality= is the same, its former name) or slope a MAR slope; sweep
-(key, from, to, step), e.g. ("slope", 0.02, 0.03, 0.005) or
-("margin", 1, 2, 0.5); out a folder for
+(key, from, to, step) or (key, [values]), e.g. ("slope", 0.02, 0.03, 0.005),
+("margin", 1, 2, 0.5) or ("vrs.adapt", [0, 0.25, 0.4]); out a folder for
 results.json, .csv, .md, report.html (one holding an earlier run's output is
 refused unless overwrite=True, which removes those files first); video a
 file (.mp4) of the frames. shard "K/N": job K of N (every N-th run, native in

@@ -1,6 +1,10 @@
 #include "foveate/bench/sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "foveate/bench/field_text.hpp"
 #include "foveate/core/parse.hpp"
@@ -20,9 +24,37 @@ Sweep Sweep::range(const std::string& key, double from, double to, double step) 
                       std::to_string(kMaxSweepValues) + "; use a larger STEP",
                   {"sweep"}});
   }
+  // A step below the values' precision leaves some of them equal: each is run once.
+  std::vector<double> values;
+  for (int i = 0; i < static_cast<int>(count); ++i) {
+    const double x = from + i * step;
+    if (values.empty() || x != values.back()) values.push_back(x);
+  }
+  return of(key, std::move(values));
+}
+
+Sweep Sweep::of(const std::string& key, std::vector<double> values) {
+  if (values.empty()) throw OptionError("sweep", "give at least one value");
+  if (values.size() > size_t{kMaxSweepValues}) {
+    throw OptionError("sweep",
+                      FieldText{"{sweep} " + key + ": " + std::to_string(values.size()) +
+                                    " values, over the limit of " + std::to_string(kMaxSweepValues),
+                                {"sweep"}});
+  }
+  for (double x : values) {
+    if (!std::isfinite(x)) throw OptionError("sweep", "values must be finite numbers");
+  }
+  std::sort(values.begin(), values.end());
+  for (size_t i = 1; i < values.size(); ++i) {
+    if (values[i] == values[i - 1]) {
+      throw OptionError("sweep", FieldText{"{sweep} " + key + ": " + format_number(values[i]) +
+                                               " is listed twice (each value runs once)",
+                                           {"sweep"}});
+    }
+  }
   Sweep s;
   s.key = key;
-  for (int i = 0; i < static_cast<int>(count); ++i) s.values.push_back(from + i * step);
+  s.values = std::move(values);
   if (s.key == "slope") return s;
   const auto dot = s.key.find('.');
   s.technique = dot == std::string::npos ? "" : s.key.substr(0, dot);

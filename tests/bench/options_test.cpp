@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -127,6 +128,33 @@ TEST(Sweep, AppliesOnlyWhereTheKeyIsDeclared) {
             "sweep: layered parameter margin=0.5: out of range [1, 4]");
   EXPECT_EQ(error_of([] { Sweep::range("layered.layers", 2, 3, 0.5); }),
             "sweep: layered parameter layers=2.5: must be a whole number");
+}
+
+TEST(Sweep, ListedValuesRunInAscendingOrderEachOnce) {
+  const Sweep listed = Sweep::of("vrs.adapt", {0.4, 0.0, 0.25});
+  EXPECT_EQ(listed.values, (std::vector<double>{0.0, 0.25, 0.4}));
+  EXPECT_EQ(listed.technique, "vrs");
+  EXPECT_EQ(listed.param, "adapt");
+  EXPECT_TRUE(listed.applies_to("vrs"));
+  EXPECT_FALSE(listed.applies_to("layered"));
+  EXPECT_EQ(Sweep::of("margin", {1.5}).values, std::vector<double>{1.5});
+  EXPECT_EQ(error_of([] { Sweep::of("slope", {}); }), "sweep: give at least one value");
+  EXPECT_EQ(error_of([] {
+              Sweep::of("margin", {1, 2, 1});
+            }),
+            "sweep margin: 1 is listed twice (each value runs once)");
+  EXPECT_EQ(error_of([] {
+              Sweep::of("slope", {0.02, std::nan("")});
+            }),
+            "sweep: values must be finite numbers");
+  EXPECT_EQ(error_of([] {
+              Sweep::of("vrs.adapt", {0.25, 2});
+            }),
+            "sweep: vrs parameter adapt=2: out of range [0, 1]");
+  EXPECT_EQ(error_of([] { Sweep::of("slope", std::vector<double>(51, 0.02)); }),
+            "sweep slope: 51 values, over the limit of 50");
+  // A range whose step is below the values' precision runs each value once.
+  EXPECT_EQ(Sweep::range("slope", 1e16, 1e16 + 4, 1).values.size(), 3u);
 }
 
 TEST(FrameOrder, VariesWhatEachTechniqueFollows) {

@@ -82,6 +82,13 @@ j=json.load(open(sys.argv[1]))
 vals=[r[\"sweep_value\"] for r in j[\"results\"] if r[\"technique\"]==\"layered\"]
 assert [round(v,3) for v in vals]==[0.02,0.03,0.04], vals
 " "$tmp/sw/results.json"'
+"$FOVEATE" bench --scene cheap --size 96x54 --frames 1 --warmup 0 --no-metrics --quiet --techniques layered --sweep layered.margin=2,1 --out "$tmp/sl" > /dev/null
+check "a listed sweep runs each value, in ascending order" 'python3 -c "
+import json,sys
+j=json.load(open(sys.argv[1]))
+assert [r[\"sweep_value\"] for r in j[\"results\"] if r[\"technique\"]==\"layered\"]==[1,2]
+assert j[\"sweep\"][\"values\"]==[1,2], j[\"sweep\"]
+" "$tmp/sl/results.json"'
 "$FOVEATE" bench --scene cheap --size 64x36 --frames 2 --warmup 0 --quiet --techniques native,inset --reference ssaa:2 --out "$tmp/ref" > /dev/null
 check "bench judges native too against a supersampled reference" 'python3 -c "
 import json,sys
@@ -95,4 +102,7 @@ check "render writes the reference frames beside its own" '[[ -s "$tmp/rr/refere
 expect_error "bad reference" "--reference" bench --scene cheap --size 32x32 --reference ssaa:12 --out "$tmp/x"
 expect_error "bad sweep" "--sweep" bench --scene cheap --size 32x32 --sweep layers=1:2 --out "$tmp/x"
 expect_error "sweep of an unknown key" "no technique has" bench --scene cheap --size 32x32 --sweep warp=1:2:1 --out "$tmp/x"
+expect_error "a value listed twice" "--sweep margin: 1 is listed twice" bench --scene cheap --size 32x32 --sweep margin=1,2,1 --out "$tmp/x"
+expect_error "a listed value that is no number" "--sweep: 'x' is not a number" bench --scene cheap --size 32x32 --sweep margin=1,x --out "$tmp/x"
+expect_error "an empty listed value" "--sweep: '' is not a number" bench --scene cheap --size 32x32 --sweep margin=1, --out "$tmp/x"
 exit $fail

@@ -48,6 +48,8 @@ def test_parameters_sweeps_and_video(fv, tmp_path):
     assert r["results"][0]["parameters"]["layers"] == 3
     s = tiny(fv, techniques=["layered"], sweep=("slope", 0.02, 0.03, 0.01), metrics=False, frames=1)
     assert [x["sweep_value"] for x in s["results"]] == pytest.approx([0.02, 0.03])
+    listed = tiny(fv, techniques=["layered"], sweep=("margin", [2, 1]), metrics=False, frames=1)
+    assert [x["sweep_value"] for x in listed["results"]] == [1.0, 2.0]
     m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=2.0, metrics=False, frames=1)
     plain = tiny(fv, techniques=["checkerboard"], size=(640, 360), metrics=False, frames=1)
     assert m["margin"] == 2.0 and plain["margin"] is None  # None: each technique's own
@@ -82,6 +84,8 @@ def test_bad_bench_input_raises(fv, tmp_path):
         tiny(fv, frames=0)
     with pytest.raises(fv.Error, match="sweep slope: .* over the limit of 50"):
         tiny(fv, sweep=("slope", 0, 1, 1e-9))
+    with pytest.raises(fv.Error, match="sweep margin: 1 is listed twice"):
+        tiny(fv, sweep=("margin", [1, 1]))
     with pytest.raises(fv.Error, match="side_by_side: only with video"):
         tiny(fv, side_by_side=True)
     with pytest.raises(fv.Error, match="vergence: only with stereo"):

@@ -21,6 +21,12 @@ struct Sweep {
   /// against every declaration it will be given to. Throws an OptionError of
   /// "sweep" for an unknown key, a bad range or more than kMaxSweepValues values.
   static Sweep range(const std::string& key, double from, double to, double step);
+  /// The listed values, run in ascending order (a sweep's plots and tables
+  /// read along the key), each checked as range() checks them. Throws an
+  /// OptionError of "sweep" for an empty list, a value that is not finite or
+  /// is listed twice (its runs would carry one label), or more than
+  /// kMaxSweepValues values.
+  static Sweep of(const std::string& key, std::vector<double> values);
   [[nodiscard]] bool empty() const { return key.empty(); }
   /// Whether the run of `technique` is repeated for every value.
   [[nodiscard]] bool applies_to(const std::string& technique) const;
