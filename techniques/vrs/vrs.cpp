@@ -156,8 +156,8 @@ TechniqueInfo vrs_info() {
             "edges are off), and for 8 frames after; small objects and fine texture blur at a "
             "4-pixel spacing where smooth content does not (0 = off; the driver's rates, with "
             "edge_contrast=0, are not refined: plan those at margin 1.5, as foveate rates does)",
-            "", ParamType::Real, 0.0, 1.0, 0.25),
-      {0.0, 0.1, 0.25, 0.5}));
+            "", ParamType::Real, 0.0, 1.0, 0.4),
+      {0.0, 0.1, 0.25, 0.4, 0.5}));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "
