@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 #include "foveate/bench/savings.hpp"
 #include "foveate/core/error.hpp"
@@ -95,6 +96,30 @@ std::string lens_at_gaze(const Display& display, Vec2d gaze) {
       display.eccentricity_deg(display.principal_point(), gaze), p.radial, p.tangential, o.radial,
       o.tangential);
   return s;
+}
+
+std::pair<std::string, std::vector<double>> parse_key_values(const std::string& text,
+                                                             const std::string& flag,
+                                                             const std::string& usage) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+    throw Error(flag + ": expected " + usage + ", got '" + text + "'");
+  }
+  std::vector<double> values;
+  std::stringstream in(text.substr(eq + 1));
+  std::string item;
+  const auto number = [&] {
+    double v = 0;
+    if (!parse_number(item, v)) throw Error(flag + ": '" + item + "' is not a number");
+    values.push_back(v);
+  };
+  while (std::getline(in, item, ',')) number();
+  // getline drops an empty last item: "1," lists an empty value.
+  if (text.back() == ',') {
+    item.clear();
+    number();
+  }
+  return {text.substr(0, eq), values};
 }
 
 }  // namespace foveate::app

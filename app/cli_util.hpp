@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "foveate/core/acuity.hpp"
@@ -43,6 +44,13 @@ auto with_flag(const std::string& flag, Fn&& fn) -> decltype(fn()) {
     throw Error(flag + ": " + e.what());
   }
 }
+
+/// KEY=V1,V2,... (bench's --sweep, tune's --values): the key and the numbers
+/// in the order given. Errors name `flag`; `usage` is the form they quote
+/// ("KEY=V1,V2,...").
+std::pair<std::string, std::vector<double>> parse_key_values(const std::string& text,
+                                                             const std::string& flag,
+                                                             const std::string& usage);
 
 /// A byte count: a number with an optional K, M, G or T suffix (powers of
 /// 1024, "B" and "iB" allowed: 512M, 1.5GiB, 4096), more than 0.

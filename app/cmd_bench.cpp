@@ -55,27 +55,25 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 /// --sweep KEY=FROM:TO:STEP or KEY=V1,V2,...
 bench::Sweep parse_sweep(const std::string& text) {
+  const std::string usage =
+      "KEY=FROM:TO:STEP or KEY=V1,V2,... (e.g. slope=0.015:0.035:0.005, layered.layers=2:5:1 or "
+      "vrs.adapt=0,0.25,0.4)";
   const auto eq = text.find('=');
-  const std::string rest = eq == std::string::npos ? "" : text.substr(eq + 1);
-  const bool list = rest.find(':') == std::string::npos;
+  if (eq == std::string::npos || text.find(':', eq) == std::string::npos) {
+    const auto [key, values] = parse_key_values(text, "--sweep", usage);
+    return bench::Sweep::of(key, values);
+  }
   std::vector<std::string> parts;
-  std::stringstream in(rest);
-  for (std::string item; std::getline(in, item, list ? ',' : ':');) parts.push_back(item);
-  if (!rest.empty() && rest.back() == (list ? ',' : ':')) parts.emplace_back();
-  if (eq == std::string::npos || eq == 0 || parts.empty() || (!list && parts.size() != 3)) {
-    throw Error(
-        "--sweep: expected KEY=FROM:TO:STEP or KEY=V1,V2,... (e.g. slope=0.015:0.035:0.005, "
-        "layered.layers=2:5:1 or vrs.adapt=0,0.25,0.4), got '" +
-        text + "'");
+  std::stringstream in(text.substr(eq + 1));
+  for (std::string item; std::getline(in, item, ':');) parts.push_back(item);
+  if (eq == 0 || parts.size() != 3 || text.back() == ':') {
+    throw Error("--sweep: expected " + usage + ", got '" + text + "'");
   }
-  std::vector<double> v;
-  for (const std::string& p : parts) {
-    double x = 0;
-    if (!parse_number(p, x)) throw Error("--sweep: '" + p + "' is not a number");
-    v.push_back(x);
+  double v[3];
+  for (size_t i = 0; i < 3; ++i) {
+    if (!parse_number(parts[i], v[i])) throw Error("--sweep: '" + parts[i] + "' is not a number");
   }
-  const std::string key = text.substr(0, eq);
-  return list ? bench::Sweep::of(key, v) : bench::Sweep::range(key, v[0], v[1], v[2]);
+  return bench::Sweep::range(text.substr(0, eq), v[0], v[1], v[2]);
 }
 
 bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {

@@ -39,6 +39,7 @@ struct TuneArgs {
   int warmup = bench::TuneOptions::default_bench().warmup;
   std::string reference = "ssaa:4";
   bool grid = false;
+  std::vector<std::string> values;
   std::string shard;
   std::string memory_limit;
   std::string out = "tune-out";
@@ -72,6 +73,11 @@ bench::TuneOptions to_options(const TuneArgs& a) {
   o.bench.reference = with_flag("--reference", [&] { return parse_reference(a.reference); });
   o.bench.command = invocation();
   o.grid = a.grid;
+  for (const std::string& v : a.values) {
+    auto [key, list] = parse_key_values(v, "--values", "KEY=V1,V2,... (e.g. vrs.adapt=0.3,0.4)");
+    if (!o.values.emplace(key, std::move(list)).second)
+      throw Error("--values: " + key + " is given twice (one list per parameter)");
+  }
   if (!a.shard.empty()) o.shard = bench::parse_shard(a.shard);
   if (!a.memory_limit.empty())
     o.bench.memory_limit_bytes = double(parse_byte_size(a.memory_limit, "--memory-limit"));
@@ -158,6 +164,11 @@ void register_tune(CLI::App& app) {
   sub->add_flag("--grid", a->grid,
                 "Evaluate the fixed grid (every margin crossed with one other parameter changed "
                 "at a time) instead of the staged search, as shards do");
+  sub->add_option("--values", a->values,
+                  "KEY=V1,V2,...: the values to search for a parameter instead of those it "
+                  "declares ('foveate techniques' lists them; KEY for every technique that has "
+                  "it, TECHNIQUE.KEY for one; a parameter not searched by default becomes "
+                  "searched); repeat the flag for more parameters");
   sub->add_option("--shard", a->shard,
                   "Run job K of N (K/N) of a fixed grid of candidates; 'foveate merge' joins the "
                   "jobs' --out folders");

@@ -42,6 +42,7 @@ std::string flag_for(const std::string& field) {
       {"sweep", "--sweep"},
       {"techniques", "--techniques"},
       {"up", "--up"},
+      {"values", "--values"},
       {"vergence_m", "--vergence"},
       {"video", "--video"},
       {"warmup", "--warmup"},

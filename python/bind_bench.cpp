@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "convert.hpp"
@@ -222,7 +223,8 @@ py::dict tune(const std::vector<std::string>& scenes,
               int frames, int warmup, const std::string& display, const std::string& acuity_preset,
               std::optional<double> slope, const std::string& gaze, const std::string& reference,
               double fps, bool grid, const std::string& out, bool overwrite, double frame_timeout_s,
-              const std::string& shard, double memory_limit) {
+              const std::string& shard, double memory_limit,
+              const std::map<std::string, std::vector<double>>& values) {
   bench::TuneOptions o;
   keywords([&] {
     o.bench.session =
@@ -238,6 +240,7 @@ py::dict tune(const std::vector<std::string>& scenes,
     o.grid = grid;
     if (!shard.empty()) o.shard = bench::parse_shard(shard);
     o.bench.memory_limit_bytes = memory_limit;
+    o.values = values;
     bench::validate(o);
   });
   prepare_out(out, overwrite);
@@ -441,6 +444,7 @@ technique's layers or regions and the gaze.)");
         py::arg("out") = "", py::arg("overwrite") = false,
         py::arg("frame_timeout_s") = tune_defaults.bench.session.frame_timeout_s,
         py::arg("shard") = "", py::arg("memory_limit") = 0.0,
+        py::arg("values") = std::map<std::string, std::vector<double>>{},
         R"(Runs `foveate tune` in this process: for every technique (techniques: a list,
 None = every one but native) the fastest setting of its tuned parameters whose
 FovVideoVDP JOD stays within `bound` of native's on every scene (settings within
@@ -453,7 +457,8 @@ the frames after them), and "notes". out: a folder for tune.json, tune.md,
 params.json (for --params-file) and report.html, refused if it holds an earlier
 run's output unless overwrite=True. grid=True evaluates the fixed grid instead
 of the staged search; shard "K/N" its K-th slice of N (merge() joins them);
-memory_limit as in bench().
+memory_limit as in bench(); values {"KEY" or "TECHNIQUE.KEY": [v1, v2, ...]}: the
+values searched for a parameter instead of its declared ones, as --values.
 Other keywords as in bench().)");
   m.def("merge", &merge, py::arg("shards"), py::kw_only(), py::arg("out") = "",
         py::arg("overwrite") = false,

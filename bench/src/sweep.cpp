@@ -33,23 +33,24 @@ Sweep Sweep::range(const std::string& key, double from, double to, double step) 
   return of(key, std::move(values));
 }
 
-Sweep Sweep::of(const std::string& key, std::vector<double> values) {
-  if (values.empty()) throw OptionError("sweep", "give at least one value");
+Sweep Sweep::of(const std::string& key, std::vector<double> values, const std::string& field) {
+  if (values.empty()) throw OptionError(field, "give at least one value");
   if (values.size() > size_t{kMaxSweepValues}) {
-    throw OptionError("sweep",
-                      FieldText{"{sweep} " + key + ": " + std::to_string(values.size()) +
+    throw OptionError(field,
+                      FieldText{"{" + field + "} " + key + ": " + std::to_string(values.size()) +
                                     " values, over the limit of " + std::to_string(kMaxSweepValues),
-                                {"sweep"}});
+                                {field}});
   }
   for (double x : values) {
-    if (!std::isfinite(x)) throw OptionError("sweep", "values must be finite numbers");
+    if (!std::isfinite(x)) throw OptionError(field, "values must be finite numbers");
   }
   std::sort(values.begin(), values.end());
   for (size_t i = 1; i < values.size(); ++i) {
     if (values[i] == values[i - 1]) {
-      throw OptionError("sweep", FieldText{"{sweep} " + key + ": " + format_number(values[i]) +
-                                               " is listed twice (each value runs once)",
-                                           {"sweep"}});
+      throw OptionError(field,
+                        FieldText{"{" + field + "} " + key + ": " + format_number(values[i]) +
+                                      " is listed twice (each value runs once)",
+                                  {field}});
     }
   }
   Sweep s;
@@ -62,13 +63,13 @@ Sweep Sweep::of(const std::string& key, std::vector<double> values) {
   bool known = false;
   for (const TechniqueInfo& t : techniques()) known = known || s.applies_to(t.name);
   if (!known) {
-    throw OptionError("sweep",
+    throw OptionError(field,
                       "no technique has a parameter '" + s.key + "' (see 'foveate techniques')");
   }
   // Each value against each declaration it will be given to, before anything runs.
   for (const TechniqueInfo& t : techniques()) {
     if (!s.applies_to(t.name)) continue;
-    for (double x : s.values) for_field("sweep", [&] { check_parameter(t, s.param, x); });
+    for (double x : s.values) for_field(field, [&] { check_parameter(t, s.param, x); });
   }
   return s;
 }

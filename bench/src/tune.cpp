@@ -7,6 +7,9 @@
 #include <cmath>
 #include <set>
 
+#include "foveate/bench/field_text.hpp"
+#include "foveate/bench/sweep.hpp"
+
 namespace foveate::bench {
 
 namespace {
@@ -19,10 +22,19 @@ struct Axis {
   std::vector<double> values;
 };
 
-std::vector<Axis> axes_of(const std::string& technique) {
+// The values tried for each of `technique`'s parameters, in declaration
+// order (the margin first): TuneOptions::values' list where it gives one
+// (TECHNIQUE.KEY before KEY; run_tune sorts them), else the declared values.
+std::vector<Axis> axes_of(const std::string& technique, const TuneOptions& o) {
   std::vector<Axis> axes;
   for (const ParamDecl& d : technique_info(technique).params) {
-    if (!d.tune.empty()) axes.push_back({d.key, d.tune});
+    auto it = o.values.find(technique + "." + d.key);
+    if (it == o.values.end()) it = o.values.find(d.key);
+    if (it == o.values.end()) {
+      if (!d.tune.empty()) axes.push_back({d.key, d.tune});
+      continue;
+    }
+    axes.push_back({d.key, it->second});
   }
   return axes;
 }
@@ -114,7 +126,7 @@ class Search {
   std::vector<Candidate> stage1() const {
     std::vector<Candidate> c;
     for (const std::string& t : techniques_) {
-      const std::vector<Axis> axes = axes_of(t);
+      const std::vector<Axis> axes = axes_of(t, options_);
       const auto margin = std::find_if(axes.begin(), axes.end(),
                                        [](const Axis& a) { return a.key == kPlanMarginKey; });
       if (margin == axes.end()) {
@@ -133,7 +145,7 @@ class Search {
     for (const std::string& t : techniques_) {
       const TunePoint* best = best_point(scene_, t, 1);
       if (!best) continue;
-      for (const Axis& a : axes_of(t)) {
+      for (const Axis& a : axes_of(t, options_)) {
         if (a.key == kPlanMarginKey) {
           const auto it = best->params.find(a.key);
           if (it == best->params.end()) continue;
@@ -168,7 +180,7 @@ class Search {
         if (p.scene == scene_ && p.technique == t && p.stage == 2) stage2.push_back(p);
       }
       std::vector<std::pair<std::string, std::vector<double>>> axes;
-      for (const Axis& a : axes_of(t)) axes.emplace_back(a.key, a.values);
+      for (const Axis& a : axes_of(t, options_)) axes.emplace_back(a.key, a.values);
       for (Params& p : tune_combinations(stage2, *best, axes)) c.push_back({t, std::move(p)});
     }
     return c;
@@ -178,7 +190,7 @@ class Search {
   std::vector<Candidate> grid() const {
     std::vector<Candidate> all;
     for (const std::string& t : techniques_) {
-      const std::vector<Axis> axes = axes_of(t);
+      const std::vector<Axis> axes = axes_of(t, options_);
       std::vector<double> margins{std::nan("")};
       for (const Axis& a : axes) {
         if (a.key == kPlanMarginKey) margins = a.values;
@@ -304,7 +316,7 @@ class Search {
     std::vector<RunSpec> probes;
     for (const std::string& t : tuned_techniques(options_)) {
       probes.push_back({t, {}, ""});
-      for (const Axis& a : axes_of(t)) {
+      for (const Axis& a : axes_of(t, options_)) {
         for (double v : a.values) probes.push_back({t, {{a.key, v}}, ""});
       }
     }
@@ -349,13 +361,33 @@ void validate(const TuneOptions& o) {
     }
     reject_repeats("techniques", *o.techniques, {"each is searched once", {}});
   }
+  for (const auto& [key, list] : o.values) {
+    if (key == "slope") {
+      throw OptionError("values",
+                        "slope: the metrics' acuity, not a technique's parameter (tune plans "
+                        "every technique for it; see --margin)");
+    }
+    const Sweep checked = Sweep::of(key, list, "values");
+    bool tuned = false;
+    for (const std::string& t : tuned_techniques(o)) tuned = tuned || checked.applies_to(t);
+    if (!tuned) {
+      throw OptionError("values", FieldText{"{values} " + key +
+                                                ": no technique searched has that parameter "
+                                                "(see {techniques})",
+                                            {"values", "techniques"}});
+    }
+  }
   if (o.shard.count < 1 || o.shard.index < 0 || o.shard.index >= o.shard.count) {
     throw OptionError("shard", "expected job K of N with 1 <= K <= N");
   }
 }
 
-TuneResult run_tune(const TuneOptions& options, const TuneCallbacks& callbacks) {
-  validate(options);
+TuneResult run_tune(const TuneOptions& asked, const TuneCallbacks& callbacks) {
+  validate(asked);
+  // Each list ascending, as it is searched: shards given one list in two
+  // orders are one run's.
+  TuneOptions options = asked;
+  for (auto& [key, list] : options.values) std::sort(list.begin(), list.end());
   TuneResult out;
   out.options = options;
   out.settings_key = tune_settings_key(options);

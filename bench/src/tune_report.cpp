@@ -46,6 +46,7 @@ nlohmann::json tune_settings(const TuneOptions& o) {
           {"frames", o.bench.frames},
           {"warmup", o.bench.warmup},
           {"reference", o.bench.reference},
+          {"values", o.values},
           {"shards", o.shard.count}};
 }
 
@@ -123,6 +124,7 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
   o.bench.frames = s.value("frames", o.bench.frames);
   o.bench.warmup = s.value("warmup", o.bench.warmup);
   o.bench.reference = s.value("reference", o.bench.reference);
+  o.values = s.value("values", std::map<std::string, std::vector<double>>{});
   if (const auto sh = j.find("shard"); sh != j.end() && sh->contains("count")) {
     o.shard.index = sh->value("index", 0);
     o.shard.count = sh->value("count", 1);
@@ -209,7 +211,16 @@ std::string tune_markdown(const TuneResult& r) {
   }
   s << "; settings within " << format_number(100.0 * kTuneSpeedTie)
     << " % of its speed tie with it, and of those the one with the most JOD, then the fewest "
-       "pixels, is chosen:\n\n| technique | chosen | verdict |\n|---|---|---|\n";
+       "pixels, is chosen:\n\n";
+  if (!r.options.values.empty()) {
+    s << "Values searched instead of the declared ones:";
+    for (const auto& [key, list] : r.options.values) {
+      s << " " << key << "=";
+      for (size_t i = 0; i < list.size(); ++i) s << (i ? "," : "") << format_number(list[i], 4);
+    }
+    s << ".\n\n";
+  }
+  s << "| technique | chosen | verdict |\n|---|---|---|\n";
   for (const std::string& t : techniques_of(r)) {
     const auto c = r.chosen.find(t);
     s << "| " << t << " | " << (c == r.chosen.end() ? "-" : params_text(c->second)) << " | "

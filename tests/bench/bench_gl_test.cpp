@@ -559,6 +559,50 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
   std::filesystem::remove_all(out);
 }
 
+// Values given for a parameter replace those it declares, in every stage,
+// and make a parameter searched that is not by default; the record says so.
+TEST(Tune, SearchesTheValuesGivenInsteadOfTheDeclaredOnes) {
+  TuneOptions o;
+  o.bench = tiny();
+  o.bench.session.size = {96, 54};
+  o.bench.reference = 2;
+  o.scenes = {"cheap"};
+  o.techniques = std::vector<std::string>{"inset"};
+  o.values = {{"margin", {2, 1}}, {"inset.scale", {0.45}}, {"latency_ms", {20}}};
+  const TuneResult r = run_tune(o);
+  std::set<double> margins, scales;
+  bool latency = false;
+  for (const TunePoint& p : r.points) {
+    ASSERT_EQ(p.technique, "inset");
+    if (p.params.count("margin")) margins.insert(p.params.at("margin"));
+    if (p.params.count("scale")) scales.insert(p.params.at("scale"));
+    for (const char* k : {"scale", "latency_ms"}) {
+      // Searched one at a time from stage 1's best margin.
+      if (p.params.count(k) && p.stage == 2) {
+        EXPECT_EQ(p.params.size(), 2u) << k;
+      }
+    }
+    latency = latency || p.params.count("latency_ms");
+  }
+  EXPECT_EQ(margins, (std::set<double>{1, 2}));
+  EXPECT_EQ(scales, std::set<double>{0.45});
+  EXPECT_TRUE(latency);
+  EXPECT_EQ(r.options.values.at("margin"), (std::vector<double>{1, 2}));  // ascending
+  EXPECT_NE(tune_markdown(r).find("Values searched instead of the declared ones: "
+                                  "inset.scale=0.45 latency_ms=20 margin=1,2."),
+            std::string::npos);
+  // The values are part of the settings shards of one run must share.
+  const std::string dir = fresh_dir("foveate-tune-values");
+  write_tune_report(r, dir);
+  const TuneResult back = read_tune_results(read_json(dir + "/tune.json"), dir);
+  EXPECT_EQ(back.options.values, r.options.values);
+  TuneOptions other = o;
+  other.values.erase("latency_ms");
+  EXPECT_NE(back.settings_key, tune_settings_key(other));
+  EXPECT_EQ(back.settings_key, tune_settings_key(r.options));
+  std::filesystem::remove_all(dir);
+}
+
 // A tune grid split into shards and merged evaluates the same candidates
 // with the same JOD as the grid in one run.
 TEST(Tune, ShardsMergedEqualTheGrid) {

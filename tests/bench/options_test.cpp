@@ -324,6 +324,32 @@ TEST(Options, ATechniqueOrSceneListedTwiceIsRefused) {
   EXPECT_EQ(field_of([&] { validate(t); }), "no error");
 }
 
+// tune's values: each list checked as a sweep's, against the techniques
+// searched; errors name the field and the key.
+TEST(Options, TuneValuesAreCheckedAgainstTheTechniquesSearched) {
+  TuneOptions t;
+  t.techniques = std::vector<std::string>{"inset", "vrs"};
+  t.values = {{"margin", {2, 1}}, {"vrs.adapt", {0.3, 0.4}}, {"inset.scale", {0.5}}};
+  EXPECT_EQ(field_of([&] { validate(t); }), "no error");
+  // A parameter that is declared but not searched by default may be.
+  t.values = {{"vrs.fixed", {0, 1}}};
+  EXPECT_EQ(field_of([&] { validate(t); }), "no error");
+  t.values = {{"layered.layers", {2, 3}}};
+  EXPECT_EQ(error_of([&] { validate(t); }),
+            "values layered.layers: no technique searched has that parameter (see techniques)");
+  t.values = {{"vrs.adapt", {0.4, 0.4}}};
+  EXPECT_EQ(error_of([&] { validate(t); }),
+            "values vrs.adapt: 0.4 is listed twice (each value runs once)");
+  t.values = {{"vrs.adapt", {1.5}}};
+  EXPECT_EQ(error_of([&] { validate(t); }), "values: vrs parameter adapt=1.5: out of range [0, 1]");
+  t.values = {{"vrs.adapt", {}}};
+  EXPECT_EQ(error_of([&] { validate(t); }), "values: give at least one value");
+  t.values = {{"nope", {1}}};
+  EXPECT_EQ(field_of([&] { validate(t); }), "values");
+  t.values = {{"slope", {0.02}}};
+  EXPECT_EQ(field_of([&] { validate(t); }), "values");
+}
+
 // Runs that would hold more memory together than the limit are judged in
 // groups, each with native: at most (limit / one run's bytes) runs at once.
 // A limit that holds not even native and one run, or a video (every run's

@@ -73,6 +73,20 @@ err=$("$F" tune --scenes cheap --bound 0 --out "$tmp/x" 2>&1); rc=$?
 check "tune --bound 0: exit 1, names --bound" '[[ $rc -eq 1 && "$err" == *"--bound"* ]]'
 err=$("$F" tune --scenes cheap --techniques native --out "$tmp/x" 2>&1); rc=$?
 check "tune native: exit 1" '[[ $rc -eq 1 && "$err" == *"native"* ]]'
+"$F" tune --scenes cheap --techniques inset --bound 0.5 "${small[@]}" --values margin=2,1 --values inset.scale=0.45 --out "$tmp/tv" --quiet > "$tmp/tv.md"
+check "tune --values: the margins and scale searched are those given" 'python3 -c "
+import json,sys
+j=json.load(open(sys.argv[1]))
+assert {p[\"params\"][\"margin\"] for p in j[\"points\"]} == {1, 2}
+assert {p[\"params\"].get(\"scale\") for p in j[\"points\"]} <= {None, 0.45}
+assert j[\"settings\"][\"values\"] == {\"inset.scale\": [0.45], \"margin\": [1, 2]}
+" "$tmp/tv/tune.json" && grep -q "Values searched instead of the declared ones: inset.scale=0.45 margin=1,2." "$tmp/tv.md"'
+for args in "vrs.adapt=0.3" "margin=1,1" "margin=1,x" "margin=" "margin=9"; do
+  err=$("$F" tune --scenes cheap --techniques inset --values "$args" --out "$tmp/x" 2>&1); rc=$?
+  check "tune --values $args: exit 1, names --values" '[[ $rc -eq 1 && "$err" == *"--values"* ]]'
+done
+err=$("$F" tune --scenes cheap --techniques inset --values margin=1 --values margin=2 --out "$tmp/x" 2>&1); rc=$?
+check "tune --values for one key twice: exit 1" '[[ $rc -eq 1 && "$err" == *"margin is given twice"* ]]'
 "$F" tune --help | grep -q -- --bound && "$F" merge --help | grep -q -- --out
 check "help lists the options" '[[ $? -eq 0 ]]'
 exit $fail

@@ -145,6 +145,12 @@ def test_tune_chooses_within_the_bound_and_writes_its_files(fv, tmp_path):
         fv.tune(scenes=["cheap"], bound=0)
     with pytest.raises(fv.Error, match="scenes: give at least one scene"):
         fv.tune(scenes=[])
+    with pytest.raises(fv.Error, match="values vrs.adapt: no technique searched has that parameter"):
+        fv.tune(scenes=["cheap"], techniques=["inset"], values={"vrs.adapt": [0.3]})
+    v = fv.tune(scenes=["cheap"], techniques=["inset"], size=(96, 54), frames=2, warmup=1,
+                reference="ssaa:2", bound=0.5, values={"margin": [2, 1], "inset.scale": [0.45]})
+    assert {p["params"]["margin"] for p in v["points"]} == {1, 2}
+    assert v["settings"]["values"] == {"inset.scale": [0.45], "margin": [1, 2]}
 
 
 def test_shards_merged_equal_one_run(fv, tmp_path):

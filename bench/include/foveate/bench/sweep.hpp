@@ -25,8 +25,10 @@ struct Sweep {
   /// read along the key), each checked as range() checks them. Throws an
   /// OptionError of "sweep" for an empty list, a value that is not finite or
   /// is listed twice (its runs would carry one label), or more than
-  /// kMaxSweepValues values.
-  static Sweep of(const std::string& key, std::vector<double> values);
+  /// kMaxSweepValues values. `field` names the option in errors (tune's
+  /// `values` checks its lists here too).
+  static Sweep of(const std::string& key, std::vector<double> values,
+                  const std::string& field = "sweep");
   [[nodiscard]] bool empty() const { return key.empty(); }
   /// Whether the run of `technique` is repeated for every value.
   [[nodiscard]] bool applies_to(const std::string& technique) const;

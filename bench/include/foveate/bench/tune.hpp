@@ -51,6 +51,12 @@ struct TuneOptions {
   /// changed at a time) instead of the staged search; shards always do.
   bool grid = false;
   Shard shard;
+  /// The values tune tries for a parameter instead of those it declares
+  /// (`foveate techniques` lists them): KEY (every technique tuned that
+  /// declares it) or TECHNIQUE.KEY, each list ascending and checked as a
+  /// sweep's; a parameter declared but not tuned becomes tuned. TECHNIQUE.KEY
+  /// wins over KEY.
+  std::map<std::string, std::vector<double>> values;
 
   static BenchOptions default_bench();
 };
