@@ -475,14 +475,24 @@ TEST(Bench, GroupsBeyondTheMemoryLimitEqualOneRun) {
 // tune: every margin evaluated beside native; the choice is the fastest
 // setting within the bound (or one within 5 % of its speed that keeps more
 // JOD), its parameters a file that a benchmark takes.
-TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
+namespace {
+
+// tune on `cheap` at 96x54 against a 2x2 reference: each test's run.
+TuneOptions small_tune(std::vector<std::string> techniques) {
   TuneOptions o;
   o.bench = tiny();
   o.bench.session.size = {96, 54};
   o.bench.reference = 2;
   o.bench.diagnostics = false;
   o.scenes = {"cheap"};
-  o.techniques = std::vector<std::string>{"layered", "inset"};
+  o.techniques = std::move(techniques);
+  return o;
+}
+
+}  // namespace
+
+TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
+  TuneOptions o = small_tune({"layered", "inset"});
   o.bound_jod = 0.5;
   const TuneResult r = run_tune(o);
   EXPECT_TRUE(r.native_jod.count("cheap"));
@@ -562,12 +572,7 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
 // Values given for a parameter replace those it declares, in every stage,
 // and make a parameter searched that is not by default; the record says so.
 TEST(Tune, SearchesTheValuesGivenInsteadOfTheDeclaredOnes) {
-  TuneOptions o;
-  o.bench = tiny();
-  o.bench.session.size = {96, 54};
-  o.bench.reference = 2;
-  o.scenes = {"cheap"};
-  o.techniques = std::vector<std::string>{"inset"};
+  TuneOptions o = small_tune({"inset"});
   o.values = {{"margin", {2, 1}}, {"inset.scale", {0.45}}, {"latency_ms", {20}}};
   const TuneResult r = run_tune(o);
   std::set<double> margins, scales;
@@ -606,12 +611,7 @@ TEST(Tune, SearchesTheValuesGivenInsteadOfTheDeclaredOnes) {
 // A tune grid split into shards and merged evaluates the same candidates
 // with the same JOD as the grid in one run.
 TEST(Tune, ShardsMergedEqualTheGrid) {
-  TuneOptions o;
-  o.bench = tiny();
-  o.bench.session.size = {96, 54};
-  o.bench.reference = 2;
-  o.scenes = {"cheap"};
-  o.techniques = std::vector<std::string>{"inset"};
+  TuneOptions o = small_tune({"inset"});
   o.grid = true;
   const TuneResult whole = run_tune(o);
   std::vector<TuneResult> shards;
