@@ -365,7 +365,7 @@ void validate(const TuneOptions& o) {
     if (key == "slope") {
       throw OptionError("values",
                         "slope: the metrics' acuity, not a technique's parameter (tune plans "
-                        "every technique for it; see --margin)");
+                        "every technique for it; search the planning margin instead)");
     }
     const Sweep checked = Sweep::of(key, list, "values");
     bool tuned = false;

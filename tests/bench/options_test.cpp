@@ -347,7 +347,9 @@ TEST(Options, TuneValuesAreCheckedAgainstTheTechniquesSearched) {
   t.values = {{"nope", {1}}};
   EXPECT_EQ(field_of([&] { validate(t); }), "values");
   t.values = {{"slope", {0.02}}};
-  EXPECT_EQ(field_of([&] { validate(t); }), "values");
+  EXPECT_EQ(error_of([&] { validate(t); }),
+            "values: slope: the metrics' acuity, not a technique's parameter (tune plans every "
+            "technique for it; search the planning margin instead)");
 }
 
 // Runs that would hold more memory together than the limit are judged in
