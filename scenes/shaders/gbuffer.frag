@@ -1,4 +1,12 @@
-// Fills the G-buffer: albedo and material id, normal and gloss, world position.
+// Fills the G-buffer, packed into one RGBA32UI attachment (deferred_common.glsl
+// unpacks it):
+//   x  the distance from the eye to the surface at the fragment (fp32 bits):
+//      the position is the eye plus the ray through the texel's centre times
+//      it, exact but for rounding, in 4 bytes instead of 12;
+//   y  albedo rgb and material id (unorm8 x4, as an RGBA8 target stores them);
+//   z  the octahedral normal (snorm16 x2);
+//   w  gloss and coverage (half x2; coverage 1 where a surface was drawn, the
+//      clear leaves 0).
 // Compiled twice: with FOVEATE_ALBEDO_TEXTURE for textured materials, without
 // for the rest. A texture read under a uniform branch still costs llvmpipe
 // its fetch on every fragment (a third of a 1080p G-buffer pass on `guenter`,
@@ -13,9 +21,15 @@ uniform sampler2D u_albedo_tex;
 uniform float u_material;
 uniform float u_gloss;
 uniform vec3 u_eye;  // world position of the eye
-layout(location = 0) out vec4 o_albedo;
-layout(location = 1) out vec4 o_normal;
-layout(location = 2) out vec4 o_position;
+layout(location = 0) out uvec4 o_surface;
+
+// A unit vector onto the octahedron unfolded into [-1, 1]^2.
+vec2 octahedral(vec3 n) {
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  vec2 e = n.xy;
+  if (n.z < 0.0) e = (1.0 - abs(n.yx)) * vec2(e.x >= 0.0 ? 1.0 : -1.0, e.y >= 0.0 ? 1.0 : -1.0);
+  return e;
+}
 void main() {
   vec3 c = u_base_color.rgb;
 #ifdef FOVEATE_ALBEDO_TEXTURE
@@ -31,7 +45,7 @@ void main() {
   vec3 face = cross(dFdx(v_world), dFdy(v_world));
   if (dot(face, u_eye - v_world) < 0.0) face = -face;
   if (dot(n, face) < 0.0) n = -n;
-  o_albedo = vec4(c, u_material / 255.0);
-  o_normal = vec4(n, u_gloss);
-  o_position = vec4(v_world, 1.0);
+  o_surface = uvec4(floatBitsToUint(distance(v_world, u_eye)),
+                    packUnorm4x8(vec4(c, u_material / 255.0)), packSnorm2x16(octahedral(n)),
+                    packHalf2x16(vec2(u_gloss, 1.0)));
 }

@@ -118,9 +118,9 @@ void MeshSceneBase::prepass_begin(const View& view) {
   // left the G-buffer uncleared outside it). A caller that masks geometry
   // (lodmask) sets its stencil after this.
   gpu::apply(gpu::PassState{});
-  gpu::open_write_masks();  // clears honour them
-  const float zero[4] = {0, 0, 0, 0};
-  for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(gbuffer_->fbo.id(), GL_COLOR, i, zero);
+  gpu::open_write_masks();              // clears honour them
+  const GLuint zero[4] = {0, 0, 0, 0};  // coverage 0: no surface
+  glClearNamedFramebufferuiv(gbuffer_->fbo.id(), GL_COLOR, 0, zero);
   glClearNamedFramebufferfi(gbuffer_->fbo.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
 }
 
@@ -217,11 +217,9 @@ void MeshSceneBase::bind(const gpu::Program& p, const View& v, gpu::Samplers& sa
   }
   // Each program uses the part of the scene's shading it calls (temporal
   // reprojection only the world position): the rest may be optimised away.
-  p.allow_missing({"u_g_albedo", "u_g_normal", "u_g_position", "u_g_rect", "u_screen",
-                   "u_inv_view_proj", "u_cam_pos", "u_time"});
-  samplers.bind(p, "u_g_albedo", gbuffer_->albedo);
-  samplers.bind(p, "u_g_normal", gbuffer_->normal);
-  samplers.bind(p, "u_g_position", gbuffer_->position);
+  p.allow_missing(
+      {"u_g_surface", "u_g_rect", "u_screen", "u_inv_view_proj", "u_cam_pos", "u_time"});
+  samplers.bind(p, "u_g_surface", gbuffer_->surface);
   p.set("u_g_rect", float(v.x0), float(v.y0), float(v.x1 - v.x0), float(v.y1 - v.y0));
   p.set("u_screen", float(frame_.width), float(frame_.height));
   const glm::mat4 full = view_projection(View::full(frame_.width, frame_.height));
