@@ -1,7 +1,6 @@
 #include "gbuffer.hpp"
 
 #include <algorithm>
-#include <utility>
 #include <vector>
 
 #include "foveate/gpu/frame.hpp"
@@ -33,13 +32,12 @@ void GBuffer::ensure(int w, int h, int n) {
 namespace foveate {
 
 std::vector<int> gbuffer_sample_counts() {
-  using detail::GBuffer;
-  std::vector<int> out = gpu::supported_sample_counts(GL_TEXTURE_2D_MULTISAMPLE, GBuffer::kFormat);
-  const std::pair<GLenum, GLenum> others[] = {{GL_RENDERBUFFER, GL_DEPTH24_STENCIL8}};
-  for (const auto& [target, format] : others) {
-    const std::vector<int> ok = gpu::supported_sample_counts(target, format);
-    std::erase_if(out, [&](int n) { return std::find(ok.begin(), ok.end(), n) == ok.end(); });
-  }
+  // The counts both attachments support.
+  std::vector<int> out =
+      gpu::supported_sample_counts(GL_TEXTURE_2D_MULTISAMPLE, detail::GBuffer::kFormat);
+  const std::vector<int> depth = gpu::supported_sample_counts(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8);
+  std::erase_if(out,
+                [&](int n) { return std::find(depth.begin(), depth.end(), n) == depth.end(); });
   return out;
 }
 
