@@ -33,6 +33,7 @@ void BusyTiles::measure(const gpu::Texture& classes, const gpu::Texture& target,
   program_.set("u_frame", width, height);
   program_.set("u_contrast", static_cast<float>(contrast_));
   program_.set("u_share", static_cast<float>(share_));
+  program_.set("u_smooth", static_cast<float>(smooth_));
   glBindImageTexture(0, busy_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
   glDispatchCompute(static_cast<GLuint>((busy_.width() + 7) / 8),
                     static_cast<GLuint>((busy_.height() + 7) / 8), 1);

@@ -16,21 +16,23 @@ namespace foveate::tech::vrs {
 
 class BusyTiles {
  public:
-  /// `contrast` and `share` as ContentAdapt's.
-  BusyTiles(double contrast, double share) : contrast_(contrast), share_(share) {}
+  /// `contrast`, `share` and `smooth` as ContentAdapt's.
+  BusyTiles(double contrast, double share, double smooth = 0.0)
+      : contrast_(contrast), share_(share), smooth_(smooth) {}
 
   /// Starts a frame's measurements over a gx x gy grid: no tile busy.
   void begin(const PassKit& kit, int gx, int gy);
   /// Measures the tiles of class `cls` per `classes` (the frame's class per
-  /// tile, R8UI, gx x gy) in `target`, that class's target, for a `width` x
-  /// `height` frame in tiles of `tile` pixels.
+  /// tile in bits 0-2, bit 6 set where coarsened; R8UI, gx x gy) in `target`, that class's target,
+  /// for a `width` x `height` frame in tiles of `tile` pixels.
   void measure(const gpu::Texture& classes, const gpu::Texture& target, int cls, int tile,
                int width, int height);
   /// Queues the read-back of the frame's busy tiles.
   void queue();
   [[nodiscard]] bool pending() const { return readback_.pending(); }
   /// Waits for the queued read-back and calls `use(busy)`: a byte per tile,
-  /// row-major from the bottom row (as the classes), 1 where busy.
+  /// row-major from the bottom row (as the classes), bit 0 set where busy,
+  /// bit 1 where smooth.
   template <typename F>
   void read(F&& use) {
     readback_.read(std::forward<F>(use));
@@ -38,7 +40,7 @@ class BusyTiles {
   void discard() { readback_.discard(); }
 
  private:
-  double contrast_, share_;
+  double contrast_, share_, smooth_;
   gpu::Program program_;
   gpu::Texture busy_;
   gpu::TextureReadback readback_;

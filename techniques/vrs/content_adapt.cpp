@@ -25,6 +25,44 @@ const std::array<float, 256>& linear_of_srgb() {
 }  // namespace
 
 static_assert(kShadingRates[kRefinedClass].width == 2 && kShadingRates[kRefinedClass].height == 2);
+static_assert(kShadingRates[kClasses - 1].width == 4 && kShadingRates[kClasses - 1].height == 4);
+
+bool smooth_texels(std::span<const std::uint8_t> rgba, int tw, int th, PixelRect texels,
+                   double bound) {
+  const auto& lin = linear_of_srgb();
+  struct Texel {
+    std::array<float, 3> c{};
+    bool shaded = false;
+  };
+  const auto at = [&](int i, int j) {
+    Texel t;
+    if (i < 0 || j < 0 || i >= tw || j >= th) return t;
+    const std::uint8_t* p = rgba.data() + (size_t(j) * size_t(tw) + size_t(i)) * 4;
+    t.c = {lin[p[0]], lin[p[1]], lin[p[2]]};
+    t.shaded = p[3] == 255;
+    return t;
+  };
+  // How far `c` leaves the mean of `a` and `b`, in its luminance.
+  const auto curvature = [&](const Texel& a, const Texel& c, const Texel& b) {
+    if (!a.shaded || !b.shaded || !c.shaded) return 0.0;
+    double most = 0.0;
+    for (size_t k = 0; k < 3; ++k)
+      most = std::max(most, std::abs(double(c.c[k]) - 0.5 * (double(a.c[k]) + b.c[k])));
+    const double l = 0.2126 * c.c[0] + 0.7152 * c.c[1] + 0.0722 * c.c[2];
+    return most / std::max(l, kSmoothDark);
+  };
+  if (!at(texels[0], texels[1]).shaded) return false;
+  const int x1 = std::min(texels[2], tw), y1 = std::min(texels[3], th);
+  for (int j = texels[1]; j < y1; ++j) {
+    for (int i = texels[0]; i < x1; ++i) {
+      const Texel c = at(i, j);
+      if (curvature(at(i - 1, j), c, at(i + 1, j)) > bound ||
+          curvature(at(i, j - 1), c, at(i, j + 1)) > bound)
+        return false;
+    }
+  }
+  return true;
+}
 
 bool adapt_refines(int k) {
   const ShadingRate r = kShadingRates[static_cast<size_t>(k)];
@@ -36,6 +74,9 @@ void ContentAdapt::reset(int gx, int gy) {
   gy_ = gy;
   hold_.assign(static_cast<size_t>(gx) * size_t(gy), 0);
   busy_.assign(hold_.size(), 0);
+  smooth_found_.assign(hold_.size(), 0);
+  coarse_.assign(hold_.size(), 0);
+  coarsened_.assign(hold_.size(), 0);
 }
 
 void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, ShadingRate rate,
@@ -59,8 +100,17 @@ void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, S
   for (int ty = 0; ty < gy_; ++ty) {
     for (int tx = 0; tx < gx_; ++tx) {
       const size_t t = static_cast<size_t>(ty) * size_t(gx_) + size_t(tx);
-      if (classes[t] != cls || (refined_only && hold_[t] == 0)) continue;
+      if (classes[t] != cls) continue;
       const PixelRect p = tile_pixels(tx, ty, tile, width, height);
+      const bool fine =
+          (rate.width == 1 && rate.height == 1) || (rate.width == 2 && rate.height == 2);
+      if (smooth_ > 0.0 && (coarsened_[t] || (fine && hold_[t] == 0))) {
+        const PixelRect texels = {p[0] / rate.width, p[1] / rate.height,
+                                  (p[2] - 1) / rate.width + 1, (p[3] - 1) / rate.height + 1};
+        if (smooth_texels(rgba, tw, th, texels, (coarsened_[t] ? 4.0 : 1.0) * smooth_))
+          smooth_found_[t] = 1;
+      }
+      if (refined_only && hold_[t] == 0) continue;
       int pairs = 0, differing = 0;
       for (int j = p[1] / rate.height; j <= (p[3] - 1) / rate.height && j < th; j += sy) {
         for (int i = p[0] / rate.width; i <= (p[2] - 1) / rate.width && i < tw; i += sx) {
@@ -73,7 +123,7 @@ void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, S
           }
         }
       }
-      if (pairs > 0 && differing >= share_ * pairs) busy_[t] = 1;
+      if (share_ > 0.0 && pairs > 0 && differing >= share_ * pairs) busy_[t] = 1;
     }
   }
 }
@@ -85,8 +135,13 @@ void ContentAdapt::mark(std::span<const std::uint8_t> busy,
   for (size_t t = 0; t < n; ++t) {
     const int k = classes[t];
     if (k >= kClasses || !measured[static_cast<size_t>(k)]) continue;
+    // Smooth: a tile at the model's 1x1 or 2x2 (not refined), or one this
+    // frame shaded coarser than that.
+    if (smooth_ > 0.0 && (busy[t] & 2u) &&
+        (coarsened_[t] || ((k == 0 || k == kRefinedClass) && hold_[t] == 0)))
+      smooth_found_[t] = 1;
     if (!adapt_refines(k) && hold_[t] == 0) continue;
-    if (busy[t]) busy_[t] = 1;
+    if (busy[t] & 1u) busy_[t] = 1;
   }
 }
 
@@ -110,7 +165,27 @@ void ContentAdapt::settle() {
     else if (hold_[t] > 0)
       --hold_[t];
     busy_[t] = 0;
+    coarse_[t] = smooth_found_[t] && hold_[t] == 0;
+    smooth_found_[t] = 0;
   }
+}
+
+std::vector<std::uint8_t> ContentAdapt::coarsen(TileClasses& classes) {
+  std::fill(coarsened_.begin(), coarsened_.end(), std::uint8_t{0});
+  if (smooth_ <= 0.0 || classes.of_tile.size() != coarse_.size()) return {};
+  bool any = false;
+  for (size_t t = 0; t < coarse_.size(); ++t) {
+    std::uint8_t& c = classes.of_tile[t];
+    if (!coarse_[t] || hold_[t] > 0 || (c != 0 && c != kRefinedClass)) continue;
+    const std::uint8_t to = c == 0 ? kRefinedClass : std::uint8_t(kClasses - 1);
+    --classes.count[c];
+    c = to;
+    ++classes.count[to];
+    coarsened_[t] = 1;
+    any = true;
+  }
+  if (!any) return {};
+  return coarsened_;
 }
 
 std::vector<std::uint8_t> ContentAdapt::refine(TileClasses& classes) const {

@@ -50,6 +50,7 @@ void EmulatedPath::adapt(TileClasses& classes, int gx, int gy, int width, int he
   // The tiles refined this frame: the reconstruction does not fade their
   // neighbours into them.
   refined_ = a.refine(classes);
+  coarsened_ = a.coarsen(classes);
 }
 
 FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& classes, int gx,
@@ -62,12 +63,24 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   // The classes around each tile: its finest neighbour, and which classes
   // it borders.
   const std::vector<std::uint8_t> seen = seen_by_neighbours(classes.of_tile, refined_);
-  const Grid grid{classes.of_tile, neighbourhood_classes(seen, gx, gy), gx, gy};
+  Grid grid{classes.of_tile, neighbourhood_classes(seen, gx, gy), gx, gy};
+  // A tile coarsened by `smooth` (and still at the class it was coarsened
+  // to once small classes merged) fades into no finer neighbour: its
+  // content is smooth, where the border between rates does not show, and
+  // the finer class is not shaded over it.
+  std::vector<bool> coarse(seen.size(), false);
+  if (coarsened_.size() == seen.size()) {
+    for (size_t t = 0; t < seen.size(); ++t) {
+      const int c = classes.of_tile[t];
+      coarse[t] = coarsened_[t] && (c == kRefinedClass || c == kClasses - 1);
+      if (coarse[t]) grid.near[t] = static_cast<std::uint8_t>(1u << c);
+    }
+  }
   // The classes texture: a tile's own class in bits 0-2, as its neighbours
-  // see it in bits 3-5.
+  // see it in bits 3-5, bit 6 where coarsened (busy_tiles.comp).
   std::vector<std::uint8_t> packed(seen.size());
   for (size_t t = 0; t < seen.size(); ++t)
-    packed[t] = static_cast<std::uint8_t>(classes.of_tile[t] | seen[t] << 3);
+    packed[t] = static_cast<std::uint8_t>(classes.of_tile[t] | seen[t] << 3 | (coarse[t] ? 64 : 0));
   upload_classes(classes_, grid_, gx, gy, packed);
   FrameStats s;
   s.native_pixels = double(W) * H;
@@ -98,11 +111,15 @@ void EmulatedPath::measure_busy_tiles(const PassKit& kit, const std::array<bool,
   if (!adapt_) return;
   const gpu::ProfileScope timed("adapt");
   // The classes adapt refines, and the 2x2 class while it holds tiles
-  // refined (there it counts those tiles alone; its own 2x2 tiles stay).
-  bool any = false;
+  // refined (there it counts those tiles alone; its own 2x2 tiles stay);
+  // with `smooth`, also the 1x1 and 2x2 classes it may coarsen and the 4x4
+  // class that holds tiles it coarsened.
+  measured_[0] = smooth_ && present[0];
+  bool any = measured_[0];
   for (int k = 1; k < kClasses; ++k) {
     const auto i = static_cast<size_t>(k);
-    measured_[i] = present[i] && (adapt_refines(k) || (k == kRefinedClass && adapt_->any_held()));
+    measured_[i] = present[i] && (adapt_refines(k) || (k == kRefinedClass && adapt_->any_held()) ||
+                                  (smooth_ && (k == kRefinedClass || k == kClasses - 1)));
     any = any || measured_[i];
   }
   if (!any) {
@@ -110,7 +127,7 @@ void EmulatedPath::measure_busy_tiles(const PassKit& kit, const std::array<bool,
     return;
   }
   busy_->begin(kit, gx, gy);
-  for (int k = 1; k < kClasses; ++k) {
+  for (int k = 0; k < kClasses; ++k) {
     if (measured_[static_cast<size_t>(k)])
       busy_->measure(classes_, targets_[static_cast<size_t>(k)].color(), k, tile_, width, height);
   }

@@ -12,7 +12,8 @@
 // finds vrs's error. Then the frame is put together in linear light: each pixel reads
 // its class bilinearly, and a tile next to a finer one fades into it over one
 // tile, so the 1x1 fovea is native and no tile edge shows (a tile refined by
-// `adapt` pulls no fade: seen_by_neighbours). Every pass is
+// `adapt` pulls no fade: seen_by_neighbours; a tile coarsened by `smooth`
+// fades into no finer neighbour). Every pass is
 // drawn over the tiles that need it, so each output pixel runs one shader
 // once.
 #include <array>
@@ -28,13 +29,16 @@ class EmulatedPath {
  public:
   /// `adapt` above 0: content-adaptive rates (ContentAdapt) with that share,
   /// judged by `edge_contrast` (0.25 when edges are off).
-  EmulatedPath(int tile, double edge_contrast, int edge_samples, double adapt = 0.0)
+  /// `smooth` above 0: smooth tiles shaded a step coarser (ContentAdapt).
+  EmulatedPath(int tile, double edge_contrast, int edge_samples, double adapt = 0.0,
+               double smooth = 0.0)
       : tile_(tile), edge_(edge_contrast), edge_samples_(edge_samples) {
-    if (adapt > 0.0) {
+    if (adapt > 0.0 || smooth > 0.0) {
       const double contrast = edge_contrast > 0.0 ? edge_contrast : 0.25;
-      adapt_.emplace(contrast, adapt, kAdaptHold);
-      busy_.emplace(contrast, adapt);
+      adapt_.emplace(contrast, adapt, kAdaptHold, smooth);
+      busy_.emplace(contrast, adapt, smooth);
     }
+    smooth_ = smooth > 0.0;
   }
   /// Frames a tile refined by `adapt` stays so without being found busy again.
   static constexpr int kAdaptHold = 8;
@@ -94,6 +98,8 @@ class EmulatedPath {
   std::optional<BusyTiles> busy_;
   std::array<bool, kClasses> measured_{};
   std::vector<std::uint8_t> refined_;  ///< per tile: refined by adapt this frame
+  bool smooth_ = false;
+  std::vector<std::uint8_t> coarsened_;  ///< per tile: coarsened by `smooth` this frame
 };
 
 }  // namespace foveate::tech::vrs

@@ -6,7 +6,8 @@
 // tile is one bilinear read of its class (reconstruct_copy.frag).
 // One texel per tile (GL rows): its class (an index into the rates) in bits
 // 0-2, the class its neighbours see in bits 3-5 (a tile refined by adapt
-// is seen as the coarsest: nothing fades into it).
+// is seen as the coarsest: nothing fades into it), bit 6 set where adapt's
+// `smooth` coarsened it.
 uniform usampler2D u_classes;
 uniform sampler2D u_class0, u_class1, u_class2, u_class3, u_class4, u_class5, u_class6;
 uniform vec2 u_extent[7];  // per class: its target's size in screen pixels (texels x rate)
@@ -37,7 +38,7 @@ void main() {
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 n = tile + ivec2(dx, dy);
       if (any(lessThan(n, ivec2(0))) || any(greaterThanEqual(n, grid))) continue;
-      int k = int(texelFetch(u_classes, n, 0).r >> 3);
+      int k = int((texelFetch(u_classes, n, 0).r >> 3) & 7u);
       // Finer: a lower index (the rates are ordered by pixels per fragment,
       // 2x4 before 4x2 and 1x2 before 2x1), so every border between classes fades.
       if (k >= c) continue;

@@ -32,7 +32,8 @@ class Vrs final : public Technique {
         hardware_(driver_rates(v) && (simulate_ || vrs::hardware_available(v.integer("tile")))),
         fixed_(v.boolean("fixed")),
         hardware_path_(tile_, simulate_),
-        emulated_path_(tile_, v.real("edge_contrast"), v.integer("edge_samples"), v.real("adapt")) {
+        emulated_path_(tile_, v.real("edge_contrast"), v.integer("edge_samples"), v.real("adapt"),
+                       v.real("smooth")) {
     ShadingRateOptions o;
     o.tile_px = tile_;
     o.validate();
@@ -123,7 +124,7 @@ TechniqueInfo vrs_info() {
   t.name = "vrs";
   t.summary =
       "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4), tiles of busy "
-      "content refined to 2x2 from the last frame: the driver's (GL_NV_shading_rate_image) where "
+      "content refined to 2x2 and tiles of smooth content coarsened a step from the last frame: the driver's (GL_NV_shading_rate_image) where "
       "it has it, else emulated: each rate class shaded at its reduced resolution over its "
       "tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
@@ -158,6 +159,16 @@ TechniqueInfo vrs_info() {
             "edge_contrast=0, are not refined: plan those at margin 1.5, as foveate rates does)",
             "", ParamType::Real, 0.0, 1.0, 0.4),
       {0.0, 0.1, 0.25, 0.4, 0.5}));
+  t.params.push_back(tuned(
+      param("smooth",
+            "content-adaptive rates for smooth content, the emulation's only: a tile the model "
+            "gives 1x1 or 2x2 is shaded a step coarser (2x2 or 4x4) while every texel its last "
+            "frame shaded lies within this share of its luminance of the mean of its two "
+            "neighbours along each axis (four times that once coarsened: the same curvature at "
+            "twice the spacing), where interpolating at the coarser spacing would change nothing "
+            "the eye sees; a tile refined by adapt is not (0 = off)",
+            "", ParamType::Real, 0.0, 0.5, 0.2),
+      {0.0, 0.05, 0.1, 0.2}));
   t.params.push_back(param("hardware",
                            "shade with the driver's variable-rate shading "
                            "(GL_NV_shading_rate_image) where it has the extension with this "

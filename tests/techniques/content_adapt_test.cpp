@@ -172,5 +172,120 @@ TEST(ContentAdapt, NoNeighbourFadesIntoARefinedTile) {
   EXPECT_EQ(seen_by_neighbours(classes, {}), classes);
 }
 
+// `smooth`: a flat grey at sRGB code 128 (linear 0.2158) with one texel at
+// code 136 (0.2462). The bump leaves the mean of its neighbours by
+// (0.2462 - 0.2158) / 0.2462 = 0.1235 of its luminance, each neighbour the
+// mean of the bump and the flat beyond by 0.0152 / 0.2158 = 0.0704: the
+// tile's curvature is 0.1235.
+std::vector<std::uint8_t> bumped(int tw, int th, int bi, int bj) {
+  return target(tw, th, [&](int i, int j) { return i == bi && j == bj ? 136 : 128; });
+}
+
+TEST(ContentAdapt, SmoothTexelsAreJudgedByTheirLargestCurvature) {
+  const auto t = bumped(16, 16, 5, 7);
+  EXPECT_FALSE(smooth_texels(t, 16, 16, {0, 0, 16, 16}, 0.12));
+  EXPECT_TRUE(smooth_texels(t, 16, 16, {0, 0, 16, 16}, 0.13));
+  // The texels around the bump alone: 0.0704.
+  EXPECT_FALSE(smooth_texels(t, 16, 16, {6, 7, 16, 16}, 0.07));
+  EXPECT_TRUE(smooth_texels(t, 16, 16, {6, 7, 16, 16}, 0.071));
+  // A texel whose neighbour along an axis is unshaded is not judged along
+  // it; a first texel unshaded leaves the tile unjudged (not smooth).
+  auto holed = t;
+  holed[(size_t(7) * 16 + 4) * 4 + 3] = 0;  // left of the bump
+  holed[(size_t(7) * 16 + 6) * 4 + 3] = 0;  // right of it
+  holed[(size_t(6) * 16 + 5) * 4 + 3] = 0;  // below it
+  EXPECT_TRUE(smooth_texels(holed, 16, 16, {0, 0, 16, 16}, 0.08));
+  holed[3] = 0;
+  EXPECT_FALSE(smooth_texels(holed, 16, 16, {0, 0, 16, 16}, 1.0));
+  // Dark texels are judged against kSmoothDark, not their own luminance:
+  // codes 1 and 2 (linear 0.0003 and 0.0006) on black read 0.0003 / 0.005.
+  const auto dark = target(8, 1, [](int i, int) { return i == 3 ? 2 : 1; });
+  EXPECT_TRUE(smooth_texels(dark, 8, 1, {0, 0, 8, 1}, 0.07));
+  EXPECT_FALSE(smooth_texels(dark, 8, 1, {0, 0, 8, 1}, 0.05));
+}
+
+TEST(ContentAdapt, SmoothTilesAreShadedAStepCoarserUntilTheyAreNot) {
+  // Two 1x1 tiles (a 32 x 16 frame), the left with the bump (0.1235), the
+  // right a checker of codes 120 and 136; smooth = 0.15, then 0.05.
+  const auto frame = target(32, 16, [](int i, int j) {
+    if (i < 16) return i == 5 && j == 7 ? 136 : 128;
+    return (i + j) % 2 ? 136 : 120;
+  });
+  ContentAdapt a(0.25, 0.0, 8, 0.15);
+  a.reset(2, 1);
+  TileClasses model;
+  model.of_tile = {0, 0};
+  model.count[0] = 2;
+  a.measure(frame, 32, 16, kShadingRates[0], model.of_tile, 0, false, kTile, 32, 16);
+  a.settle();
+  TileClasses c = model;
+  EXPECT_TRUE(a.refine(c).size() == 2);
+  EXPECT_EQ(a.coarsen(c), (std::vector<std::uint8_t>{1, 0}));
+  EXPECT_EQ(c.of_tile, (std::vector<std::uint8_t>{k2x2, 0}));
+  EXPECT_EQ(c.count[0], 1u);
+  EXPECT_EQ(c.count[k2x2], 1u);
+  // Coarsened, the tile is judged at its 2x2 texels against 4 x 0.15: the
+  // bump (now a texel of the 2x2 target, 16 x 8) holds it there.
+  const auto half = bumped(16, 8, 2, 3);
+  a.measure(half, 16, 8, kShadingRates[k2x2], c.of_tile, k2x2, false, kTile, 32, 16);
+  a.settle();
+  c = model;
+  a.refine(c);
+  EXPECT_EQ(a.coarsen(c), (std::vector<std::uint8_t>{1, 0}));
+  // At 0.03 the same 2x2 texels exceed 4 x 0.03 = 0.12: back to 1x1.
+  ContentAdapt strict(0.25, 0.0, 8, 0.03);
+  strict.reset(2, 1);
+  const auto flat = target(32, 16, [](int, int) { return 128; });
+  strict.measure(flat, 32, 16, kShadingRates[0], model.of_tile, 0, false, kTile, 32, 16);
+  strict.settle();
+  c = model;
+  EXPECT_EQ(strict.coarsen(c), (std::vector<std::uint8_t>{1, 1}));
+  strict.measure(half, 16, 8, kShadingRates[k2x2], c.of_tile, k2x2, false, kTile, 32, 16);
+  strict.settle();
+  c = model;
+  EXPECT_EQ(strict.coarsen(c), (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(c.of_tile, (std::vector<std::uint8_t>{0, k2x2}));
+}
+
+TEST(ContentAdapt, SmoothCoarsensOnlyUnrefinedTilesOfOneAndTwo) {
+  // A model 2x2 tile goes to 4x4; a 4x4 tile, flat or not, stays (nothing
+  // is coarser); a tile adapt refined (4x4 by the model, busy) is not
+  // coarsened back while it holds; off (0), nothing is coarsened.
+  ContentAdapt a(0.25, 0.5, 8, 0.05);
+  a.reset(3, 1);
+  std::vector<std::uint8_t> classes = {k2x2, k4x4, k4x4};
+  std::vector<std::uint8_t> busy = {2, 2, 1};
+  std::array<bool, kClasses> measured{};
+  measured[k4x4] = measured[k2x2] = true;
+  a.mark(busy, classes, measured);
+  a.settle();
+  TileClasses c;
+  c.of_tile = classes;
+  c.count[k2x2] = 1;
+  c.count[k4x4] = 2;
+  EXPECT_EQ(a.refine(c), (std::vector<std::uint8_t>{0, 0, 1}));
+  EXPECT_EQ(a.coarsen(c), (std::vector<std::uint8_t>{1, 0, 0}));
+  EXPECT_EQ(c.of_tile, (std::vector<std::uint8_t>{k4x4, k4x4, k2x2}));
+  EXPECT_EQ(c.count[k4x4], 2u);
+  // The refined tile found smooth at 2x2 is not coarsened while it holds.
+  a.mark(std::vector<std::uint8_t>{2, 2, 2}, c.of_tile, measured);
+  a.settle();
+  TileClasses next;
+  next.of_tile = classes;
+  next.count[k2x2] = 1;
+  next.count[k4x4] = 2;
+  a.refine(next);
+  a.coarsen(next);
+  EXPECT_EQ(next.of_tile, (std::vector<std::uint8_t>{k4x4, k4x4, k2x2}));
+  ContentAdapt off(0.25, 0.5, 8);
+  off.reset(3, 1);
+  off.mark(std::vector<std::uint8_t>{2, 2, 2}, classes, measured);
+  off.settle();
+  TileClasses same;
+  same.of_tile = classes;
+  EXPECT_TRUE(off.coarsen(same).empty());
+  EXPECT_EQ(same.of_tile, classes);
+}
+
 }  // namespace
 }  // namespace foveate::tech::vrs

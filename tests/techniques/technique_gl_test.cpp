@@ -869,6 +869,45 @@ TEST_F(Techniques, VrsAdaptRefinesBusyContentOnly) {
   }
 }
 
+TEST_F(Techniques, VrsSmoothCoarsensSmoothContentOnly) {
+  // `smooth` shades a tile a step coarser than the model asks once its last
+  // frame was smooth: on `cheap` (smooth gradients and a few edges) it
+  // shades fewer pixels from the second frame on, and what it changes is
+  // within a fraction of a code on average; on `detail` (high contrast
+  // everywhere) no tile is smooth and nothing changes.
+  constexpr int W = 1280, H = 720;
+  const Vec2d gaze{W / 2.0, H / 2.0};
+  const auto make = [&](std::map<std::string, double> params) {
+    TechniqueConfig c = config(std::move(params));
+    c.display = Display::load("desktop-1080p").resized(W, H);
+    return make_technique("vrs", c);
+  };
+  for (const char* name : {"detail", "cheap"}) {
+    auto scene = load_scene(name);
+    FrameRunner r = runner(*scene, W, H);
+    auto off = make({{"hardware", 0.0}, {"smooth", 0.0}});
+    auto on = make({{"hardware", 0.0}, {"smooth", 0.1}});
+    FrameStats s_off, s_on;
+    Image img_off, img_on;
+    for (int k = 0; k < 4; ++k) {
+      s_off = r.render(*off, k, GazeState{gaze});
+      img_off = r.read_output();
+      s_on = r.render(*on, k, GazeState{gaze});
+      img_on = r.read_output();
+      if (k == 0) {
+        EXPECT_EQ(s_on.shaded_pixels, s_off.shaded_pixels) << name;
+      }
+    }
+    if (std::string(name) == "cheap") {
+      EXPECT_LT(s_on.shaded_pixels, 0.9 * s_off.shaded_pixels);
+      EXPECT_LT(compare_all(img_off, img_on).mean, 0.5);
+    } else {
+      EXPECT_EQ(s_on.shaded_pixels, s_off.shaded_pixels);
+      EXPECT_EQ(compare_all(img_off, img_on).max, 0.0);
+    }
+  }
+}
+
 TEST_F(Techniques, EveryTechniqueOnAMeshFile) {
   auto scene = load_scene(std::string(FOVEATE_TEST_DATA) + "/models/cube.obj");
   const Image ref = native(*scene);

@@ -1,6 +1,8 @@
 // vrs with a GL context (the fixture fails a test on any GL debug error).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -221,6 +223,90 @@ TEST_F(Vrs, BusyTilesOnTheGpuAreTheCpuMeasuresBusyTiles) {
   EXPECT_GT(busy, measured / 5);
   EXPECT_LT(busy, measured * 4 / 5);
   EXPECT_EQ(mismatched, 0);
+}
+
+TEST_F(Vrs, SmoothTilesOnTheGpuAreTheCpuReferencesSmoothTiles) {
+  // vrs smooth judges on the GPU (busy_tiles.comp, bit 1) what
+  // vrs::smooth_texels judges on the CPU, at the bound for a tile at 1x1 or
+  // 2x2 not refined and at four times it for a coarsened tile (bit 6 of its
+  // class byte); a 4x4 tile not coarsened and a refined tile are not judged.
+  // Tiles of 16 px on a 192 x 90 frame, of classes 1x1, 2x2 and 4x4, each a
+  // flat grey with, by tile, no bump, a middling one (+6 codes: 0.095 of
+  // its luminance, between the bound 0.05 and four times it) or a large one
+  // (+20: 0.27, over four times it), and here and there a texel unshaded; the grey is the same in
+  // every tile (code 128), so that the tiles' borders are flat.
+  constexpr int kTile = 16, W = 192, H = 90, gx = 12, gy = 6;
+  constexpr double kSmooth = 0.05;
+  const std::array<int, 3> cls = {0, 3, 6};
+  std::vector<std::uint8_t> bytes(size_t(gx * gy));
+  for (int t = 0; t < gx * gy; ++t) {
+    const int own = cls[size_t(t % 3)];
+    const bool refined = own == 3 && t % 4 == 1, coarsened = own != 0 && t % 5 == 2;
+    bytes[size_t(t)] =
+        std::uint8_t(own | (refined ? 6 : own) << 3 | (coarsened && !refined ? 64 : 0));
+  }
+  gpu::Texture classes_t = gpu::Texture::create_2d(GL_R8UI, gx, gy);
+  classes_t.set_filter(GL_NEAREST, GL_NEAREST);
+  classes_t.upload(gx, gy, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes.data());
+  PassKit kit;
+  vrs::BusyTiles gpu(0.25, 0.0, kSmooth);
+  gpu.begin(kit, gx, gy);
+  std::vector<int> expected(bytes.size(), 0);
+  std::vector<gpu::Texture> targets;
+  for (const int k : cls) {
+    const ShadingRate r = kShadingRates[size_t(k)];
+    const int tw = (W + r.width - 1) / r.width, th = (H + r.height - 1) / r.height;
+    std::vector<std::uint8_t> rgba(size_t(tw * th * 4));
+    for (int j = 0; j < th; ++j) {
+      for (int i = 0; i < tw; ++i) {
+        const int tx = i * r.width / kTile, ty = j * r.height / kTile;
+        const int bump = (tx * 5 + ty * 3) % 3;  // none, middling, large
+        const bool at_bump = i % 4 == 1 && j % 4 == 2;
+        std::uint8_t* p = &rgba[size_t((j * tw + i) * 4)];
+        p[0] = p[1] = p[2] = std::uint8_t(128 + (at_bump ? (bump == 1 ? 6 : bump * 10) : 0));
+        p[3] = (i * 7 + j * 13) % 29 == 3 ? 0 : 255;
+      }
+    }
+    gpu::Texture t = gpu::Texture::create_2d(GL_SRGB8_ALPHA8, tw, th);
+    t.upload(tw, th, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    gpu.measure(classes_t, t, k, kTile, W, H);
+    targets.push_back(std::move(t));
+    for (int ty = 0; ty < gy; ++ty) {
+      for (int tx = 0; tx < gx; ++tx) {
+        const size_t i = size_t(ty * gx + tx);
+        if ((bytes[i] & 7) != k) continue;
+        const bool coarsened = (bytes[i] & 64) != 0, refined = (bytes[i] >> 3 & 7) != k;
+        if (!coarsened && (refined || k == 6)) continue;
+        const PixelRect texels = {tx * kTile / r.width, ty * kTile / r.height,
+                                  (std::min((tx + 1) * kTile, W) - 1) / r.width + 1,
+                                  (std::min((ty + 1) * kTile, H) - 1) / r.height + 1};
+        expected[i] =
+            vrs::smooth_texels(rgba, tw, th, texels, (coarsened ? 4.0 : 1.0) * kSmooth) ? 1 : 0;
+      }
+    }
+  }
+  gpu.queue();
+  std::vector<int> found;
+  gpu.read([&](std::span<const std::uint8_t> b) {
+    for (const std::uint8_t v : b) found.push_back(v);
+  });
+  ASSERT_EQ(found.size(), expected.size());
+  int smooth = 0, judged_rough = 0, middling_coarse = 0, middling_fine = 0;
+  for (size_t t = 0; t < expected.size(); ++t) {
+    EXPECT_EQ(found[t] & 1, 0) << "tile " << t << ": busy, with adapt off";
+    EXPECT_EQ(found[t] >> 1 & 1, expected[t])
+        << "tile " << t % gx << "," << t / gx << " byte " << int(bytes[t]);
+    smooth += expected[t];
+    judged_rough += (bytes[t] & 7) != 6 && !expected[t];
+    if ((int(t % gx) * 5 + int(t / gx) * 3) % 3 == 1 && expected[t])
+      ++((bytes[t] & 64) ? middling_coarse : middling_fine);
+  }
+  // Both verdicts occur, and coarsened tiles are held smooth by the
+  // middling bump that tiles at the model's rate are not.
+  EXPECT_GT(smooth, 8);
+  EXPECT_GT(judged_rough, 8);
+  EXPECT_GT(middling_coarse, 0);
+  EXPECT_EQ(middling_fine, 0);
 }
 
 }  // namespace
