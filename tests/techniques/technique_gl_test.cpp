@@ -827,6 +827,29 @@ TEST_F(Techniques, VrsDrawsTheGeometryOncePerFrame) {
   EXPECT_EQ(spy.draws, 3);
 }
 
+// Four frames of `off` and `on` in turn through one runner at `gaze` (the
+// content-adaptive rates judge each frame by the last): the first frame,
+// with nothing measured yet, shades the same pixels in both. Returns the
+// last frame's statistics and images, off's first.
+struct InTurn {
+  FrameStats off, on;
+  Image img_off, img_on;
+};
+InTurn render_in_turn(FrameRunner& r, Technique& off, Technique& on, Vec2d gaze,
+                      const std::string& scene) {
+  InTurn out;
+  for (int k = 0; k < 4; ++k) {
+    out.off = r.render(off, k, GazeState{gaze});
+    out.img_off = r.read_output();
+    out.on = r.render(on, k, GazeState{gaze});
+    out.img_on = r.read_output();
+    if (k == 0) {
+      EXPECT_EQ(out.on.shaded_pixels, out.off.shaded_pixels) << scene;
+    }
+  }
+  return out;
+}
+
 // vrs's `adapt` refines the coarse tiles whose last frame showed busy
 // content (detail: checkers and a zone plate everywhere) and leaves smooth
 // content (cheap) at the model's rates; the first frame, with nothing
@@ -845,17 +868,7 @@ TEST_F(Techniques, VrsAdaptRefinesBusyContentOnly) {
     FrameRunner r = runner(*scene, W, H);
     auto off = make("vrs", {{"hardware", 0.0}, {"adapt", 0.0}});
     auto on = make("vrs", {{"hardware", 0.0}, {"adapt", 0.25}});
-    FrameStats s_off, s_on;
-    Image img_off, img_on;
-    for (int k = 0; k < 4; ++k) {
-      s_off = r.render(*off, k, GazeState{gaze});
-      img_off = r.read_output();
-      s_on = r.render(*on, k, GazeState{gaze});
-      img_on = r.read_output();
-      if (k == 0) {
-        EXPECT_EQ(s_on.shaded_pixels, s_off.shaded_pixels) << name;
-      }
-    }
+    const auto [s_off, s_on, img_off, img_on] = render_in_turn(r, *off, *on, gaze, name);
     if (std::string(name) == "detail") {
       EXPECT_GT(s_on.shaded_pixels, 1.1 * s_off.shaded_pixels);
       auto native_t = make("native", {});
@@ -887,17 +900,7 @@ TEST_F(Techniques, VrsSmoothCoarsensSmoothContentOnly) {
     FrameRunner r = runner(*scene, W, H);
     auto off = make({{"hardware", 0.0}, {"smooth", 0.0}});
     auto on = make({{"hardware", 0.0}, {"smooth", 0.1}});
-    FrameStats s_off, s_on;
-    Image img_off, img_on;
-    for (int k = 0; k < 4; ++k) {
-      s_off = r.render(*off, k, GazeState{gaze});
-      img_off = r.read_output();
-      s_on = r.render(*on, k, GazeState{gaze});
-      img_on = r.read_output();
-      if (k == 0) {
-        EXPECT_EQ(s_on.shaded_pixels, s_off.shaded_pixels) << name;
-      }
-    }
+    const auto [s_off, s_on, img_off, img_on] = render_in_turn(r, *off, *on, gaze, name);
     if (std::string(name) == "cheap") {
       EXPECT_LT(s_on.shaded_pixels, 0.9 * s_off.shaded_pixels);
       EXPECT_LT(compare_all(img_off, img_on).mean, 0.5);

@@ -155,6 +155,30 @@ TEST_F(Vrs, HardwareReconstructionFadesIntoTheFinerTile) {
   EXPECT_NEAR(mean / (F::kTile * F::kTile), 127.5, 3.0);
 }
 
+// A class target's sRGB bytes for class `k` of a w x h frame in tiles of
+// `tile` pixels: `fill(i, j, tx, ty, p)` sets texel (i, j) of tile (tx, ty),
+// `p` its four bytes.
+struct ClassTarget {
+  int tw, th;
+  std::vector<std::uint8_t> rgba;
+  template <typename F>
+  ClassTarget(int k, int w, int h, int tile, F fill)
+      : tw((w + kShadingRates[size_t(k)].width - 1) / kShadingRates[size_t(k)].width),
+        th((h + kShadingRates[size_t(k)].height - 1) / kShadingRates[size_t(k)].height),
+        rgba(size_t(tw * th * 4)) {
+    const ShadingRate r = kShadingRates[size_t(k)];
+    for (int j = 0; j < th; ++j)
+      for (int i = 0; i < tw; ++i)
+        fill(i, j, i * r.width / tile, j * r.height / tile, &rgba[size_t((j * tw + i) * 4)]);
+  }
+  // The target as the emulation keeps it (sRGB: fetched linear).
+  [[nodiscard]] gpu::Texture texture() const {
+    gpu::Texture t = gpu::Texture::create_2d(GL_SRGB8_ALPHA8, tw, th);
+    t.upload(tw, th, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    return t;
+  }
+};
+
 TEST_F(Vrs, BusyTilesOnTheGpuAreTheCpuMeasuresBusyTiles) {
   // vrs adapt measures on the GPU (busy_tiles.comp); ContentAdapt::measure
   // is its reference. Tiles of 16 px on a 192 x 90 frame (the top row 10 px
@@ -176,26 +200,20 @@ TEST_F(Vrs, BusyTilesOnTheGpuAreTheCpuMeasuresBusyTiles) {
   std::vector<gpu::Texture> targets;
   for (int k = 1; k < 7; ++k) {
     const ShadingRate r = kShadingRates[size_t(k)];
-    const int tw = (W + r.width - 1) / r.width, th = (H + r.height - 1) / r.height;
-    std::vector<std::uint8_t> rgba(size_t(tw * th * 4));
-    for (int j = 0; j < th; ++j) {
-      for (int i = 0; i < tw; ++i) {
-        const int tx = i * r.width / kTile, ty = j * r.height / kTile;
-        const unsigned h =
-            unsigned(i) * 73856093u ^ unsigned(j) * 19349663u ^ unsigned(k) * 83492791u;
-        // Per tile, how often a texel leaves the tile's level: never, a
-        // third, or two thirds of the time.
-        const unsigned busyness = unsigned(tx * 7 + ty * 3 + k) % 3;
-        const bool changes = (h >> 4) % 3 < busyness;
-        std::uint8_t* p = &rgba[size_t((j * tw + i) * 4)];
-        p[0] = p[1] = p[2] = levels[changes ? (h >> 8) % 4 : unsigned(tx + ty) % 4];
-        p[3] = (h >> 12) % 11 == 0 ? 0 : 255;
-      }
-    }
-    gpu::Texture t = gpu::Texture::create_2d(GL_SRGB8_ALPHA8, tw, th);
-    t.upload(tw, th, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    gpu_busy.measure(classes_t, t, k, kTile, W, H);
-    targets.push_back(std::move(t));
+    const ClassTarget c(k, W, H, kTile, [&](int i, int j, int tx, int ty, std::uint8_t* p) {
+      const unsigned h =
+          unsigned(i) * 73856093u ^ unsigned(j) * 19349663u ^ unsigned(k) * 83492791u;
+      // Per tile, how often a texel leaves the tile's level: never, a
+      // third, or two thirds of the time.
+      const unsigned busyness = unsigned(tx * 7 + ty * 3 + k) % 3;
+      const bool changes = (h >> 4) % 3 < busyness;
+      p[0] = p[1] = p[2] = levels[changes ? (h >> 8) % 4 : unsigned(tx + ty) % 4];
+      p[3] = (h >> 12) % 11 == 0 ? 0 : 255;
+    });
+    const int tw = c.tw, th = c.th;
+    const std::vector<std::uint8_t>& rgba = c.rgba;
+    targets.push_back(c.texture());
+    gpu_busy.measure(classes_t, targets.back(), k, kTile, W, H);
     // The CPU's verdict on this class's tiles: a fresh object holds exactly
     // the tiles it found busy.
     vrs::ContentAdapt cpu(kContrast, kShare, 8);
@@ -255,22 +273,16 @@ TEST_F(Vrs, SmoothTilesOnTheGpuAreTheCpuReferencesSmoothTiles) {
   std::vector<gpu::Texture> targets;
   for (const int k : cls) {
     const ShadingRate r = kShadingRates[size_t(k)];
-    const int tw = (W + r.width - 1) / r.width, th = (H + r.height - 1) / r.height;
-    std::vector<std::uint8_t> rgba(size_t(tw * th * 4));
-    for (int j = 0; j < th; ++j) {
-      for (int i = 0; i < tw; ++i) {
-        const int tx = i * r.width / kTile, ty = j * r.height / kTile;
-        const int bump = (tx * 5 + ty * 3) % 3;  // none, middling, large
-        const bool at_bump = i % 4 == 1 && j % 4 == 2;
-        std::uint8_t* p = &rgba[size_t((j * tw + i) * 4)];
-        p[0] = p[1] = p[2] = std::uint8_t(128 + (at_bump ? (bump == 1 ? 6 : bump * 10) : 0));
-        p[3] = (i * 7 + j * 13) % 29 == 3 ? 0 : 255;
-      }
-    }
-    gpu::Texture t = gpu::Texture::create_2d(GL_SRGB8_ALPHA8, tw, th);
-    t.upload(tw, th, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    gpu.measure(classes_t, t, k, kTile, W, H);
-    targets.push_back(std::move(t));
+    const ClassTarget c(k, W, H, kTile, [](int i, int j, int tx, int ty, std::uint8_t* p) {
+      const int bump = (tx * 5 + ty * 3) % 3;  // none, middling, large
+      const bool at_bump = i % 4 == 1 && j % 4 == 2;
+      p[0] = p[1] = p[2] = std::uint8_t(128 + (at_bump ? (bump == 1 ? 6 : bump * 10) : 0));
+      p[3] = (i * 7 + j * 13) % 29 == 3 ? 0 : 255;
+    });
+    const int tw = c.tw, th = c.th;
+    const std::vector<std::uint8_t>& rgba = c.rgba;
+    targets.push_back(c.texture());
+    gpu.measure(classes_t, targets.back(), k, kTile, W, H);
     for (int ty = 0; ty < gy; ++ty) {
       for (int tx = 0; tx < gx; ++tx) {
         const size_t i = size_t(ty * gx + tx);
