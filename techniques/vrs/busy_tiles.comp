@@ -76,7 +76,7 @@ void main() {
   ivec2 lo = t * u_tile / u_rate;
   ivec2 hi = (min((t + 1) * u_tile, u_frame) - 1) / u_rate;
   int pairs = 0, differing = 0;
-  for (int j = lo.y; j <= hi.y && j < size.y; j += u_step.y) {
+  for (int j = lo.y; u_share > 0.0 && j <= hi.y && j < size.y; j += u_step.y) {
     for (int i = lo.x; i <= hi.x && i < size.x; i += u_step.x) {
       vec4 a = texelFetch(u_target, ivec2(i, j), 0);
       if (i + u_step.x < size.x) {
@@ -89,7 +89,7 @@ void main() {
       }
     }
   }
-  bool busy = u_share > 0.0 && pairs > 0 && float(differing) >= u_share * float(pairs);
+  bool busy = pairs > 0 && float(differing) >= u_share * float(pairs);
   bool flat_enough = false;
   // Judged where it can coarsen a tile: at 1x1 or 2x2 and not refined by
   // adapt (which its neighbours see as another class), or coarsened.

@@ -22,6 +22,9 @@ const std::array<float, 256>& linear_of_srgb() {
   return table;
 }
 
+// Linear luminance (Rec. 709) of linear RGB.
+float luminance(float r, float g, float b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
+
 }  // namespace
 
 static_assert(kShadingRates[kRefinedClass].width == 2 && kShadingRates[kRefinedClass].height == 2);
@@ -48,8 +51,7 @@ bool smooth_texels(std::span<const std::uint8_t> rgba, int tw, int th, PixelRect
     double most = 0.0;
     for (size_t k = 0; k < 3; ++k)
       most = std::max(most, std::abs(double(c.c[k]) - 0.5 * (double(a.c[k]) + b.c[k])));
-    const double l = 0.2126 * c.c[0] + 0.7152 * c.c[1] + 0.0722 * c.c[2];
-    return most / std::max(l, kSmoothDark);
+    return most / std::max(double(luminance(c.c[0], c.c[1], c.c[2])), kSmoothDark);
   };
   if (!at(texels[0], texels[1]).shaded) return false;
   const int x1 = std::min(texels[2], tw), y1 = std::min(texels[3], th);
@@ -86,24 +88,24 @@ void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, S
   const auto at = [&](int i, int j) {
     return rgba.data() + (size_t(j) * size_t(tw) + size_t(i)) * 4;
   };
-  const auto luminance = [&](const std::uint8_t* p) {
-    return 0.2126f * lin[p[0]] + 0.7152f * lin[p[1]] + 0.0722f * lin[p[2]];
+  const auto luminance_of = [&](const std::uint8_t* p) {
+    return luminance(lin[p[0]], lin[p[1]], lin[p[2]]);
   };
   // Samples 4 pixels apart whatever the class, so that a tile refined to
   // 2x2 is judged as it was at 4x4.
   const int sx = std::max(1, 4 / rate.width), sy = std::max(1, 4 / rate.height);
   const auto differs = [&](const std::uint8_t* a, const std::uint8_t* b) {
     if (a[3] != 255 || b[3] != 255) return -1;  // either unshaded: no pair
-    const float la = luminance(a), lb = luminance(b);
+    const float la = luminance_of(a), lb = luminance_of(b);
     return std::abs(la - lb) > static_cast<float>(contrast_) * std::max(la, lb) ? 1 : 0;
   };
+  // `smooth` coarsens the 1x1 and 2x2 classes.
+  const bool fine = (rate.width == 1 && rate.height == 1) || (rate.width == 2 && rate.height == 2);
   for (int ty = 0; ty < gy_; ++ty) {
     for (int tx = 0; tx < gx_; ++tx) {
       const size_t t = static_cast<size_t>(ty) * size_t(gx_) + size_t(tx);
       if (classes[t] != cls) continue;
       const PixelRect p = tile_pixels(tx, ty, tile, width, height);
-      const bool fine =
-          (rate.width == 1 && rate.height == 1) || (rate.width == 2 && rate.height == 2);
       if (smooth_ > 0.0 && (coarsened_[t] || (fine && hold_[t] == 0))) {
         const PixelRect texels = {p[0] / rate.width, p[1] / rate.height,
                                   (p[2] - 1) / rate.width + 1, (p[3] - 1) / rate.height + 1};

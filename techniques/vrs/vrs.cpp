@@ -124,9 +124,9 @@ TechniqueInfo vrs_info() {
   t.name = "vrs";
   t.summary =
       "Variable-rate shading with the acuity model's rates per tile (1x1 .. 4x4), tiles of busy "
-      "content refined to 2x2 and tiles of smooth content coarsened a step from the last frame: the driver's (GL_NV_shading_rate_image) where "
-      "it has it, else emulated: each rate class shaded at its reduced resolution over its "
-      "tiles, reconstructed in linear light.";
+      "content refined to 2x2 and tiles of smooth content coarsened a step from the last frame: "
+      "the driver's (GL_NV_shading_rate_image) where it has it, else emulated: each rate class "
+      "shaded at its reduced resolution over its tiles, reconstructed in linear light.";
   t.source = "VK_KHR_fragment_shading_rate / D3D12 VRS tier 2, rates from Guenter et al.'s model";
   t.params = {
       plan_margin_param(1.0),
