@@ -35,6 +35,13 @@ struct GpuMesh {
   std::vector<Lod> lods;
   glm::vec3 centre{0.0f};
   float radius = 0.0f;
+  /// The winding on the screen of the faces a viewer sees, for a closed mesh
+  /// wound consistently: its other faces never show from outside it, so the
+  /// prepass culls them (a quarter of guenter's G-buffer pass). Unknown (the
+  /// default): both sides are drawn, as files disagree on winding and an
+  /// open surface shows its inside.
+  enum class Winding { unknown, ccw, cw };
+  Winding outside = Winding::unknown;
   [[nodiscard]] size_t triangles(size_t lod = 0) const {
     return lods.empty() ? 0 : static_cast<size_t>(lods[std::min(lod, lods.size() - 1)].count) / 3;
   }

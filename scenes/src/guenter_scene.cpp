@@ -5,16 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
-#include <numbers>
 
 #include "factories.hpp"
+#include "guenter_shapes.hpp"
 #include "mesh_scene_base.hpp"
 
 namespace foveate::detail {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 constexpr int kGrid = 20;         // objects per side
 constexpr float kSpacing = 4.5f;  // world units between objects
 constexpr float kTerrainHalf = 70.0f;
@@ -35,61 +34,6 @@ float terrain_height(float x, float z) {
   return 2.2f * std::sin(0.045f * x) * std::cos(0.06f * z) +
          1.2f * std::sin(0.11f * x + 0.7f) * std::sin(0.09f * z) +
          0.35f * std::sin(0.31f * x + 0.2f * z);
-}
-
-// A parametric surface on (u, v) in [0,1]^2.
-glm::vec3 surface(int shape, float u, float v, glm::vec3& n) {
-  const float th = 2.0f * kPi * u, ph = kPi * v;
-  switch (shape) {
-    case 0: {  // sphere
-      const glm::vec3 p(std::sin(ph) * std::cos(th), std::cos(ph), std::sin(ph) * std::sin(th));
-      n = p;
-      return p;
-    }
-    case 1: {  // torus
-      const float R = 0.75f, r = 0.3f, a = 2.0f * kPi * v;
-      const glm::vec3 c(R * std::cos(th), 0.0f, R * std::sin(th));
-      n = glm::vec3(std::cos(a) * std::cos(th), std::sin(a), std::cos(a) * std::sin(th));
-      return c + r * n;
-    }
-    case 2: {  // superquadric: a rounded cube
-      auto sp = [](float x, float e) { return std::copysign(std::pow(std::abs(x), e), x); };
-      const float e = 0.35f;
-      const glm::vec3 p(sp(std::sin(ph), e) * sp(std::cos(th), e), sp(std::cos(ph), e),
-                        sp(std::sin(ph), e) * sp(std::sin(th), e));
-      n = glm::vec3(sp(std::sin(ph), 2 - e) * sp(std::cos(th), 2 - e), sp(std::cos(ph), 2 - e),
-                    sp(std::sin(ph), 2 - e) * sp(std::sin(th), 2 - e));
-      return 0.85f * p;
-    }
-    default: {  // a vase: a surface of revolution
-      const float y = 2.0f * v - 1.0f;
-      const float r = 0.45f + 0.25f * std::sin(3.0f * y + 1.0f) + 0.1f * std::cos(7.0f * y);
-      const float dr = 0.75f * std::cos(3.0f * y + 1.0f) - 0.7f * std::sin(7.0f * y);
-      n = glm::vec3(std::cos(th), -dr * 0.5f, std::sin(th));
-      return glm::vec3(r * std::cos(th), y, r * std::sin(th));
-    }
-  }
-}
-
-MeshData tessellate(int shape, int seg) {
-  MeshData m;
-  for (int j = 0; j <= seg; ++j) {
-    for (int i = 0; i <= seg; ++i) {
-      const float u = float(i) / float(seg), v = float(j) / float(seg);
-      glm::vec3 n;
-      const glm::vec3 p = surface(shape, u, v, n);
-      n = glm::length(n) > 1e-6f ? glm::normalize(n) : glm::vec3(0, 1, 0);
-      m.vertices.push_back({p.x, p.y, p.z, n.x, n.y, n.z, u, v});
-    }
-  }
-  for (int j = 0; j < seg; ++j) {
-    for (int i = 0; i < seg; ++i) {
-      const unsigned a = unsigned(j * (seg + 1) + i), b = a + 1, c = a + unsigned(seg + 1),
-                     d = c + 1;
-      m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
-    }
-  }
-  return m;
 }
 
 MeshData terrain(int cells) {
@@ -136,10 +80,11 @@ class GuenterScene final : public MeshSceneBase {
             "procedural materials, environment map, continuous LOD",
             o.camera_path.empty() ? fly_through() : CameraPath::load(o.camera_path)) {
     terrain_ = upload_levels({terrain(99), terrain(31), terrain(9)});
-    for (int shape = 0; shape < 4; ++shape) {
+    for (int shape = 0; shape < kGuenterShapes; ++shape) {
       std::vector<MeshData> levels;
-      for (int n : kLevels) levels.push_back(tessellate(shape, n));
+      for (int n : kLevels) levels.push_back(guenter_shape(shape, n));
       shapes_[shape] = upload_levels(levels);
+      shapes_[shape].outside = guenter_shape_outside(shape);
     }
     const float e = 0.5f * kSpacing * (kGrid - 1);
     for (int j = 0; j < kGrid; ++j) {

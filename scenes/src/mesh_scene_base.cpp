@@ -4,7 +4,10 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/profiler.hpp"
@@ -58,8 +61,53 @@ CameraPose MeshSceneBase::eye_pose() const {
   return p;
 }
 
+namespace {
+
+// The order to draw `items` in: nearest first, so that the depth test rejects
+// what later draws would cover before it is shaded (llvmpipe tests depth
+// before the fragment shader, a GPU in its early-Z hardware); a mesh whose
+// bounds hold the eye (terrain, a room) last, as it lies mostly behind the
+// rest. The order changes no visible fragment: the depth test keeps the
+// nearest either way (ties aside).
+std::vector<size_t> draw_order(const std::vector<DrawItem>& items, glm::vec3 eye) {
+  std::vector<std::pair<float, size_t>> keyed;
+  keyed.reserve(items.size());
+  for (size_t i = 0; i < items.size(); ++i) {
+    const GpuMesh& m = *items[i].mesh;
+    const glm::vec3 c = glm::vec3(items[i].model * glm::vec4(m.centre, 1.0f));
+    const float r = m.radius * glm::length(glm::vec3(items[i].model[0]));
+    const float d = glm::length(c - eye);
+    keyed.emplace_back(d <= r ? std::numeric_limits<float>::max() : d - r, i);
+  }
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<size_t> out;
+  out.reserve(keyed.size());
+  for (const auto& k : keyed) out.push_back(k.second);
+  return out;
+}
+
+// Culls the back faces of a closed mesh seen from outside it (GpuMesh::outside);
+// a mirroring model matrix turns its winding over. Anything else is drawn
+// two-sided.
+void cull_back_faces(const GpuMesh& m, const glm::mat4& model, bool seen_from_outside) {
+  if (m.outside == GpuMesh::Winding::unknown || !seen_from_outside) {
+    glDisable(GL_CULL_FACE);
+    return;
+  }
+  const bool ccw =
+      (m.outside == GpuMesh::Winding::ccw) == (glm::determinant(glm::mat3(model)) > 0.0f);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glFrontFace(ccw ? GL_CCW : GL_CW);
+}
+
+}  // namespace
+
+double MeshSceneBase::near_plane() const { return std::max(0.01, scene_radius_ * 0.002); }
+
 glm::mat4 MeshSceneBase::view_projection(const View& v) const {
-  const double n = std::max(0.01, scene_radius_ * 0.002), f = scene_radius_ * 20.0;
+  const double n = near_plane(), f = scene_radius_ * 20.0;
   if (frame_.eye) {
     // The eye's off-axis frustum: x in [0, width] spans tangents left..right,
     // y (origin bottom) down..up.
@@ -159,7 +207,9 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     s.y1 = view.skip_y1;
     skip_frustum = view_projection(s);
   }
-  for (DrawItem& item : items(view, lod)) {
+  std::vector<DrawItem> drawn = items(view, lod);
+  for (size_t index : draw_order(drawn, eye)) {
+    DrawItem& item = drawn[index];
     const GpuMesh& m = *item.mesh;
     const glm::vec3 c = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
     const float scale = glm::length(glm::vec3(item.model[0]));
@@ -182,6 +232,10 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     const GpuMesh::Lod& lv =
         m.lods[static_cast<size_t>(std::min<int>(l, static_cast<int>(m.lods.size()) - 1))];
     const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(item.model)));
+    // Seen from within its bounds (as near its surface as the near plane's
+    // corners, within twice its distance of the eye), a mesh shows both sides.
+    cull_back_faces(m, item.model,
+                    glm::length(c - eye) > m.radius * scale + 2.0f * float(near_plane()));
     const gpu::Program& p = item.material.texture ? prepass_textured_ : prepass_program_;
     if (in_use != &p) {
       p.use();
@@ -202,6 +256,8 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
 }
 
 void MeshSceneBase::prepass_end() {
+  glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
   glDisable(GL_DEPTH_TEST);
   outer_.restore();
   if (gpu::PassProfiler* prof = gpu::PassProfiler::current()) prof->end();

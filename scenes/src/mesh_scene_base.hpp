@@ -77,6 +77,8 @@ class MeshSceneBase : public Scene {
 
  private:
   [[nodiscard]] glm::mat4 view_projection(const View& view) const;
+  /// Distance from the eye to the near clipping plane (world units).
+  [[nodiscard]] double near_plane() const;
   /// The G-buffer for a target size and sample count: one per size kept for
   /// the scene's life (techniques render at several sizes; recreating 66 MB
   /// at 1080p whenever the size changes would be charged to the frame).
