@@ -37,7 +37,7 @@ struct GpuMesh {
   float radius = 0.0f;
   /// The winding on the screen of the faces a viewer sees, for a closed mesh
   /// wound consistently: its other faces never show from outside it, so the
-  /// prepass culls them (a quarter of guenter's G-buffer pass). Unknown (the
+  /// prepass culls them (a fifth of guenter's G-buffer pass). Unknown (the
   /// default): both sides are drawn, as files disagree on winding and an
   /// open surface shows its inside.
   enum class Winding { unknown, ccw, cw };
