@@ -49,13 +49,7 @@ MeshData terrain(int cells) {
       m.vertices.push_back({x, terrain_height(x, z), z, n.x, n.y, n.z, x * 0.1f, z * 0.1f});
     }
   }
-  for (int j = 0; j < cells; ++j) {
-    for (int i = 0; i < cells; ++i) {
-      const unsigned a = unsigned(j * (cells + 1) + i), b = a + 1, c = a + unsigned(cells + 1),
-                     d = c + 1;
-      m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
-    }
-  }
+  grid_triangles(m, cells);
   return m;
 }
 

@@ -62,14 +62,18 @@ MeshData guenter_shape(int shape, int seg) {
       m.vertices.push_back({p.x, p.y, p.z, n.x, n.y, n.z, u, v});
     }
   }
-  for (int j = 0; j < seg; ++j) {
-    for (int i = 0; i < seg; ++i) {
-      const unsigned a = unsigned(j * (seg + 1) + i), b = a + 1, c = a + unsigned(seg + 1),
+  grid_triangles(m, seg);
+  return m;
+}
+
+void grid_triangles(MeshData& m, int cells) {
+  for (int j = 0; j < cells; ++j) {
+    for (int i = 0; i < cells; ++i) {
+      const unsigned a = unsigned(j * (cells + 1) + i), b = a + 1, c = a + unsigned(cells + 1),
                      d = c + 1;
       m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
     }
   }
-  return m;
 }
 
 GpuMesh::Winding guenter_shape_outside(int shape) {
