@@ -106,7 +106,7 @@ void ContentAdapt::measure(std::span<const std::uint8_t> rgba, int tw, int th, S
       const size_t t = static_cast<size_t>(ty) * size_t(gx_) + size_t(tx);
       if (classes[t] != cls) continue;
       const PixelRect p = tile_pixels(tx, ty, tile, width, height);
-      if (smooth_ > 0.0 && (coarsened_[t] || (fine && hold_[t] == 0))) {
+      if (judged_smooth(t, fine)) {
         const PixelRect texels = {p[0] / rate.width, p[1] / rate.height,
                                   (p[2] - 1) / rate.width + 1, (p[3] - 1) / rate.height + 1};
         if (smooth_texels(rgba, tw, th, texels, (coarsened_[t] ? 4.0 : 1.0) * smooth_))
@@ -137,11 +137,7 @@ void ContentAdapt::mark(std::span<const std::uint8_t> busy,
   for (size_t t = 0; t < n; ++t) {
     const int k = classes[t];
     if (k >= kClasses || !measured[static_cast<size_t>(k)]) continue;
-    // Smooth: a tile at the model's 1x1 or 2x2 (not refined), or one this
-    // frame shaded coarser than that.
-    if (smooth_ > 0.0 && (busy[t] & 2u) &&
-        (coarsened_[t] || ((k == 0 || k == kRefinedClass) && hold_[t] == 0)))
-      smooth_found_[t] = 1;
+    if ((busy[t] & 2u) && judged_smooth(t, k == 0 || k == kRefinedClass)) smooth_found_[t] = 1;
     if (!adapt_refines(k) && hold_[t] == 0) continue;
     if (busy[t] & 1u) busy_[t] = 1;
   }
@@ -170,6 +166,10 @@ void ContentAdapt::settle() {
     coarse_[t] = smooth_found_[t] && hold_[t] == 0;
     smooth_found_[t] = 0;
   }
+}
+
+bool ContentAdapt::judged_smooth(size_t t, bool fine) const {
+  return smooth_ > 0.0 && (coarsened_[t] || (fine && hold_[t] == 0));
 }
 
 std::vector<std::uint8_t> ContentAdapt::coarsen(TileClasses& classes) {

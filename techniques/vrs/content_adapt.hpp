@@ -78,6 +78,10 @@ class ContentAdapt {
   [[nodiscard]] bool any_held() const;
 
  private:
+  /// Whether `smooth` judges tile `t`: one this frame coarsened, or one the
+  /// model gives 1x1 or 2x2 (`fine`) not held refined.
+  [[nodiscard]] bool judged_smooth(size_t t, bool fine) const;
+
   double contrast_, share_, smooth_;
   int hold_frames_;
   int gx_ = 0, gy_ = 0;
