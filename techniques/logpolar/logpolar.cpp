@@ -119,7 +119,7 @@ class LogPolar final : public Technique {
     const bool still = key && key == last_key_;
     const bool temporal = history_ > 0.0 && (vp.has_value() || still);
     last_key_ = key;
-    double edges = 0.0;
+    PixelCount edges;
     const PixelCount shaded = shade_buffer(scene, native, m, d, temporal, frame.frame, edges);
     const PixelCount disc = shade_native_disc(scene, native, d);
     const gpu::RenderTarget& shown = resolve_temporal(scene, native, m, temporal, vp);
@@ -130,7 +130,7 @@ class LogPolar final : public Technique {
     stats.parts.push_back({"log-polar buffer", buffer_px});
     stats.parts.push_back({"native disc", disc_px});
     // Each supersampled texel's new samples count as shaded pixels.
-    const double edge_px = edge_samples_ * edges;
+    const double edge_px = edge_samples_ * edges.read();
     if (edge_ > 0.0) stats.parts.push_back({"supersampled edges", edge_px});
     stats.shaded_pixels = buffer_px + disc_px + edge_px;
     return stats;
@@ -239,7 +239,7 @@ class LogPolar final : public Technique {
   //    antialiasing, when `jitter`); alpha 0 where nothing is shaded.
   //    Returns the texels shaded.
   PixelCount shade_buffer(Scene& scene, const View& native, const Mapping& m, const NativeDisc& d,
-                          bool jitter, int frame, double& edges) {
+                          bool jitter, int frame, PixelCount& edges) {
     const int W = native.target_width, H = native.target_height;
     const int bw = m.buffer_w, bh = m.buffer_h;
     buffer_.ensure(bw, bh, GL_SRGB8_ALPHA8);
@@ -273,7 +273,7 @@ class LogPolar final : public Technique {
     // the small objects and highlights one sample per cell aliases, reshaded
     // with edge_samples more where a texel differs from a neighbour by more
     // than edge_contrast.
-    edges = 0.0;
+    edges = {};
     if (edge_ > 0.0 && !cover.empty()) {
       scratch_.ensure(bw, bh, GL_SRGB8_ALPHA8);
       edges = kit_.supersample_edges(scene, native, "logpolar/map_logpolar.glsl", buffer_,

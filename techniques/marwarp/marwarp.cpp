@@ -131,7 +131,7 @@ class MarWarp final : public Technique {
     stats.parts.push_back({"warped buffer", buffer_px});
     stats.parts.push_back({"native disc", disc_px});
     // Each supersampled texel's new samples count as shaded pixels.
-    const double edge_px = edge_samples_ * shaded.edges;
+    const double edge_px = edge_samples_ * shaded.edges.read();
     stats.parts.push_back({"supersampled edges", edge_px});
     stats.shaded_pixels = buffer_px + disc_px + edge_px;
     return stats;
@@ -199,8 +199,7 @@ class MarWarp final : public Technique {
   }
 
   struct Shaded {
-    PixelCount buffer, disc;
-    double edges = 0;
+    PixelCount buffer, disc, edges;
   };
 
   // Shades G-buffer level k: the buffer's columns from `first` to where the

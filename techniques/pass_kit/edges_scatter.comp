@@ -1,19 +1,20 @@
 // PassKit::supersample_edges: each listed texel's packed shading
 // (shade_edges.frag's block layout) stored back into the buffer, one
-// invocation per entry. An sRGB-encoded buffer is written through a view of
+// invocation per entry (the total from edges_list.comp's head: the
+// dispatch may be sized by the GPU alone). An sRGB-encoded buffer is written through a view of
 // its bytes as RGBA8 (image stores do not encode), so the colour is encoded
 // here.
 #include "color.glsl"
+#include "pass_kit/edges_rows.glsl"
 layout(local_size_x = 64) in;
 layout(r32ui, binding = 1) uniform readonly uimage2D u_list;
 layout(binding = 2) uniform writeonly image2D u_buffer;
 uniform sampler2D u_shaded;
-uniform int u_count;
 uniform int u_block_columns;
 uniform int u_srgb;
 void main() {
   int k = int(gl_GlobalInvocationID.x);
-  if (k >= u_count) return;
+  if (k >= int(total)) return;
   int w = imageSize(u_list).x;
   uint e = imageLoad(u_list, ivec2(k % w, k / w)).r;
   int b = k >> 4, i = k & 15;

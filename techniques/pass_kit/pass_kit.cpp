@@ -1,7 +1,10 @@
 #include "foveate/techniques/pass_kit.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
+#include "foveate/core/error.hpp"
+#include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/profiler.hpp"
 #include "foveate_embedded/techniques_shaders.hpp"
 
@@ -60,9 +63,10 @@ const gpu::Program& PassKit::scene_program(const Scene& scene, const std::string
 }
 
 const gpu::Program& PassKit::scene_program_with(const Scene& scene, const std::string& before,
-                                                const std::string& main, int samples) {
+                                                const std::string& main, int samples,
+                                                const std::string& vertex) {
   const std::string key =
-      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples);
+      scene.shade_key() + "|" + before + "|" + main + "|" + std::to_string(samples) + "|" + vertex;
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   std::vector<gpu::StageSource::Piece> pieces = scene.shade_source();
@@ -75,7 +79,7 @@ const gpu::Program& PassKit::scene_program_with(const Scene& scene, const std::s
   auto tables = scene.shader_files();
   for (const auto& t : with_library(shaders_)) tables.push_back(t);
   const gpu::ShaderCompiler c(tables);
-  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{"fullscreen.vert", {}}}},
+  gpu::Program p = c.build({gpu::StageSource{GL_VERTEX_SHADER, {{vertex, {}}}},
                             gpu::StageSource{GL_FRAGMENT_SHADER, pieces}},
                            "scene '" + scene.info().name + "' with " + main);
   const gpu::Program& stored = programs_.emplace(key, std::move(p)).first->second;
@@ -212,13 +216,53 @@ PixelCount PassKit::shade(Scene& scene, const View& view, const std::string& map
   return count;
 }
 
+PixelCount PassKit::count_from(const gpu::Buffer& source, GLintptr offset) {
+  std::shared_ptr<PixelCount::Slot> slot;
+  for (const auto& s : buffer_counts_) {
+    if (s.use_count() == 1) {
+      slot = s;
+      break;
+    }
+  }
+  if (!slot) {
+    slot = buffer_counts_.emplace_back(
+        std::make_shared<PixelCount::Slot>(gpu::Buffer::create(sizeof(GLuint), nullptr)));
+  }
+  slot->read = false;
+  glCopyNamedBufferSubData(source.id(), slot->buffer.id(), offset, 0, sizeof(GLuint));
+  PixelCount count;
+  count.terms_.push_back(std::move(slot));
+  return count;
+}
+
+bool PassKit::indirect_edges() {
+  if (indirect_edges_) return *indirect_edges_;
+  // FOVEATE_EDGES=indirect or readback forces a path (to compare them on
+  // one renderer); else the renderer decides.
+  const char* env = std::getenv("FOVEATE_EDGES");
+  const std::string force = env ? env : "";
+  if (force == "indirect" || force == "readback") {
+    indirect_edges_ = force == "indirect";
+  } else if (!force.empty()) {
+    throw Error("FOVEATE_EDGES='" + force + "': expected 'indirect' or 'readback'");
+  } else {
+    indirect_edges_ = gpu::FrameTimer::gpu_timer_meaningful();
+  }
+  return *indirect_edges_;
+}
+
 double PixelCount::read() const {
   double total = known_;
   for (const auto& slot : terms_) {
-    if (!slot->read) {
+    if (!slot->read && slot->query) {
       GLuint64 samples = 0;
       glGetQueryObjectui64v(slot->query.id(), GL_QUERY_RESULT, &samples);
       slot->value = static_cast<double>(samples);
+      slot->read = true;
+    } else if (!slot->read) {
+      GLuint n = 0;
+      glGetNamedBufferSubData(slot->buffer.id(), 0, sizeof(GLuint), &n);
+      slot->value = static_cast<double>(n);
       slot->read = true;
     }
     total += slot->value;

@@ -16,10 +16,10 @@
 // derivatives mean nothing here.
 #include "color.glsl"
 #include "pass_kit/footprint.glsl"
+#include "pass_kit/edges_rows.glsl"
 uniform usampler2D u_edge_list;
 uniform int u_edge_samples;
 uniform int u_block_columns;
-uniform int u_count;  // entries in the list; the last block's rest is not shaded
 uniform sampler2D u_centre;
 out vec4 o_color;
 const vec2 kGrid[4] =
@@ -28,7 +28,7 @@ const vec2 kDiagonal[2] = vec2[2](vec2(-1.0 / 3.0, 1.0 / 3.0), vec2(1.0 / 3.0, -
 void main() {
   ivec2 q = ivec2(gl_FragCoord.xy);
   int k = ((q.y >> 2) * u_block_columns + (q.x >> 2)) * 16 + (q.y & 3) * 4 + (q.x & 3);
-  if (k >= u_count) {
+  if (k >= int(total)) {  // the last block's rest
     o_color = vec4(0.0);
     return;
   }

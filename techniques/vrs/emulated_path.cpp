@@ -97,10 +97,10 @@ FrameStats EmulatedPath::render(PassKit& kit, Scene& scene, const TileClasses& c
   for (int k = 0; k < kClasses; ++k) {
     if (!present[static_cast<size_t>(k)]) continue;
     const Shaded& n = shaded[static_cast<size_t>(k)];
-    const double texels = n.texels.read();
+    const double texels = n.texels.read(), reshaded = n.edges.read();
     s.parts.push_back({kShadingRates[static_cast<size_t>(k)].name(), texels});
-    s.shaded_pixels += texels + edge_samples_ * n.edges;
-    edges += n.edges;
+    s.shaded_pixels += texels + edge_samples_ * reshaded;
+    edges += reshaded;
   }
   if (edge_ > 0.0) s.parts.push_back({"supersampled edges", edge_samples_ * edges});
   return s;

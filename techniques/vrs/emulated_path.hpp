@@ -67,8 +67,7 @@ class EmulatedPath {
   /// What one class's shading cost: its texels, and those reshaded with
   /// edge_samples more.
   struct Shaded {
-    PixelCount texels;
-    double edges = 0;
+    PixelCount texels, edges;
   };
   /// Shades class `k` into its own target over the texels the
   /// reconstruction reads of it.

@@ -114,7 +114,10 @@ Texels read(const gpu::RenderTarget& t) {
   return out;
 }
 
-class SupersampleEdgesTest : public test::GlTest {
+// Each test runs both ways: with the total read back and the packed pass
+// scissored (software renderers), and with the GPU sizing the packed pass
+// and the store from the total it listed (hardware ones).
+class SupersampleEdgesTest : public test::GlTest, public ::testing::WithParamInterface<bool> {
  protected:
   // Runs the pass over `grey` (a linear luminance per texel, row 0 at the
   // bottom) in a buffer of `format` (RGBA16F, or GL_SRGB8_ALPHA8, which
@@ -139,10 +142,13 @@ class SupersampleEdgesTest : public test::GlTest {
     gpu::RenderTarget scratch;
     scratch.ensure(kW, kH, format);
     const View view = View::full(kW, kH);
-    const double n = kit_.supersample_edges(
-        *scene_, view, kMapRect, buffer, scratch.color(), {{0, 0, kLast, kH}}, 0, kLast, 0.25,
-        [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); }, true, rows,
-        samples);
+    kit_.set_indirect_edges(GetParam());
+    const double n =
+        kit_.supersample_edges(
+                *scene_, view, kMapRect, buffer, scratch.color(), {{0, 0, kLast, kH}}, 0, kLast,
+                0.25, [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); },
+                true, rows, samples)
+            .read();
     Texels got = read(buffer);  // as stored: decoded here
     if (srgb)
       for (auto& t : got)
@@ -174,7 +180,7 @@ class SupersampleEdgesTest : public test::GlTest {
   SceneAt scene_at_ = gradient_at;
 };
 
-TEST_F(SupersampleEdgesTest, ReshadesTheContrastyTexelsOfTheCoverOnly) {
+TEST_P(SupersampleEdgesTest, ReshadesTheContrastyTexelsOfTheCoverOnly) {
   // A step from 0.2 to 0.8 between columns 23 and 24, one bright texel at
   // (6, 8), and one at (38, 4), outside the covered columns.
   std::vector<float> grey(size_t(kW * kH), 0.2f);
@@ -192,7 +198,7 @@ TEST_F(SupersampleEdgesTest, ReshadesTheContrastyTexelsOfTheCoverOnly) {
   EXPECT_EQ(first, second);
 }
 
-TEST_F(SupersampleEdgesTest, EveryTexelOfACheckerboardIsReshaded) {
+TEST_P(SupersampleEdgesTest, EveryTexelOfACheckerboardIsReshaded) {
   // Rows of many marks each: the list spans many of its own rows.
   std::vector<float> grey(size_t(kW * kH));
   for (int y = 0; y < kH; ++y)
@@ -200,7 +206,7 @@ TEST_F(SupersampleEdgesTest, EveryTexelOfACheckerboardIsReshaded) {
   EXPECT_EQ(run(grey), kLast * kH);
 }
 
-TEST_F(SupersampleEdgesTest, AnSrgbBufferGetsItsReshadedTexelsEncoded) {
+TEST_P(SupersampleEdgesTest, AnSrgbBufferGetsItsReshadedTexelsEncoded) {
   // logpolar's and vrs's buffers store sRGB-encoded bytes, which image
   // stores do not encode by themselves.
   std::vector<float> grey(size_t(kW * kH), 0.2f);
@@ -209,7 +215,7 @@ TEST_F(SupersampleEdgesTest, AnSrgbBufferGetsItsReshadedTexelsEncoded) {
   EXPECT_EQ(run(grey, nullptr, GL_SRGB8_ALPHA8), 2 * kH);
 }
 
-TEST_F(SupersampleEdgesTest, RowsWrapAtTheMappingsRowsNotTheBuffersHeight) {
+TEST_P(SupersampleEdgesTest, RowsWrapAtTheMappingsRowsNotTheBuffersHeight) {
   // marwarp's buffer keeps the most rows it has needed: with 18 rows in use,
   // row 17 neighbours row 0 (bright), not row 18 (as dark as it), and rows
   // 18-23 are left alone. Wrapping at the height would mark row 23 instead.
@@ -219,7 +225,7 @@ TEST_F(SupersampleEdgesTest, RowsWrapAtTheMappingsRowsNotTheBuffersHeight) {
   EXPECT_EQ(run(grey, nullptr, GL_RGBA16F, kRows), 3 * kLast);
 }
 
-TEST_F(SupersampleEdgesTest, TwoSamplesOnTheDiagonalAreAveragedWithTheCentre) {
+TEST_P(SupersampleEdgesTest, TwoSamplesOnTheDiagonalAreAveragedWithTheCentre) {
   // One bright texel at (10, 6) and its neighbours are reshaded over the
   // step scene. With 2 samples texel (10, 6) holds (0.9 + the samples at
   // (10.17, 6.83) and (10.83, 6.17)) / 3: red and green a third bright
@@ -243,9 +249,34 @@ TEST_F(SupersampleEdgesTest, TwoSamplesOnTheDiagonalAreAveragedWithTheCentre) {
                Error);
 }
 
-TEST_F(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
+TEST_P(SupersampleEdgesTest, AFlatBufferIsLeftAlone) {
   EXPECT_EQ(run(std::vector<float>(size_t(kW * kH), 0.5f)), 0);
 }
+
+TEST_P(SupersampleEdgesTest, CallsOfOneSizeEachCountTheirOwnTexels) {
+  // marwarp reshades each G-buffer level's columns of one buffer: the calls
+  // share their storage, and the counts are read after the last of them.
+  gpu::RenderTarget a, b, scratch;
+  for (gpu::RenderTarget* t : {&a, &b, &scratch}) t->ensure(kW, kH, GL_RGBA16F);
+  std::vector<std::array<float, 4>> flat(size_t(kW * kH), {0.5f, 0.5f, 0.5f, 1.0f});
+  glTextureSubImage2D(a.color().id(), 0, 0, 0, kW, kH, GL_RGBA, GL_FLOAT, flat.data());
+  flat[size_t(8 * kW + 6)] = {0.9f, 0.9f, 0.9f, 1.0f};  // itself and its 4 neighbours
+  glTextureSubImage2D(b.color().id(), 0, 0, 0, kW, kH, GL_RGBA, GL_FLOAT, flat.data());
+  const View view = View::full(kW, kH);
+  const SetUniforms set = [&](const gpu::Program& p, gpu::Samplers&) { set_rect_mapping(p, view); };
+  kit_.set_indirect_edges(GetParam());
+  const PixelCount first = kit_.supersample_edges(*scene_, view, kMapRect, b, scratch.color(),
+                                                  {{0, 0, kW, kH}}, 0, kW, 0.25, set);
+  const PixelCount second = kit_.supersample_edges(*scene_, view, kMapRect, a, scratch.color(),
+                                                   {{0, 0, kW, kH}}, 0, kW, 0.25, set);
+  EXPECT_EQ(first.read(), 5.0);
+  EXPECT_EQ(second.read(), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, SupersampleEdgesTest, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& i) {
+                           return i.param ? "Indirect" : "ReadBack";
+                         });
 
 // A frame's shading passes, read only after the last of them: each count
 // is its own pass's, sums add up (a count twice counts twice), and the queries are
@@ -322,7 +353,8 @@ TEST_F(ShadingPassTest, TellsTheSceneTheSpacingOfItsSamples) {
   (void)kit.shade(*scene, v, kMapRect, half, set);
   EXPECT_NEAR(spacing(read(half)[size_t(5 * kW + 30)]), 2.0, 0.01);
   EXPECT_GT(kit.supersample_edges(*scene, v, kMapRect, half, scratch.color(), {{0, 0, kW, kH}}, 0,
-                                  kW, 0.25, set, false),
+                                  kW, 0.25, set, false)
+                .read(),
             0.0);
   const Texels after = read(half);
   int reshaded = 0;
@@ -339,7 +371,8 @@ TEST_F(ShadingPassTest, TellsTheSceneTheSpacingOfItsSamples) {
   // told 2 / sqrt(3); the centre keeps the 2 it was shaded with.
   (void)kit.shade(*scene, v, kMapRect, half, set);
   EXPECT_GT(kit.supersample_edges(*scene, v, kMapRect, half, scratch.color(), {{0, 0, kW, kH}}, 0,
-                                  kW, 0.25, set, false, 0, 2),
+                                  kW, 0.25, set, false, 0, 2)
+                .read(),
             0.0);
   const double mean = (linear(2.0 / 8) + 2 * linear(2.0 / std::sqrt(3.0) / 8)) / 3;
   EXPECT_NEAR(spacing(read(half)[size_t(5 * kW + 10)]), 8 * encode(mean), 0.01);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -39,10 +40,13 @@ class PixelCount {
   PixelCount& operator+=(const PixelCount& other);
   friend PixelCount operator+(PixelCount a, const PixelCount& b) { return a += b; }
 
-  /// One query of PassKit's pool, free again when no count holds it.
+  /// One count of PassKit's pools, free again when no count holds it: an
+  /// occlusion query's, or a 4-byte buffer's (a count a pass wrote on the GPU).
   struct Slot {
     explicit Slot(gpu::Query q) : query(std::move(q)) {}
+    explicit Slot(gpu::Buffer b) : buffer(std::move(b)) {}
     gpu::Query query;
+    gpu::Buffer buffer;
     bool read = false;
     double value = 0.0;
   };
@@ -142,26 +146,44 @@ class PassKit {
   /// colour is RGBA16F or GL_SRGB8_ALPHA8 (immutable storage). Packed, only marked
   /// texels are shaded: over the buffer itself a stencil test leaves whole
   /// 4x4 blocks (llvmpipe) or 2x2 quads (GPUs) running for one marked texel.
-  /// Returns the texels reshaded (each costs `samples` samples).
-  double supersample_edges(Scene& scene, const View& view, const std::string& mapping,
-                           const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
-                           const std::vector<PixelRect>& cover, int first, int last,
-                           double contrast, const SetUniforms& set, bool wrap_rows = true,
-                           int rows = 0, int samples = 4);
+  /// Returns the texels reshaded (each costs `samples` samples), read when
+  /// the count is. With indirect_edges() the GPU sizes the packed pass and
+  /// the store from the total it listed, and nothing waits for it; without,
+  /// the total is read back first and the packed pass drawn over scissored
+  /// rectangles (whole 4x4 blocks on llvmpipe, where an indirect quad's
+  /// diagonal would shade the blocks it crosses twice). The two give the
+  /// same texels.
+  PixelCount supersample_edges(Scene& scene, const View& view, const std::string& mapping,
+                               const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
+                               const std::vector<PixelRect>& cover, int first, int last,
+                               double contrast, const SetUniforms& set, bool wrap_rows = true,
+                               int rows = 0, int samples = 4);
+  /// Whether supersample_edges runs without reading the total back: by
+  /// default on hardware renderers (gpu::FrameTimer::gpu_timer_meaningful),
+  /// not on software ones; FOVEATE_EDGES=indirect or readback in the
+  /// environment forces one (an Error names any other value), and the setter
+  /// overrides both.
+  [[nodiscard]] bool indirect_edges();
+  void set_indirect_edges(bool on) { indirect_edges_ = on; }
 
  private:
   /// A program of two files from the technique shaders, cached under `key`.
   const gpu::Program& built(const std::string& key, const std::string& vertex,
                             const std::string& fragment);
   const gpu::Program& scene_program_with(const Scene& scene, const std::string& before,
-                                         const std::string& main, int samples = 1);
+                                         const std::string& main, int samples = 1,
+                                         const std::string& vertex = "fullscreen.vert");
+  /// A count in a pooled 4-byte buffer, copied from `source` at `offset`.
+  PixelCount count_from(const gpu::Buffer& source, GLintptr offset);
   void draw_triangle(const gpu::Program& program) const;
   /// What a program's passes are timed as (gpu::ProfileScope).
   [[nodiscard]] const char* pass_name(const gpu::Program& program) const;
   std::vector<std::span<const embedded::EmbeddedFile>> shaders_;  ///< the technique's own
   gpu::ShaderCompiler compiler_;
   gpu::VertexArray vao_;
-  std::vector<std::shared_ptr<PixelCount::Slot>> counts_;  ///< shade's queries
+  std::vector<std::shared_ptr<PixelCount::Slot>> counts_;         ///< shade's queries
+  std::vector<std::shared_ptr<PixelCount::Slot>> buffer_counts_;  ///< count_from's
+  std::optional<bool> indirect_edges_;
   RectPass rect_pass_;
   DepthRegions regions_;  ///< pass_around_disc's
   std::map<std::string, gpu::Program> programs_;
@@ -171,8 +193,15 @@ class PassKit {
     gpu::Texture marks;        ///< R32UI: a bit per texel, 1 = reshade
     gpu::Texture list;         ///< R32UI: the marked texels, packed
     gpu::RenderTarget shaded;  ///< their samples' means, packed as the list
-    gpu::Buffer rows;          ///< total, then each row's first entry
+    gpu::Buffer rows;          ///< head and rows (pass_kit/edges_rows.glsl)
+    int columns = 1;           ///< the packed target's 4x4 blocks to a row
   };
+  /// The storage for a w x h buffer (made on first use), and the programs.
+  EdgeScratch& edge_scratch(int w, int h);
+  /// supersample_edges' marks and list (edges.frag, edges_list.comp).
+  void list_edges(const EdgeScratch& e, const gpu::RenderTarget& buffer,
+                  const gpu::Texture& scratch, const std::vector<PixelRect>& cover, int first,
+                  int last, double contrast, bool wrap_rows, int rows);
   /// One per buffer size, kept: vrs reshades several class targets of
   /// different sizes every frame.
   std::map<std::pair<int, int>, EdgeScratch> edges_;
