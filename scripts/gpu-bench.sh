@@ -122,6 +122,28 @@ if [ "$quality" = 1 ]; then
     cp "$dir/results.json" "$out/results/$slug-quality-$scene.json"
   done
 fi
+# The edges logpolar, marwarp and vrs reshade: listed, shaded and stored with
+# indirect draws (a GPU's default) against the count read back first
+# (llvmpipe's), the same frames either way; the tables above ran the
+# renderer's default.
+for scene in guenter raymarch; do
+  for edges in indirect readback; do
+    dir="$work/edges-$edges-$scene"
+    echo "gpu-bench.sh: $scene, edges $edges" >&2
+    FOVEATE_EDGES=$edges "$bin" bench --scene $scene --size $first \
+      --techniques native,vrs,marwarp,logpolar --frames "$frames" --no-metrics --passes \
+      "${plan[@]}" --quiet --out "$dir" >/dev/null
+    {
+      echo "## Edges $edges: $scene at $first"
+      echo
+      echo "\`FOVEATE_EDGES=$edges foveate bench --scene $scene --size $first --techniques native,vrs,marwarp,logpolar --frames $frames --no-metrics --passes$shown_plan\`"
+      echo
+      cat "$dir/results.md"
+      echo
+    } >> "$tmpdoc"
+    cp "$dir/results.json" "$out/results/$slug-edges-$edges-$scene.json"
+  done
+done
 # vrs: the driver's shading-rate image (GL_NV_shading_rate_image, where the
 # renderer has it) against the emulation, against the 4x4 reference, both
 # without edge reshading or content-adaptive rates (the driver's coarse pixels

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <thread>
 
+#include "foveate/core/error.hpp"
 #include "foveate/gpu/gl.hpp"
 
 #ifndef FOVEATE_VERSION
@@ -55,9 +56,29 @@ RunEnvironment capture_environment(const std::string& command) {
   e.cpu_model = cpu_model();
   e.cores = std::thread::hardware_concurrency();
   e.load_start = load_average();
+  for (const char* name : kRunVariables) {
+    if (const char* v = std::getenv(name)) e.variables[name] = v;
+  }
   return e;
 }
 
 void finish_environment(RunEnvironment& env) { env.load_end = load_average(); }
+
+void check_same_build(const RunEnvironment& env, const std::string& name,
+                      const RunEnvironment& first, const std::string& first_name) {
+  if (env.version != first.version) {
+    throw Error(name + ": foveate " + env.version + ", but " + first_name + " is from foveate " +
+                first.version);
+  }
+  const auto shown = [](const std::map<std::string, std::string>& v) {
+    std::string s;
+    for (const auto& [k, x] : v) s += (s.empty() ? "" : " ") + k + "=" + x;
+    return s.empty() ? std::string("none set") : s;
+  };
+  if (env.variables != first.variables) {
+    throw Error(name + ": run with " + shown(env.variables) + ", but " + first_name + " with " +
+                shown(first.variables) + " (environment variables that choose what runs)");
+  }
+}
 
 }  // namespace foveate::bench

@@ -126,6 +126,7 @@ BenchResult read_bench_results(const nlohmann::json& j, const std::string& where
   b.environment.gl_version = env.value("gl_version", "");
   b.environment.cpu_model = env.value("cpu_model", "");
   b.environment.cores = env.value("cpu_cores", 0u);
+  b.environment.variables = env.value("variables", std::map<std::string, std::string>{});
   b.skipped = j.value("skipped", std::vector<std::string>{});
   b.gaze_fallback = j.value("gaze_fallback", false);
   b.fallback_frames = j.value("gaze_fallback_frames", std::vector<int>{});
@@ -159,10 +160,7 @@ BenchResult merge_shards(const std::vector<BenchResult>& shards,
   for (size_t i = 0; i < shards.size(); ++i) {
     const BenchResult& s = shards[i];
     if (s.merged_shards > 0) throw Error(names[i] + ": already a merged result");
-    if (s.environment.version != first.environment.version) {
-      throw Error(names[i] + ": foveate " + s.environment.version + ", but " + names[0] +
-                  " is from foveate " + first.environment.version);
-    }
+    check_same_build(s.environment, names[i], first.environment, names[0]);
     if (s.options.shard.count != count) {
       throw Error(names[i] + ": shard of " + std::to_string(s.options.shard.count) + ", but " +
                   names[0] + " is a shard of " + std::to_string(count));

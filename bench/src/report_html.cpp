@@ -76,6 +76,8 @@ std::string run_intro(const BenchResult& b) {
     << escape_html(env.cpu_model) << " (" << env.cores << " cores), load "
     << cell(env.load_start[0], 2) << " (1 min) at the start, " << cell(env.load_end[0], 2)
     << " at the end.</p>\n";
+  for (const auto& [name, value] : env.variables)
+    h << "<p class=note>Run with " << escape_html(name) << "=" << escape_html(value) << ".</p>\n";
   for (const std::string& s : b.skipped)
     h << "<p class=note>Left out of the default list: " << escape_html(s) << ".</p>\n";
   if (b.gaze_fallback)

@@ -88,7 +88,8 @@ nlohmann::json environment_json(const RunEnvironment& e) {
           {"cpu_model", e.cpu_model},
           {"cpu_cores", e.cores},
           {"load_average_start", e.load_start},
-          {"load_average_end", e.load_end}};
+          {"load_average_end", e.load_end},
+          {"variables", e.variables}};
 }
 
 }  // namespace

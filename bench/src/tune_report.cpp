@@ -91,7 +91,8 @@ nlohmann::json tune_json(const TuneResult& r) {
             {"date_utc", r.environment.date_utc},
             {"renderer", r.environment.renderer},
             {"cpu_model", r.environment.cpu_model},
-            {"cpu_cores", r.environment.cores}}},
+            {"cpu_cores", r.environment.cores},
+            {"variables", r.environment.variables}}},
           {"renderer", r.renderer},
           {"settings", tune_settings(r.options)},
           {"shard", r.merged_shards > 0 ? nlohmann::json{{"merged", r.merged_shards}}
@@ -136,6 +137,7 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
   r.environment.renderer = env.value("renderer", "");
   r.environment.cpu_model = env.value("cpu_model", "");
   r.environment.cores = env.value("cpu_cores", 0u);
+  r.environment.variables = env.value("variables", std::map<std::string, std::string>{});
   r.renderer = j.value("renderer", "");
   r.warmup = j.value("warmup_frames", 0);
   const nlohmann::json native_jod = j.value("native_jod", nlohmann::json::object());
@@ -168,10 +170,7 @@ TuneResult merge_tune_shards(const std::vector<TuneResult>& shards,
   for (size_t i = 0; i < shards.size(); ++i) {
     const TuneResult& s = shards[i];
     if (s.merged_shards > 0) throw Error(names[i] + ": already a merged result");
-    if (s.environment.version != first.environment.version) {
-      throw Error(names[i] + ": foveate " + s.environment.version + ", but " + names[0] +
-                  " is from foveate " + first.environment.version);
-    }
+    check_same_build(s.environment, names[i], first.environment, names[0]);
     if (s.settings_key != first.settings_key) {
       throw Error(names[i] + ": other settings than " + names[0] +
                   " (scenes, techniques, bound, size, display, frames or reference differ): not "

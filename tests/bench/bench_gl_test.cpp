@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -432,6 +433,36 @@ TEST(Bench, ShardsMergedEqualOneRun) {
               (void)merge_shards({other, shards[0]}, {"a", "b"});
             }).find("other settings"),
             std::string::npos);
+  // A shard run under a variable that chooses other passes.
+  BenchResult forced = shards[1];
+  forced.environment.variables["FOVEATE_EDGES"] = "readback";
+  EXPECT_NE(error_of([&] {
+              (void)merge_shards({shards[0], forced}, {"a", "b"});
+            }).find("b: run with FOVEATE_EDGES=readback, but a with none set"),
+            std::string::npos);
+}
+
+// A run under FOVEATE_EDGES (or FOVEATE_EGL) says so in results.json, and
+// reads back with it.
+TEST(Bench, ResultsNameTheVariablesThatChoseWhatRan) {
+  BenchOptions o = tiny();
+  o.techniques = std::vector<std::string>{"native", "vrs"};
+  o.image_metrics = false;
+  const char* before = std::getenv("FOVEATE_EDGES");
+  const std::string kept = before ? before : "";
+  ::setenv("FOVEATE_EDGES", "indirect", 1);
+  const BenchResult r = run(o);
+  if (before)
+    ::setenv("FOVEATE_EDGES", kept.c_str(), 1);
+  else
+    ::unsetenv("FOVEATE_EDGES");
+  EXPECT_EQ(r.environment.variables.at("FOVEATE_EDGES"), "indirect");
+  const std::string out = fresh_dir("foveate-bench-variables");
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  EXPECT_EQ(j["environment"]["variables"]["FOVEATE_EDGES"], "indirect");
+  EXPECT_EQ(read_bench_results(j, out).environment.variables, r.environment.variables);
+  std::filesystem::remove_all(out);
 }
 
 // Runs that do not fit the memory limit together are judged in groups, one
