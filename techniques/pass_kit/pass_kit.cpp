@@ -21,6 +21,21 @@ std::string pass_name_of(const std::string& file) {
   return dot == std::string::npos ? stem : stem.substr(0, dot);
 }
 
+// A slot of `pool` no count holds any more (a frame's counts are dropped
+// once read), else a new one of what `make` gives: a pool grows to the
+// counts of one frame.
+template <class Make>
+std::shared_ptr<PixelCount::Slot> free_slot(std::vector<std::shared_ptr<PixelCount::Slot>>& pool,
+                                            const Make& make) {
+  for (const auto& s : pool) {
+    if (s.use_count() == 1) {
+      s->read = false;
+      return s;
+    }
+  }
+  return pool.emplace_back(std::make_shared<PixelCount::Slot>(make()));
+}
+
 // The tables a PassKit compiles from: the library's technique and scene GLSL,
 // then the technique's own.
 std::vector<std::span<const embedded::EmbeddedFile>> with_library(
@@ -193,20 +208,8 @@ PixelCount PassKit::shade(Scene& scene, const View& view, const std::string& map
                           const gpu::PassState& state, bool early,
                           const std::vector<PixelRect>* cover) {
   const gpu::Program& p = shading(scene, mapping, early, view.samples);
-  // A query no count holds any more (a frame's counts are dropped once
-  // read), else a new one: the pool grows to the passes of one frame.
-  std::shared_ptr<PixelCount::Slot> slot;
-  for (const auto& s : counts_) {
-    if (s.use_count() == 1) {
-      slot = s;
-      break;
-    }
-  }
-  if (!slot) {
-    slot = counts_.emplace_back(
-        std::make_shared<PixelCount::Slot>(gpu::Query::create(GL_SAMPLES_PASSED)));
-  }
-  slot->read = false;
+  std::shared_ptr<PixelCount::Slot> slot =
+      free_slot(counts_, [] { return gpu::Query::create(GL_SAMPLES_PASSED); });
   const gpu::ProfileScope timed("shade");
   glBeginQuery(GL_SAMPLES_PASSED, slot->query.id());
   scene_pass(scene, view, p, target, state, set, cover);
@@ -217,18 +220,8 @@ PixelCount PassKit::shade(Scene& scene, const View& view, const std::string& map
 }
 
 PixelCount PassKit::count_from(const gpu::Buffer& source, GLintptr offset) {
-  std::shared_ptr<PixelCount::Slot> slot;
-  for (const auto& s : buffer_counts_) {
-    if (s.use_count() == 1) {
-      slot = s;
-      break;
-    }
-  }
-  if (!slot) {
-    slot = buffer_counts_.emplace_back(
-        std::make_shared<PixelCount::Slot>(gpu::Buffer::create(sizeof(GLuint), nullptr)));
-  }
-  slot->read = false;
+  std::shared_ptr<PixelCount::Slot> slot =
+      free_slot(buffer_counts_, [] { return gpu::Buffer::create(sizeof(GLuint), nullptr); });
   glCopyNamedBufferSubData(source.id(), slot->buffer.id(), offset, 0, sizeof(GLuint));
   PixelCount count;
   count.terms_.push_back(std::move(slot));
