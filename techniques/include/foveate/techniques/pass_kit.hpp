@@ -150,9 +150,9 @@ class PassKit {
   /// the count is. With indirect_edges() the GPU sizes the packed pass and
   /// the store from the total it listed, and nothing waits for it; without,
   /// the total is read back first and the packed pass drawn over scissored
-  /// rectangles (whole 4x4 blocks on llvmpipe, where an indirect quad's
-  /// diagonal would shade the blocks it crosses twice). The two give the
-  /// same texels.
+  /// rectangles, about 1 ms a frame cheaper on llvmpipe, which runs the
+  /// passes as they are sent (docs/performance.md). The two give the same
+  /// texels.
   PixelCount supersample_edges(Scene& scene, const View& view, const std::string& mapping,
                                const gpu::RenderTarget& buffer, const gpu::Texture& scratch,
                                const std::vector<PixelRect>& cover, int first, int last,
