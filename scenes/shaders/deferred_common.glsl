@@ -1,4 +1,5 @@
 // Reading the mesh scenes' G-buffer at a screen position, and the camera ray.
+#include "octahedral.glsl"
 #ifdef FOVEATE_GBUFFER_SAMPLES
 // Multisampled G-buffer (View::samples > 1): the shading main picks the sample.
 uniform usampler2DMS u_g_surface;
@@ -33,12 +34,7 @@ vec3 g_position(uvec4 g, ivec2 t, ivec2 size) {
   vec2 px = u_g_rect.xy + (vec2(t) + 0.5) * u_g_rect.zw / vec2(size);
   return u_cam_pos + camera_ray(px) * uintBitsToFloat(g.x);
 }
-vec3 g_normal(uvec4 g) {
-  vec2 e = unpackSnorm2x16(g.z);
-  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  return normalize(n);
-}
+vec3 g_normal(uvec4 g) { return octahedral_decode(unpackSnorm2x16(g.z)); }
 
 struct Surface {
   bool hit;

@@ -23,13 +23,7 @@ uniform float u_gloss;
 uniform vec3 u_eye;  // world position of the eye
 layout(location = 0) out uvec4 o_surface;
 
-// A unit vector onto the octahedron unfolded into [-1, 1]^2.
-vec2 octahedral(vec3 n) {
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  vec2 e = n.xy;
-  if (n.z < 0.0) e = (1.0 - abs(n.yx)) * vec2(e.x >= 0.0 ? 1.0 : -1.0, e.y >= 0.0 ? 1.0 : -1.0);
-  return e;
-}
+#include "octahedral.glsl"
 void main() {
   vec3 c = u_base_color.rgb;
 #ifdef FOVEATE_ALBEDO_TEXTURE
@@ -46,6 +40,6 @@ void main() {
   if (dot(face, u_eye - v_world) < 0.0) face = -face;
   if (dot(n, face) < 0.0) n = -n;
   o_surface = uvec4(floatBitsToUint(distance(v_world, u_eye)),
-                    packUnorm4x8(vec4(c, u_material / 255.0)), packSnorm2x16(octahedral(n)),
+                    packUnorm4x8(vec4(c, u_material / 255.0)), packSnorm2x16(octahedral_encode(n)),
                     packHalf2x16(vec2(u_gloss, 1.0)));
 }
