@@ -20,9 +20,11 @@ using Params = std::map<std::string, double>;
 namespace {
 
 // Stage 3: a change that raises JOD by more than this is tried with the
-// others like it at up to kLowerMargins lower margins (coarser plans).
+// others like it at every lower margin (coarser plan). Not only the nearest
+// ones: what a change buys grows as the plan coarsens (vrs's `adapt` refines
+// more tiles at margin 1 than at 2), so the JOD it raised at the best point
+// does not tell how far down it can carry the plan.
 constexpr double kJodRaise = 0.02;
-constexpr std::ptrdiff_t kLowerMargins = 2;
 
 // The choice: settings within the bound whose speed is within kTuneSpeedTie
 // of the fastest one's tie with it (tune.hpp); among them the one that keeps
@@ -170,7 +172,7 @@ std::vector<Params> tune_combinations(
   for (const auto& [key, values] : axes) {
     if (key != kPlanMarginKey) continue;
     const auto idx = std::find(values.begin(), values.end(), margin->second) - values.begin();
-    for (std::ptrdiff_t j = idx - 1; j >= 0 && j >= idx - kLowerMargins; --j) {
+    for (std::ptrdiff_t j = idx - 1; j >= 0; --j) {
       Params p = better;
       p[kPlanMarginKey] = values[static_cast<size_t>(j)];
       out.push_back(p);

@@ -471,13 +471,14 @@ TEST(Tune, CombinesTheChangesThatPaidAndSpendsQualityOnCoarserPlans) {
       // Another margin: not a single change of the best point.
       point({{"margin", 1.5}, {"half_rate", 1.0}, {"transition", 0.1}}, 2.5, 9.6)};
   const std::vector<std::map<std::string, double>> c = tune_combinations(stage2, best, axes);
-  ASSERT_EQ(c.size(), 3u);
+  ASSERT_EQ(c.size(), 4u);
   // The fastest speed-gaining value of each parameter, together.
   EXPECT_EQ(c[0], (std::map<std::string, double>{
                       {"margin", 2.0}, {"half_rate", 1.0}, {"transition", 0.1}, {"layers", 3}}));
-  // The JOD-raising change at the two margins below 2.
+  // The JOD-raising change at every margin below 2, the nearest first.
   EXPECT_EQ(c[1], (std::map<std::string, double>{{"margin", 1.5}}));
   EXPECT_EQ(c[2], (std::map<std::string, double>{{"margin", 1.25}}));
+  EXPECT_EQ(c[3], (std::map<std::string, double>{{"margin", 1.0}}));
   // Nothing paid: nothing to combine. At the lowest margin there is no
   // coarser plan to spend quality on.
   EXPECT_TRUE(tune_combinations({}, best, axes).empty());
@@ -529,9 +530,10 @@ TEST(Tune, StageThreeCombinesOnThePointStageTwoChanged) {
       {"scale", {0.35, 0.5, 0.65}},
       {"border", {0.1, 0.2, 0.4}}};
   using P = std::map<std::string, double>;
-  EXPECT_EQ(
-      tune_combinations(stage2, *base, axes),
-      (std::vector<P>{{{"margin", 1.5}, {"scale", 0.65}}, {{"margin", 1.25}, {"scale", 0.65}}}));
+  EXPECT_EQ(tune_combinations(stage2, *base, axes),
+            (std::vector<P>{{{"margin", 1.5}, {"scale", 0.65}},
+                            {{"margin", 1.25}, {"scale", 0.65}},
+                            {{"margin", 1.0}, {"scale", 0.65}}}));
   // From the faster point nothing is a single change: nothing to try.
   EXPECT_TRUE(tune_combinations(stage2, *any, axes).empty());
   // No point of the stage asked for: none.

@@ -13,7 +13,7 @@
 //     at a time, and the margin one step either side;
 //  3. on that same point, the changes of stage 2 that kept the bound and
 //     gained speed, combined;
-//     and those that raised JOD, combined, at the two margins below the best
+//     and those that raised JOD, combined, at every margin below the best
 //     point's (quality one parameter buys can pay for a coarser plan);
 //  4. (several scenes) each scene's best settings on the other scenes;
 //  5. the settings the choice falls between (within the bound, within 15 %
@@ -127,9 +127,9 @@ const TunePoint* tune_best_point(const std::vector<TunePoint>& points, const std
 /// 2 started from (tune_best_point of stage 1) and its stage-2 points (one
 /// tuned parameter changed at a time from it): the changes that kept the
 /// bound and gained speed, together (when there are two or more), and the
-/// changes that raised JOD by more than 0.02, together at the two margins
-/// below that point's (quality one parameter
-/// buys can pay for a coarser plan). `axes`: each tuned key and its values,
+/// changes that raised JOD by more than 0.02, together at every margin below
+/// that point's, the nearest first (quality one parameter buys can pay for a
+/// coarser plan). `axes`: each tuned key and its values,
 /// the margin's ascending.
 std::vector<std::map<std::string, double>> tune_combinations(
     const std::vector<TunePoint>& stage2, const TunePoint& best,
