@@ -178,7 +178,8 @@ std::vector<std::uint8_t> ContentAdapt::coarsen(TileClasses& classes) {
   bool any = false;
   for (size_t t = 0; t < coarse_.size(); ++t) {
     std::uint8_t& c = classes.of_tile[t];
-    if (!coarse_[t] || hold_[t] > 0 || (c != 0 && c != kRefinedClass)) continue;
+    // coarse_ holds no tile that adapt holds refined (settle).
+    if (!coarse_[t] || (c != 0 && c != kRefinedClass)) continue;
     const std::uint8_t to = c == 0 ? kRefinedClass : std::uint8_t(kClasses - 1);
     --classes.count[c];
     c = to;
