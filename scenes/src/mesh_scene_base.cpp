@@ -174,8 +174,9 @@ void MeshSceneBase::prepass_begin(const View& view) {
 
 void MeshSceneBase::prepass_draw(const View& view, int lod) {
   // Depth test and writes, colour on; the stencil test is the caller's
-  // (lodmask draws under stencil masks). No face culling: files disagree on
-  // winding.
+  // (lodmask draws under stencil masks). Back faces are culled only for
+  // meshes that declare themselves closed (cull_back_faces): files disagree
+  // on winding.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

@@ -1,5 +1,6 @@
 // PassKit::supersample_edges: mark, list, shade packed, write back.
 #include <algorithm>
+#include <cstddef>
 #include <string>
 
 #include "foveate/core/error.hpp"
@@ -13,15 +14,15 @@ namespace {
 // Offsets into the storage buffer (pass_kit/edges_rows.glsl).
 constexpr GLintptr kDispatchOffset = 4, kDrawOffset = 16, kRowsOffset = 64;
 
-// The packed pass's 4x4 blocks of 16 entries each (shade_edges.frag), in
-// rows of `columns` blocks: the rectangles that hold `count` entries.
-std::vector<PixelRect> packed_cover(int count, int columns) {
-  std::vector<PixelRect> out;
-  const int blocks = (count + 15) / 16, full = blocks / columns, rest = blocks % columns;
-  if (full > 0) out.push_back({0, 0, 4 * columns, 4 * full});
-  if (rest > 0) out.push_back({0, 4 * full, 4 * rest, 4 * full + 4});
-  return out;
-}
+// The storage's head as edges_list.comp's step 1 writes it (std430).
+struct EdgeHead {
+  GLuint total;
+  GLuint dispatch[3];
+  GLuint draw[4];  // DrawArraysIndirectCommand: vertices, rectangles, first, base
+  GLint cover[2][4];
+};
+static_assert(sizeof(EdgeHead) == kRowsOffset && offsetof(EdgeHead, draw) == kDrawOffset &&
+              offsetof(EdgeHead, dispatch) == kDispatchOffset);
 
 // The cover's part in the buffer's first `rows` rows: only the rows in use
 // are marked (and so reshaded); beyond them a taller buffer holds rows of
@@ -144,11 +145,14 @@ PixelCount PassKit::supersample_edges(Scene& scene, const View& view, const std:
   EdgeScratch& e = edge_scratch(buffer.width(), buffer.height());
   list_edges(e, buffer, scratch, cover, first, last, contrast, wrap_rows, rows);
   const bool indirect = indirect_edges();
-  GLuint count = 0;
+  // Read back: the total, and the packed pass's rectangles (its 4x4 blocks
+  // of 16 entries, shade_edges.frag) as the GPU laid them out for the draw.
+  EdgeHead head{};
   if (!indirect) {
-    glGetNamedBufferSubData(e.rows.id(), 0, sizeof(GLuint), &count);
-    if (count == 0) return PixelCount(0.0);
+    glGetNamedBufferSubData(e.rows.id(), 0, sizeof(head), &head);
+    if (head.total == 0) return PixelCount(0.0);
   }
+  const GLuint count = head.total;
   // The shading and the store read the total from the storage's head, bound
   // at 0 for both (edges_rows.glsl).
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, e.rows.id());
@@ -175,7 +179,9 @@ PixelCount PassKit::supersample_edges(Scene& scene, const View& view, const std:
     glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(kDrawOffset));
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   } else {
-    const std::vector<PixelRect> packed = packed_cover(static_cast<int>(count), e.columns);
+    std::vector<PixelRect> packed;
+    for (GLuint i = 0; i < std::min<GLuint>(head.draw[1], 2); ++i)
+      packed.push_back({head.cover[i][0], head.cover[i][1], head.cover[i][2], head.cover[i][3]});
     scene_pass(scene, view, scene_program_with(scene, mapping, "pass_kit/shade_edges.frag"),
                e.shaded, {}, set_packed, &packed);
   }
