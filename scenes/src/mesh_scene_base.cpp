@@ -63,21 +63,39 @@ CameraPose MeshSceneBase::eye_pose() const {
 
 namespace {
 
-// The order to draw `items` in: nearest first, so that the depth test rejects
-// what later draws would cover before it is shaded (llvmpipe tests depth
-// before the fragment shader, a GPU in its early-Z hardware); a mesh whose
-// bounds hold the eye (terrain, a room) last, as it lies mostly behind the
-// rest. The order changes no visible fragment: the depth test keeps the
-// nearest either way (ties aside).
-std::vector<size_t> draw_order(const std::vector<DrawItem>& items, glm::vec3 eye) {
+// An item's bounding sphere in world space and the eye's distance to its
+// centre, computed once per draw: the order, the culling, the LOD and the
+// back faces all ask for them.
+struct WorldBounds {
+  glm::vec3 centre;
+  float scale;     // the model matrix's (uniform) scale
+  float radius;    // the mesh's bounding radius times it
+  float distance;  // from the eye to the centre
+};
+
+WorldBounds world_bounds(const DrawItem& item, glm::vec3 eye) {
+  const GpuMesh& m = *item.mesh;
+  WorldBounds b;
+  b.centre = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
+  b.scale = glm::length(glm::vec3(item.model[0]));
+  b.radius = m.radius * b.scale;
+  b.distance = glm::length(b.centre - eye);
+  return b;
+}
+
+// The order to draw items with `bounds` in: nearest first, so that the depth
+// test rejects what later draws would cover before it is shaded (llvmpipe
+// tests depth before the fragment shader, a GPU in its early-Z hardware); a
+// mesh whose bounds hold the eye (terrain, a room) last, as it lies mostly
+// behind the rest. The order changes no visible fragment: the depth test
+// keeps the nearest either way (ties aside).
+std::vector<size_t> draw_order(const std::vector<WorldBounds>& bounds) {
   std::vector<std::pair<float, size_t>> keyed;
-  keyed.reserve(items.size());
-  for (size_t i = 0; i < items.size(); ++i) {
-    const GpuMesh& m = *items[i].mesh;
-    const glm::vec3 c = glm::vec3(items[i].model * glm::vec4(m.centre, 1.0f));
-    const float r = m.radius * glm::length(glm::vec3(items[i].model[0]));
-    const float d = glm::length(c - eye);
-    keyed.emplace_back(d <= r ? std::numeric_limits<float>::max() : d - r, i);
+  keyed.reserve(bounds.size());
+  for (size_t i = 0; i < bounds.size(); ++i) {
+    const WorldBounds& b = bounds[i];
+    keyed.emplace_back(
+        b.distance <= b.radius ? std::numeric_limits<float>::max() : b.distance - b.radius, i);
   }
   std::stable_sort(keyed.begin(), keyed.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -209,21 +227,23 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     skip_frustum = view_projection(s);
   }
   std::vector<DrawItem> drawn = items(view, lod);
-  for (size_t index : draw_order(drawn, eye)) {
+  std::vector<WorldBounds> bounds;
+  bounds.reserve(drawn.size());
+  for (const DrawItem& item : drawn) bounds.push_back(world_bounds(item, eye));
+  for (size_t index : draw_order(bounds)) {
     DrawItem& item = drawn[index];
     const GpuMesh& m = *item.mesh;
-    const glm::vec3 c = glm::vec3(item.model * glm::vec4(m.centre, 1.0f));
-    const float scale = glm::length(glm::vec3(item.model[0]));
-    if (!visible(cull, c, m.radius * scale)) continue;
-    if (skips && visible(skip_frustum, c, -m.radius * scale)) continue;
+    const WorldBounds& b = bounds[index];
+    if (!visible(cull, b.centre, b.radius)) continue;
+    if (skips && visible(skip_frustum, b.centre, -b.radius)) continue;
     int l = item.lod;
     if (item.automatic) {
       // The coarsest LOD whose geometric error projects below one target
       // pixel; the requested level only ever makes it coarser.
-      const double dist = std::max(1e-3, double(glm::length(c - eye)) - m.radius * scale);
+      const double dist = std::max(1e-3, double(b.distance) - b.radius);
       int a = 0;
       for (int k = static_cast<int>(m.lods.size()) - 1; k > 0; --k) {
-        if (m.lods[static_cast<size_t>(k)].error * scale * focal / dist <= view.pixel_scale) {
+        if (m.lods[static_cast<size_t>(k)].error * b.scale * focal / dist <= view.pixel_scale) {
           a = k;
           break;
         }
@@ -235,8 +255,7 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     const glm::mat3 nm = glm::transpose(glm::inverse(glm::mat3(item.model)));
     // Seen from within its bounds (as near its surface as the near plane's
     // corners, within twice its distance of the eye), a mesh shows both sides.
-    cull_back_faces(m, item.model,
-                    glm::length(c - eye) > m.radius * scale + 2.0f * float(near_plane()));
+    cull_back_faces(m, item.model, b.distance > b.radius + 2.0f * float(near_plane()));
     const gpu::Program& p = item.material.texture ? prepass_textured_ : prepass_program_;
     if (in_use != &p) {
       p.use();
