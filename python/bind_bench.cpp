@@ -450,8 +450,8 @@ None = every one but native) the fastest setting of its tuned parameters whose
 FovVideoVDP JOD stays within `bound` of native's on every scene (settings within
 5 % of its speed tie: the one with the most JOD, then the fewest pixels), judged against
 `reference` over `frames` frames of a moving camera. Returns tune.json as a
-dict: "points" (every candidate: scene, technique, params, stage, speedup, jod,
-below_native, pixel_ratio, within_bound), "chosen" (technique -> parameters),
+dict: "points" (every candidate: scene, technique, params, stage, speedup,
+speedup_ci95, jod, below_native, pixel_ratio, within_bound), "chosen" (technique -> parameters),
 "verdict", "native_jod" per scene, "warmup_frames" (every candidate is judged on
 the frames after them), and "notes". out: a folder for tune.json, tune.md,
 params.json (for --params-file) and report.html, refused if it holds an earlier

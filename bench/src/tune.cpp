@@ -300,6 +300,8 @@ class Search {
       p.params = runs[static_cast<size_t>(t.run_index - 1)].params;
       p.stage = stage;
       p.speedup = t.speedup;
+      p.speedup_lo = t.speedup_lo;
+      p.speedup_hi = t.speedup_hi;
       p.jod = t.metrics && t.metrics->fvvdp ? t.metrics->fvvdp->jod : std::nan("");
       p.below_native = native - p.jod;
       p.pixel_ratio = t.pixel_ratio;

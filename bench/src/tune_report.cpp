@@ -75,6 +75,7 @@ nlohmann::json tune_json(const TuneResult& r) {
                       {"params", p.params},
                       {"stage", p.stage},
                       {"speedup", number(p.speedup)},
+                      {"speedup_ci95", {number(p.speedup_lo), number(p.speedup_hi)}},
                       {"jod", number(p.jod)},
                       {"below_native", number(p.below_native)},
                       {"pixel_ratio", number(p.pixel_ratio)},
@@ -150,6 +151,14 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
     t.params = p.value("params", std::map<std::string, double>{});
     t.stage = p.value("stage", 1);
     t.speedup = number_at(p, "speedup");
+    // Absent from the files of foveate before 2026-11-28: unknown.
+    const nlohmann::json ci = p.value("speedup_ci95", nlohmann::json::array());
+    const auto bound = [&](size_t i) {
+      return ci.is_array() && ci.size() == 2 && ci[i].is_number() ? ci[i].get<double>()
+                                                                  : std::nan("");
+    };
+    t.speedup_lo = bound(0);
+    t.speedup_hi = bound(1);
     t.jod = number_at(p, "jod");
     t.below_native = number_at(p, "below_native");
     t.pixel_ratio = number_at(p, "pixel_ratio");
@@ -230,12 +239,17 @@ std::string tune_markdown(const TuneResult& r) {
     s << "\n"
       << scene << " (native " << format_fixed(r.native_jod.at(scene), 3)
       << " JOD): each technique's front (no other setting of it both faster and better)\n\n"
-      << "| technique | setting | speedup | JOD | below native | pixel ratio |\n"
+      << "| technique | setting | speedup (95 % CI) | JOD | below native | pixel ratio |\n"
       << "|---|---|---:|---:|---:|---:|\n";
     for (const std::string& t : techniques_of(r)) {
       for (const TunePoint& p : tune_front(r, scene, t)) {
+        // A tune.json of before the intervals were recorded has none.
+        const bool ci = std::isfinite(p.speedup_lo) && std::isfinite(p.speedup_hi);
         s << "| " << t << " | " << params_text(p.params) << " | " << format_fixed(p.speedup, 2)
-          << "x | " << format_fixed(p.jod, 3) << " | " << format_fixed(p.below_native, 3)
+          << "x"
+          << (ci ? " (" + format_fixed(p.speedup_lo, 2) + "-" + format_fixed(p.speedup_hi, 2) + ")"
+                 : std::string())
+          << " | " << format_fixed(p.jod, 3) << " | " << format_fixed(p.below_native, 3)
           << (p.within_bound ? "" : " (over)") << " | " << format_fixed(p.pixel_ratio, 3) << " |\n";
       }
     }

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -62,6 +63,11 @@ std::string fresh_dir(const std::string& name) {
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::vector<std::string> measured(const BenchResult& r) {
@@ -582,7 +588,24 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
   EXPECT_EQ(params.per_technique.at("layered"), r.chosen.at("layered"));
   const nlohmann::json j = read_json(out + "/tune.json");
   EXPECT_EQ(j["schema"], kTuneSchema);
-  EXPECT_EQ(read_tune_results(j, out).points.size(), r.points.size());
+  const TuneResult back = read_tune_results(j, out);
+  ASSERT_EQ(back.points.size(), r.points.size());
+  // Each point carries its benchmark's 95 % interval of the speedup, around
+  // the speedup, through tune.json and into tune.md's fronts.
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    const TunePoint& p = r.points[i];
+    EXPECT_GT(p.speedup_lo, 0.0) << p.technique;
+    EXPECT_LE(p.speedup_lo, p.speedup) << p.technique;
+    EXPECT_GE(p.speedup_hi, p.speedup) << p.technique;
+    EXPECT_DOUBLE_EQ(back.points[i].speedup_lo, p.speedup_lo);
+    EXPECT_DOUBLE_EQ(back.points[i].speedup_hi, p.speedup_hi);
+  }
+  const std::string md = read_text(out + "/tune.md");
+  EXPECT_NE(md.find("| speedup (95 % CI) |"), std::string::npos);
+  const TunePoint& front = tune_front(r, "cheap", "inset").front();
+  char interval[64];
+  std::snprintf(interval, sizeof interval, "x (%.2f-%.2f) |", front.speedup_lo, front.speedup_hi);
+  EXPECT_NE(md.find(interval), std::string::npos) << md;
   // A benchmark with the chosen parameters.
   // The file holds inset's values too: a benchmark takes those of the
   // techniques it runs (a value for one not run is an error, not ignored).

@@ -130,6 +130,8 @@ def test_tune_chooses_within_the_bound_and_writes_its_files(fv, tmp_path):
     assert len(margins) == 6  # every tuned margin, the rest at their defaults
     for p in points:
         assert p["within_bound"] == (p["below_native"] <= 0.5)
+        lo, hi = p["speedup_ci95"]
+        assert 0 < lo <= p["speedup"] <= hi
     # On the cheap scene every margin is within the bound; the choice is one of them.
     within = [p for p in points if p["within_bound"]]
     assert within and any(p["params"] == t["chosen"]["inset"] for p in within)

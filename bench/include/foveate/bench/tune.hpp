@@ -73,6 +73,10 @@ struct TunePoint {
   std::map<std::string, double> params;  ///< the tuned keys' values (others at defaults)
   int stage = 1;
   double speedup = 0;
+  /// The speedup's 95 % interval over the benchmark's frames
+  /// (results.json's speedup_ci95): settings whose intervals overlap were
+  /// not told apart by that run.
+  double speedup_lo = 0, speedup_hi = 0;
   double jod = 0;
   double below_native = 0;  ///< native's JOD minus this one's
   double pixel_ratio = 1;
