@@ -102,7 +102,8 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
 void add_common(CLI::App* sub, BenchArgs& a) {
   add_session_options(sub, a.session, false, kFixedDate, true);
   sub->add_option("--techniques", a.techniques,
-                  "Comma-separated techniques (native is always measured as the reference); by "
+                  "Comma-separated techniques (native, the reference, is always measured and "
+                  "reported first); by "
                   "default every technique the scene can run (lodmask needs meshes)")
       ->capture_default_str()
       ->each([&a](const std::string&) { a.techniques_given = true; });

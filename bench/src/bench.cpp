@@ -42,6 +42,7 @@ void validate(const BenchOptions& o) {
                    {"each runs once; compare settings of one technique with {sweep}", {"sweep"}});
   }
   o.params.validate(o.techniques.value_or(technique_names()));
+  if (o.runs.empty()) o.sweep.check_values(o.techniques.value_or(technique_names()));
   const auto check_runs = [](const std::vector<RunSpec>& runs, const std::string& field) {
     for (size_t i = 0; i < runs.size(); ++i) {
       const RunSpec& r = runs[i];
@@ -293,7 +294,6 @@ void BenchRun::summarize() {
   for (size_t i = 0; i < runs_.size(); ++i) {
     Run& r = runs_[i];
     TechniqueResult& res = r.result;
-    if (i == 0 && !native_listed_) continue;
     res.median_ms = quantile(res.frame_ms, 0.5);
     res.p90_ms = quantile(res.frame_ms, 0.9);
     res.mean_ms = mean(res.frame_ms);

@@ -72,6 +72,8 @@ class BenchRun {
   Session session_;
   std::unique_ptr<SupersampledScene> reference_;
   std::vector<Run> runs_;
+  /// Whether the video shows native's tile (listed, or a shard's baseline):
+  /// the results always hold native, the reference of every JOD below native.
   bool native_listed_ = false;
   /// The settle frames of runs made but not measured here (other shards'
   /// runs, BenchOptions::settle_runs).

@@ -66,12 +66,32 @@ Sweep Sweep::of(const std::string& key, std::vector<double> values, const std::s
     throw OptionError(field,
                       "no technique has a parameter '" + s.key + "' (see 'foveate techniques')");
   }
-  // Each value against each declaration it will be given to, before anything runs.
-  for (const TechniqueInfo& t : techniques()) {
-    if (!s.applies_to(t.name)) continue;
-    for (double x : s.values) for_field(field, [&] { check_parameter(t, s.param, x); });
+  // One technique's values against its declaration at once; a key that
+  // every declaring technique shares is checked against the techniques a
+  // benchmark or tune runs (check_values), which may take values that
+  // another one refuses.
+  if (!s.technique.empty()) {
+    const TechniqueInfo info = technique_info(s.technique);
+    for (double x : s.values) for_field(field, [&] { check_parameter(info, s.param, x); });
   }
   return s;
+}
+
+void Sweep::check_values(const std::vector<std::string>& names, const std::string& field,
+                         const std::string& list_field) const {
+  if (empty() || param.empty()) return;
+  bool any = false;
+  for (const std::string& name : names) {
+    if (name == "native" || !applies_to(name)) continue;
+    any = true;
+    const TechniqueInfo info = technique_info(name);
+    for (double x : values) for_field(field, [&] { check_parameter(info, param, x); });
+  }
+  if (!any) {
+    throw OptionError(field, FieldText{"{" + field + "} " + key + ": none of {" + list_field +
+                                           "} has that parameter (see 'foveate techniques')",
+                                       {field, list_field}});
+  }
 }
 
 bool Sweep::applies_to(const std::string& name) const {

@@ -369,15 +369,9 @@ void validate(const TuneOptions& o) {
                         "slope: the metrics' acuity, not a technique's parameter (tune plans "
                         "every technique for it; search the planning margin instead)");
     }
-    const Sweep checked = Sweep::of(key, list, "values");
-    bool tuned = false;
-    for (const std::string& t : tuned_techniques(o)) tuned = tuned || checked.applies_to(t);
-    if (!tuned) {
-      throw OptionError("values", FieldText{"{values} " + key +
-                                                ": no technique searched has that parameter "
-                                                "(see {techniques})",
-                                            {"values", "techniques"}});
-    }
+    // Against the techniques searched: a value another technique refuses
+    // is no error here, and a key none of them has searches nothing.
+    Sweep::of(key, list, "values").check_values(tuned_techniques(o), "values");
   }
   if (o.shard.count < 1 || o.shard.index < 0 || o.shard.index >= o.shard.count) {
     throw OptionError("shard", "expected job K of N with 1 <= K <= N");

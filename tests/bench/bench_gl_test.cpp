@@ -14,6 +14,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <tuple>
@@ -131,6 +132,34 @@ TEST(Bench, AnOutsideTechniqueIsListedMeasuredByDefaultAndReported) {
   std::ifstream html(out + "/report.html");
   const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
   EXPECT_NE(page.find(example::kNativeCopy), std::string::npos);
+  std::filesystem::remove_all(out);
+}
+
+// Native is the reference of every speedup and JOD below native: its row
+// comes first whether the list names it or not, and the CSV's distance
+// below native is filled.
+TEST(Bench, NativeIsReportedFirstWhenNotListed) {
+  BenchOptions o = tiny();
+  o.techniques = std::vector<std::string>{"inset"};
+  o.reference = 2;
+  const BenchResult r = run(o);
+  EXPECT_EQ(measured(r), (std::vector<std::string>{"native", "inset"}));
+  ASSERT_TRUE(r.results[0].metrics && r.results[0].metrics->fvvdp);
+  const std::string out = fresh_dir("foveate-bench-unlisted-native");
+  write_bench_report(r, out);
+  std::ifstream csv(out + "/results.csv");
+  std::string header, native, inset;
+  std::getline(csv, header);
+  std::getline(csv, native);
+  std::getline(csv, inset);
+  EXPECT_EQ(native.rfind("native,", 0), 0u) << native;
+  // technique,label,sweep_value,jod,jod_below_native,...: a number, not empty.
+  std::vector<std::string> cells;
+  std::stringstream row(inset);
+  for (std::string c; std::getline(row, c, ',');) cells.push_back(c);
+  ASSERT_GT(cells.size(), 4u);
+  EXPECT_EQ(cells[0], "inset");
+  EXPECT_FALSE(cells[4].empty()) << inset;
   std::filesystem::remove_all(out);
 }
 

@@ -123,8 +123,12 @@ TEST(Sweep, AppliesOnlyWhereTheKeyIsDeclared) {
             "sweep: need FROM <= TO and STEP > 0");
   EXPECT_NE(error_of([] { Sweep::range("nope", 1, 2, 1); }).find("no technique has"),
             std::string::npos);
-  // Every value is checked against each declaration before anything runs.
-  EXPECT_EQ(error_of([] { Sweep::range("margin", 0.5, 1, 0.5); }),
+  // Every value is checked against each declaration it will be given to
+  // before anything runs: one technique's at once, a shared key's against
+  // the techniques run (Options.ASweepIsCheckedAgainstTheTechniquesRun).
+  BenchOptions o;
+  o.sweep = Sweep::range("margin", 0.5, 1, 0.5);
+  EXPECT_EQ(error_of([&] { validate(o); }),
             "sweep: layered parameter margin=0.5: out of range [1, 4]");
   EXPECT_EQ(error_of([] { Sweep::range("layered.layers", 2, 3, 0.5); }),
             "sweep: layered parameter layers=2.5: must be a whole number");
@@ -335,8 +339,9 @@ TEST(Options, TuneValuesAreCheckedAgainstTheTechniquesSearched) {
   t.values = {{"vrs.fixed", {0, 1}}};
   EXPECT_EQ(field_of([&] { validate(t); }), "no error");
   t.values = {{"layered.layers", {2, 3}}};
-  EXPECT_EQ(error_of([&] { validate(t); }),
-            "values layered.layers: no technique searched has that parameter (see techniques)");
+  EXPECT_EQ(
+      error_of([&] { validate(t); }),
+      "values layered.layers: none of techniques has that parameter (see 'foveate techniques')");
   t.values = {{"vrs.adapt", {0.4, 0.4}}};
   EXPECT_EQ(error_of([&] { validate(t); }),
             "values vrs.adapt: 0.4 is listed twice (each value runs once)");
@@ -350,6 +355,34 @@ TEST(Options, TuneValuesAreCheckedAgainstTheTechniquesSearched) {
   EXPECT_EQ(error_of([&] { validate(t); }),
             "values: slope: the metrics' acuity, not a technique's parameter (tune plans every "
             "technique for it; search the planning margin instead)");
+  // A margin every searched technique refuses is blamed on one of them.
+  t.techniques = std::vector<std::string>{"inset"};
+  t.values = {{"margin", {9}}};
+  EXPECT_EQ(error_of([&] { validate(t); }),
+            "values: inset parameter margin=9: out of range [1, 4]");
+}
+
+// A sweep must repeat a run that the benchmark makes, and its values are
+// judged by the techniques it runs: a key no listed technique has would
+// measure one run labelled with a value never given to it.
+TEST(Options, ASweepIsCheckedAgainstTheTechniquesRun) {
+  BenchOptions o;
+  o.techniques = std::vector<std::string>{"logpolar"};
+  o.sweep = Sweep::of("layered.layers", {1, 2, 3});
+  EXPECT_EQ(error_of([&] { validate(o); }),
+            "sweep layered.layers: none of techniques has that parameter (see 'foveate "
+            "techniques')");
+  // inset takes a scale of 0.5, checkerboard (which also declares `scale`,
+  // as a whole number) is not run: no error.
+  o.techniques = std::vector<std::string>{"native", "inset"};
+  o.sweep = Sweep::of("scale", {0.5, 0.6});
+  EXPECT_EQ(field_of([&] { validate(o); }), "no error");
+  o.techniques = std::vector<std::string>{"checkerboard"};
+  EXPECT_EQ(error_of([&] { validate(o); }),
+            "sweep: checkerboard parameter scale=0.5: must be a whole number");
+  // The slope changes every technique.
+  o.sweep = Sweep::range("slope", 0.02, 0.03, 0.01);
+  EXPECT_EQ(field_of([&] { validate(o); }), "no error");
 }
 
 // Runs that would hold more memory together than the limit are judged in

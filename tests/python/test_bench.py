@@ -44,18 +44,19 @@ def test_a_tiny_bench_returns_native_and_a_technique(fv, tmp_path):
 
 def test_parameters_sweeps_and_video(fv, tmp_path):
     r = tiny(fv, techniques=["layered"], params={"layered.layers": 3}, metrics=False)
-    assert [x["technique"] for x in r["results"]] == ["layered"]  # native measured, not listed
-    assert r["results"][0]["parameters"]["layers"] == 3
+    # native first, listed or not: the reference of every speedup and JOD below native
+    assert [x["technique"] for x in r["results"]] == ["native", "layered"]
+    assert r["results"][1]["parameters"]["layers"] == 3
     s = tiny(fv, techniques=["layered"], sweep=("slope", 0.02, 0.03, 0.01), metrics=False, frames=1)
-    assert [x["sweep_value"] for x in s["results"]] == pytest.approx([0.02, 0.03])
+    assert [x["sweep_value"] for x in s["results"][1:]] == pytest.approx([0.02, 0.03])
     listed = tiny(fv, techniques=["layered"], sweep=("margin", [2, 1]), metrics=False, frames=1)
-    assert [x["sweep_value"] for x in listed["results"]] == [1.0, 2.0]
+    assert [x["sweep_value"] for x in listed["results"][1:]] == [1.0, 2.0]
     m = tiny(fv, techniques=["checkerboard"], size=(640, 360), margin=2.0, metrics=False, frames=1)
     plain = tiny(fv, techniques=["checkerboard"], size=(640, 360), metrics=False, frames=1)
     assert m["margin"] == 2.0 and plain["margin"] is None  # None: each technique's own
-    assert m["results"][0]["parameters"]["margin"] == 2.0
-    assert plain["results"][0]["parameters"]["margin"] == 1.0
-    assert m["results"][0]["parameters"]["r1"] > plain["results"][0]["parameters"]["r1"]
+    assert m["results"][1]["parameters"]["margin"] == 2.0
+    assert plain["results"][1]["parameters"]["margin"] == 1.0
+    assert m["results"][1]["parameters"]["r1"] > plain["results"][1]["parameters"]["r1"]
     video = tmp_path / "b.mp4"
     v = tiny(fv, techniques=["layered"], metrics=False, video=str(video), side_by_side=True)
     assert video.stat().st_size > 0 and "2 frame(s), 128x36" in v["video"]
@@ -147,7 +148,7 @@ def test_tune_chooses_within_the_bound_and_writes_its_files(fv, tmp_path):
         fv.tune(scenes=["cheap"], bound=0)
     with pytest.raises(fv.Error, match="scenes: give at least one scene"):
         fv.tune(scenes=[])
-    with pytest.raises(fv.Error, match="values vrs.adapt: no technique searched has that parameter"):
+    with pytest.raises(fv.Error, match="values vrs.adapt: none of techniques has that parameter"):
         fv.tune(scenes=["cheap"], techniques=["inset"], values={"vrs.adapt": [0.3]})
     v = fv.tune(scenes=["cheap"], techniques=["inset"], size=(96, 54), frames=2, warmup=1,
                 reference="ssaa:2", bound=0.5, values={"margin": [2, 1], "inset.scale": [0.45]})
