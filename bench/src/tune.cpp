@@ -122,6 +122,10 @@ class Search {
     }
   }
 
+  /// The techniques a benchmark left out, with the scene and the reason
+  /// ("lodmask on cheap (…)").
+  [[nodiscard]] const std::set<std::string>& skipped() const { return skipped_; }
+
  private:
   std::vector<Candidate> stage1() const {
     std::vector<Candidate> c;
@@ -266,6 +270,11 @@ class Search {
     b.skip_unrunnable = true;
     b.shard = {};
     const BenchResult r = run_bench(b, callbacks_.bench);
+    for (const std::string& s : r.skipped) {
+      const auto space = s.find(' ');
+      skipped_.insert(s.substr(0, space) + " on " + scene_ +
+                      (space == std::string::npos ? "" : s.substr(space)));
+    }
     if (out_.renderer.empty()) {
       out_.renderer = r.renderer;
       out_.environment = r.environment;
@@ -332,6 +341,7 @@ class Search {
   // Each scene's reference frames, rendered once for every stage.
   std::map<std::string, std::shared_ptr<ReferenceFrames>> caches_;
   std::vector<std::string> techniques_;
+  std::set<std::string> skipped_;
 };
 
 }  // namespace
@@ -389,6 +399,16 @@ TuneResult run_tune(const TuneOptions& asked, const TuneCallbacks& callbacks) {
   out.settings_key = tune_settings_key(options);
   Search search(options, callbacks, out);
   for (const std::string& scene : options.scenes) search.scene(scene);
+  // Nothing searched can run on the scenes given (a shard may hold no run).
+  if (out.points.empty() && options.shard.count == 1) {
+    std::string why;
+    for (const std::string& s : search.skipped()) why += (why.empty() ? "" : "; ") + s;
+    throw OptionError(
+        "techniques",
+        FieldText{"{techniques}: none of the techniques searched can run on {scenes}" +
+                      (why.empty() ? std::string() : ": " + why),
+                  {"techniques", "scenes"}});
+  }
   if (!options.grid && options.shard.count == 1) {
     if (options.scenes.size() > 1) search.cross_check(options.scenes);
     search.retime(options.scenes);

@@ -557,6 +557,25 @@ TuneOptions small_tune(std::vector<std::string> techniques) {
 
 }  // namespace
 
+// A search in which nothing can run (lodmask needs meshes) is an error that
+// names the technique, the scene and why, not an empty choice.
+TEST(Tune, NothingThatCanRunIsAnError) {
+  const TuneOptions o = small_tune({"lodmask"});
+  std::string field = "no error", e;
+  try {
+    (void)run_tune(o);
+  } catch (const OptionError& x) {
+    field = x.field();
+    e = x.what();
+  }
+  EXPECT_EQ(field, "techniques");
+  EXPECT_EQ(e.rfind("techniques: none of the techniques searched can run on scenes: lodmask on "
+                    "cheap (",
+                    0),
+            0u)
+      << e;
+}
+
 TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
   TuneOptions o = small_tune({"layered", "inset"});
   o.bound_jod = 0.5;
