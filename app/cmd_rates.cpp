@@ -270,13 +270,23 @@ void print_rates(const RatesArgs& a, const RatesPlan& p) {
 
 void run_rates(const RatesArgs& a) {
   const RatesPlan p = make_rates_plan(a);
-  if (std::filesystem::path(a.out).extension() == ".bin") {
-    write_file_atomic(
-        a.out, std::string_view(reinterpret_cast<const char*>(p.bytes.data()), p.bytes.size()));
-  } else {
-    write_file_atomic(a.out, rates_json(p).dump(1) + "\n");
-  }
+  // Both files or neither: the preview first, removed again (where this run
+  // made it) if the rates cannot be written, so that a failed run leaves no
+  // rates file that a later step would take for this one's.
+  const bool had_preview = !a.preview.empty() && std::filesystem::exists(a.preview);
   if (!a.preview.empty()) write_png(a.preview, preview(p.m, p.gaze));
+  try {
+    if (std::filesystem::path(a.out).extension() == ".bin") {
+      write_file_atomic(
+          a.out, std::string_view(reinterpret_cast<const char*>(p.bytes.data()), p.bytes.size()));
+    } else {
+      write_file_atomic(a.out, rates_json(p).dump(1) + "\n");
+    }
+  } catch (...) {
+    std::error_code ignored;
+    if (!a.preview.empty() && !had_preview) std::filesystem::remove(a.preview, ignored);
+    throw;
+  }
   print_rates(a, p);
 }
 

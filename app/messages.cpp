@@ -6,6 +6,7 @@
 #include <map>
 
 #include "cli_util.hpp"
+#include "output_dir.hpp"
 
 namespace foveate::app {
 
@@ -79,6 +80,7 @@ bench::SessionCallbacks session_callbacks() {
                  "raise --frame-timeout for a slow scene or size (0 = no limit)\n",
                  with_flags(error).c_str());
     std::fflush(stderr);
+    end_output_dirs_now();
     ::_exit(1);
   };
   return c;

@@ -5,10 +5,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <vector>
 
 #include "cli_util.hpp"
@@ -29,7 +31,22 @@ std::string holder_of(int fd) {
   return holder;
 }
 
+// The folders locked by this process, for end_output_dirs_now.
+std::mutex& live_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<OutputDirLock*>& live() {
+  static std::vector<OutputDirLock*> v;
+  return v;
+}
+
 }  // namespace
+
+void end_output_dirs_now() {
+  const std::lock_guard<std::mutex> hold(live_mutex());
+  for (OutputDirLock* d : live()) d->end();
+}
 
 void add_overwrite_flag(CLI::App* sub, bool& overwrite) {
   sub->add_flag("--overwrite", overwrite,
@@ -55,7 +72,10 @@ OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag, bo
   path_ = (std::filesystem::path(dir) / ".foveate.lock").string();
   lock(name);
   const std::vector<std::string> earlier = run_outputs_in(dir);
-  if (earlier.empty()) return;
+  if (earlier.empty()) {
+    enlist();
+    return;
+  }
   const std::string which =
       std::filesystem::path(earlier.front()).filename().string() +
       (earlier.size() > 1 ? " and " + std::to_string(earlier.size() - 1) + " more" : "");
@@ -78,6 +98,12 @@ OutputDirLock::OutputDirLock(const std::string& dir, const std::string& flag, bo
     std::fprintf(stderr, "foveate: note: %s: removed the earlier run's output (%s), %s\n",
                  name.c_str(), which.c_str(), overwrite_flag.c_str());
   }
+  enlist();
+}
+
+void OutputDirLock::enlist() {
+  const std::lock_guard<std::mutex> hold(live_mutex());
+  live().push_back(this);
 }
 
 void OutputDirLock::lock(const std::string& name) {
@@ -120,7 +146,7 @@ void OutputDirLock::release() {
   fd_ = -1;
 }
 
-OutputDirLock::~OutputDirLock() {
+void OutputDirLock::end() {
   release();
   // A folder this run made and left empty (it failed before writing): gone
   // again, innermost first; remove() leaves a folder that holds anything.
@@ -128,6 +154,16 @@ OutputDirLock::~OutputDirLock() {
     std::error_code ec;
     if (!std::filesystem::is_empty(p, ec) || ec || !std::filesystem::remove(p, ec)) break;
   }
+  created_.clear();
+}
+
+OutputDirLock::~OutputDirLock() {
+  {
+    const std::lock_guard<std::mutex> hold(live_mutex());
+    auto& v = live();
+    v.erase(std::remove(v.begin(), v.end(), this), v.end());
+  }
+  end();
 }
 
 }  // namespace foveate::app

@@ -32,13 +32,22 @@ class OutputDirLock {
   ~OutputDirLock();
   OutputDirLock(const OutputDirLock&) = delete;
   OutputDirLock& operator=(const OutputDirLock&) = delete;
+  /// What destruction does (idempotent): the lock file removed and the
+  /// lock released, the folders it created removed if still empty.
+  void end();
 
  private:
+  void enlist();
   void lock(const std::string& name);
   void release();
   std::string path_;
   std::vector<std::filesystem::path> created_;  // innermost first
   int fd_ = -1;
 };
+
+/// Ends every folder this process holds (OutputDirLock::end) now: for a
+/// process that must exit without unwinding (a frame stuck in the GL), so
+/// that it leaves no lock file and no empty folder behind.
+void end_output_dirs_now();
 
 }  // namespace foveate::app

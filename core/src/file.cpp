@@ -107,6 +107,8 @@ std::uint64_t limit_from_env_mib(const char* name, std::uint64_t fallback_mib) {
 void write_file_atomic(const std::string& path, std::string_view contents) {
   namespace fs = std::filesystem;
   fs::path target(path);
+  std::error_code probe;
+  if (fs::is_directory(target, probe)) throw Error(path + ": is a directory; give a file name");
   fs::path tmp = target;
   tmp += ".tmp-" + std::to_string(::getpid());
   {
@@ -123,8 +125,9 @@ void write_file_atomic(const std::string& path, std::string_view contents) {
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {
+    const std::string why = ec.message();  // before the clean-up resets it
     fs::remove(tmp, ec);
-    throw Error(path + ": cannot move the finished file into place: " + ec.message());
+    throw Error(path + ": cannot move the finished file into place: " + why);
   }
 }
 

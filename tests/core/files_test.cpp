@@ -49,6 +49,22 @@ TEST(Files, NotRegularFilesAreRefusedBeforeOpening) {
   std::filesystem::remove_all(dir);
 }
 
+// A file written whole or not at all: into a directory's name it is refused
+// before anything is written, and a file already there is replaced whole.
+TEST(Files, AtomicWritesRefuseADirectoryAndReplaceAFile) {
+  const auto dir = temp_dir();
+  EXPECT_EQ(error_of([&] { write_file_atomic(dir.string(), "x"); }),
+            dir.string() + ": is a directory; give a file name");
+  const std::string path = (dir / "a.txt").string();
+  write_file_atomic(path, "first, longer");
+  write_file_atomic(path, "second");
+  EXPECT_EQ(read_file(path, "text"), "second");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            1);  // no temporary left beside it
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Files, SizeLimitNamesTheLimitAndHowToRaiseIt) {
   const auto dir = temp_dir();
   const std::string path = (dir / "big.csv").string();
