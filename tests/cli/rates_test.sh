@@ -90,8 +90,8 @@ check "non-numeric --tile is a usage error" '[[ $rc -ne 0 && $rc -ne 3 && "$err"
 err=$("$FOVEATE" rates --out "$tmp/half.bin" --preview "$tmp/no/such/p.png" 2>&1); rc=$?
 check "a preview that cannot be written: exit 1, naming it, and no rates file" \
   '[[ $rc -eq 1 && "$err" == *"no/such/p.png"* && ! -e "$tmp/half.bin" ]]'
-mkdir -p "$tmp/d.bin"
-err=$("$FOVEATE" rates --out "$tmp/d.bin" 2>&1); rc=$?
+mkdir -p "$tmp/folder.bin"
+err=$("$FOVEATE" rates --out "$tmp/folder.bin" 2>&1); rc=$?
 check "--out a folder: exit 1, saying so" '[[ $rc -eq 1 && "$err" == *"is a directory; give a file name"* ]]'
 "$FOVEATE" rates --help | grep -q -- "--latency-ms"
 check "help lists options" '[[ $? -eq 0 ]]'
