@@ -198,9 +198,10 @@ void run_record(const RecordArgs& a) {
   if (a.from != "pupil" && a.from.rfind("pupil:", 0) != 0) {
     throw Error("--from: expected pupil or pupil:HOST:PORT, got '" + a.from + "'");
   }
-  if (!(a.seconds > 0 && a.seconds <= 24 * 3600)) throw Error("--seconds: expected 0..86400");
+  if (!(a.seconds > 0 && a.seconds <= 24 * 3600))
+    throw Error("--seconds: expected more than 0 and at most 86400 (a day)");
   if (!(a.connect_timeout > 0 && a.connect_timeout <= 600))
-    throw Error("--connect-timeout: expected 0..600 s");
+    throw Error("--connect-timeout: expected more than 0 and at most 600 s");
   PupilOptions po = parse_pupil_address(a.from == "pupil" ? "" : a.from.substr(6));
   po.queue_limit = 1 << 20;
   PupilSource src(po);
@@ -270,7 +271,8 @@ struct SynthArgs {
 };
 
 void run_synth(const SynthArgs& a) {
-  if (!(a.seconds > 0 && a.seconds <= 24 * 3600)) throw Error("--seconds: expected 0..86400");
+  if (!(a.seconds > 0 && a.seconds <= 24 * 3600))
+    throw Error("--seconds: expected more than 0 and at most 86400 (a day)");
   if (!(a.rate >= 1 && a.rate <= 10000)) throw Error("--rate: expected 1..10000 Hz");
   if (!(a.noise >= 0 && a.noise <= 10)) throw Error("--noise: expected 0..10 degrees");
   if (a.seed < 0)

@@ -1,5 +1,6 @@
 // The foveate command: plan, render, bench and demo foveated rendering.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -49,6 +50,20 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("foveate ") + FOVEATE_VERSION);
   app.require_subcommand(1);
   foveate::app::register_all_commands(app);
+  // A first word that names no command (CLI11 would say only that a command
+  // is required): named, with the closest command if one is close.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      commands.push_back(sub->get_name());
+    if (std::find(commands.begin(), commands.end(), word) == commands.end()) {
+      const std::string best = foveate::closest_name(word, commands);
+      std::fprintf(stderr, "foveate: error: '%s' is not a command%s (foveate --help lists them)\n",
+                   word.c_str(), best.empty() ? "" : ("; did you mean '" + best + "'?").c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

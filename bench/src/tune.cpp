@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <set>
 
 #include "foveate/bench/field_text.hpp"
@@ -397,7 +398,16 @@ TuneResult run_tune(const TuneOptions& asked, const TuneCallbacks& callbacks) {
   TuneResult out;
   out.options = options;
   out.settings_key = tune_settings_key(options);
-  Search search(options, callbacks, out);
+  // Every benchmark of the search sets up its scene's session again: what
+  // one notes (a size too small to save anything) is said once.
+  TuneCallbacks once = callbacks;
+  if (callbacks.bench.session.notice) {
+    auto said = std::make_shared<std::set<std::string>>();
+    once.bench.session.notice = [said, notice = callbacks.bench.session.notice](const Notice& n) {
+      if (said->insert(n.text.render()).second) notice(n);
+    };
+  }
+  Search search(options, once, out);
   for (const std::string& scene : options.scenes) search.scene(scene);
   // Nothing searched can run on the scenes given (a shard may hold no run).
   if (out.points.empty() && options.shard.count == 1) {

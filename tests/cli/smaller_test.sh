@@ -56,6 +56,8 @@ run bench --techniques native,logpolr --scene cheap --size 64x36 --out "$tmp/x"
 check "a misspelled technique in bench's list" '[[ $rc -eq 1 && "$err" == *"did you mean '"'"'logpolar'"'"'"* ]] || { echo "  rc $rc: $err"; false; }'
 run rendr --scene cheap
 check "a misspelled command" '[[ $rc -eq 2 && "$err" == *"did you mean '"'"'render'"'"'"* ]] || { echo "  rc $rc: $err"; false; }'
+err=$("$FOVEATE" bogus 2>&1); rc=$?
+check "an unknown command is named" '[[ $rc -eq 2 && "$err" == *"'"'"'bogus'"'"' is not a command"* ]] || { echo "  rc $rc: $err"; false; }'
 
 # --- Progress only for work longer than a second.
 # Checked only where the work did take under a second (a loaded machine may

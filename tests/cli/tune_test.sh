@@ -9,6 +9,13 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 F="$FOVEATE"
 small=(--size 96x54 --frames 2 --warmup 1 --reference ssaa:2)
 
+# Every benchmark of the search sets its session up again; a note is said once.
+"$F" tune --scenes cheap --techniques inset --bound 0.5 "${small[@]}" --out "$tmp/n" > /dev/null 2> "$tmp/n.err"
+check "tune's notes are said once" '[[ $(grep -c "note: at 96x54" "$tmp/n.err") -eq 1 ]]'
+err=$("$F" tune --scenes cheap --techniques lodmask "${small[@]}" --out "$tmp/none" 2>&1); rc=$?
+check "tune with nothing that can run: exit 1, naming why, no output" \
+  '[[ $rc -eq 1 && "$err" == *"none of the techniques searched can run on --scenes: lodmask on cheap"* && ! -e "$tmp/none" ]]'
+
 "$F" tune --scenes cheap --techniques layered,inset --bound 0.5 "${small[@]}" --out "$tmp/t" --quiet > "$tmp/t.md"
 check "tune writes tune.json, tune.md, params.json and report.html" '[[ -s "$tmp/t/tune.json" && -s "$tmp/t/tune.md" && -s "$tmp/t/params.json" && -s "$tmp/t/report.html" ]]'
 check "tune's chart is an SVG file beside its report, linked from it" '[[ -s "$tmp/t/chart-tune-cheap.svg" ]] && grep -q "download=\"chart-tune-cheap.svg\"" "$tmp/t/report.html"'
