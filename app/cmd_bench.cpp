@@ -220,12 +220,14 @@ void register_demo(CLI::App& app) {
                                      "at acuity preset A; prints the table and the report's path");
   add_common(sub, *a);
   sub->callback([a] {
+    // The options checked before the header that describes them.
+    const bench::BenchOptions o = to_options(*a, "foveate demo");
+    bench::validate(o);
     if (!quiet() && !a->json)
       std::cout << "foveate demo: " << a->session.scene << " scene, techniques " << a->techniques
                 << ", acuity preset "
                 << (a->session.acuity_preset.empty() ? "A" : a->session.acuity_preset)
                 << ", display " << a->session.display << " at " << a->session.size << std::endl;
-    const bench::BenchOptions o = to_options(*a, "foveate demo");
     print_summary(run_and_write(*a, o, "demo"), *a);
   });
 }

@@ -77,6 +77,9 @@ RenderSetup check(const RenderArgs& a) {
   s.params = session_params(a.session, run);
   if (a.out.empty() && a.video.empty() && !a.no_write)
     throw CLI::RequiredError("--out, --video or --no-write");
+  if (a.no_write && !a.out.empty())
+    throw Error("--no-write: writes no frames, so --out " + a.out +
+                " would stay empty; give --out or --no-write, not both");
   if (s.reference > 1 && a.out.empty())
     throw Error("--reference: the reference frames are PNG files; give --out DIR too");
   if (s.session.stereo && a.side_by_side) {

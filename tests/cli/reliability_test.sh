@@ -21,6 +21,8 @@ expect "missing required option: exit 2" 2 "--scene is required" render --out "$
 expect "value of the wrong type: exit 2" 2 "--frames" render --scene cheap --out "$tmp/u" --frames abc
 expect "20-digit --frames: exit 2" 2 "--frames" render --scene cheap --out "$tmp/u" --frames 99999999999999999999
 expect "no subcommand: exit 2" 2 "A subcommand is required"
+out=$("$FOVEATE" demo --size 0x0 --out "$tmp/d0" 2>/dev/null); rc=$?
+if [[ $rc -eq 1 && -z "$out" ]]; then echo "ok: demo checks its options before its header"; else echo "FAIL: demo printed '$out' (exit $rc)"; fail=1; fi
 expect "--help: exit 0" 0 "Usage" render --help
 expect "--version: exit 0" 0 "foveate" --version
 

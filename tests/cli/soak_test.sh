@@ -17,6 +17,9 @@ check "a framebuffer and textures are live" "grep '^stats frame=4' $tmp/err | gr
 "$FOVEATE" render --scene cheap --size 64x36 --frames 2 >"$tmp/out" 2>"$tmp/err"
 rc=$?
 check "render without --out, --video or --no-write is a usage error" "[ $rc -eq 2 ] && grep -q -- '--out, --video or --no-write' $tmp/err"
+"$FOVEATE" render --scene cheap --size 64x36 --no-write --out "$tmp/nw" >"$tmp/out" 2>"$tmp/err"
+rc=$?
+check "--no-write with --out is refused, nothing created" "[ $rc -eq 1 ] && grep -q -- '--out or --no-write, not both' $tmp/err && [ ! -e $tmp/nw ]"
 "$FOVEATE" render --scene cheap --size 64x36 --frames 2 --no-write --stats -1 >"$tmp/out" 2>"$tmp/err"
 rc=$?
 check "--stats -1 is refused" "[ $rc -eq 1 ] && grep -q -- '--stats: expected a frame interval >= 0, got -1' $tmp/err"
