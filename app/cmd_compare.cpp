@@ -122,11 +122,13 @@ class FrameGaze {
       source_ = gaze::make_gaze_source(a.gaze, ctx);
     } else if (!a.gaze.empty()) {
       fixed_ = parse_point(a.gaze, w, h, "--gaze");
-      if (!(fixed_.x >= 0 && fixed_.x < w && fixed_.y >= 0 && fixed_.y < h)) {
+      // A position on the images, their edges included, as render and bench
+      // take it (normalized 1.0 is the right or bottom edge).
+      if (!(fixed_.x >= 0 && fixed_.x <= w && fixed_.y >= 0 && fixed_.y <= h)) {
         throw Error("--gaze: '" + a.gaze + "' is (" + format_number(fixed_.x, 1) + ", " +
                     format_number(fixed_.y, 1) + ") px, outside the " + std::to_string(w) + "x" +
-                    std::to_string(h) + " images (pixels 0.." + std::to_string(w - 1) + ", 0.." +
-                    std::to_string(h - 1) + ", or normalized 0.0..1.0)");
+                    std::to_string(h) + " images (0.." + std::to_string(w) + ", 0.." +
+                    std::to_string(h) + " px, or normalized 0.0..1.0)");
       }
     }
   }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -271,6 +272,9 @@ struct SynthArgs {
 };
 
 void run_synth(const SynthArgs& a) {
+  const std::string ext = std::filesystem::path(a.out).extension().string();
+  if (ext != ".csv" && ext != ".json")
+    throw Error("--out: the file must end in .csv or .json, got '" + a.out + "'");
   if (!(a.seconds > 0 && a.seconds <= 24 * 3600))
     throw Error("--seconds: expected more than 0 and at most 86400 (a day)");
   if (!(a.rate >= 1 && a.rate <= 10000)) throw Error("--rate: expected 1..10000 Hz");

@@ -85,6 +85,11 @@ assert 5 < j[\"jod\"] < 9.99 and all(b[\"jod\"] < 10 for b in j[\"fvvdp\"][\"ban
 " "$json"'
 
 right=$("$F" compare "$tmp/ref.png" "$tmp/edge.png" --gaze 300,90 --json --no-flip)
+# A gaze on the images' edge is a position on them, as render and bench take it.
+edge=$("$F" compare "$tmp/ref.png" "$tmp/edge.png" --gaze 1.0,0.5 --json --no-flip 2>&1); rc=$?
+check "a gaze on the right edge (normalized 1.0) is taken" '[[ $rc -eq 0 && "$edge" == *"jod"* ]]'
+err=$("$F" compare "$tmp/ref.png" "$tmp/edge.png" --gaze 100000,5 2>&1); rc=$?
+check "a gaze beyond it is refused, naming the range" '[[ $rc -eq 1 && "$err" == *"outside the"*"normalized 0.0..1.0"* ]]'
 left=$("$F" compare "$tmp/ref.png" "$tmp/edge.png" --gaze 0.05,0.5 --json --no-flip)
 check "gaze moves the change between bands; FLIP skipped" 'python3 -c "
 import json,sys; r=json.loads(sys.argv[1]); l=json.loads(sys.argv[2])

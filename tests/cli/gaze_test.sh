@@ -103,7 +103,10 @@ check "truncated JSON" '[[ $rc -eq 1 && "$err" == *trunc.json* ]]'
 err=$("$FOVEATE" gaze stats "$tmp/missing.csv" 2>&1); rc=$?
 check "missing file" '[[ $rc -eq 1 && "$err" == *missing.csv* ]]'
 
-err=$("$FOVEATE" gaze synth --out "$tmp" 2>&1); rc=$?
+err=$("$FOVEATE" gaze synth --out "$tmp/trace.txt" 2>&1); rc=$?
+check "synth --out of another kind is refused" '[[ $rc -eq 1 && "$err" == *"must end in .csv or .json"* && ! -e "$tmp/trace.txt" ]]'
+mkdir -p "$tmp/d.csv"
+err=$("$FOVEATE" gaze synth --out "$tmp/d.csv" 2>&1); rc=$?
 check "synth --out a folder says so" '[[ $rc -eq 1 && "$err" == *"is a directory; give a file name"* ]]'
 for args in "synth --out $tmp/x.csv --seconds 0" "synth --out $tmp/x.csv --rate 0" "synth --out $tmp/x.csv --seed -1" \
             "stats $tmp/a.csv --time-unit h" "stats $tmp/a.csv --units mm" "stats $tmp/a.csv --velocity 0" \
