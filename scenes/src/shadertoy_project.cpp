@@ -187,6 +187,7 @@ std::unique_ptr<Scene> make_shadertoy_project(const std::string& path, const Sce
     reader.read_pass(passes[k], path + ": passes[" + std::to_string(k) + "]");
   }
   reader.finish(path);
+  require_camera_read(p, o.camera_path);
   return make_shadertoy_scene(std::move(p));
 }
 

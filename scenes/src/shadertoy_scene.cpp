@@ -309,6 +309,22 @@ void load_channels(const std::string& shader_path, const SceneOptions& o, Shader
 
 }  // namespace
 
+void require_camera_read(const ShadertoyProject& project, const std::string& camera_path) {
+  if (camera_path.empty()) return;
+  const auto reads = [](const UserPass& u) {
+    return u.text.find("foveate_cam_") != std::string::npos ||
+           u.text.find("foveate_ray") != std::string::npos;
+  };
+  bool read = reads(project.image.code) || (project.common && reads(*project.common));
+  for (const auto& [index, pass] : project.buffers) read = read || reads(pass.code);
+  if (!read) {
+    throw Error(camera_path + ": a camera path for scene '" + project.scene_name +
+                "', whose shader reads no camera (foveate_cam_pos, foveate_cam_target or "
+                "foveate_cam_fov): its frames would not follow the path; leave the camera path "
+                "out, or read the camera in the shader (docs/shadertoy.md)");
+  }
+}
+
 std::unique_ptr<Scene> make_shadertoy_scene(ShadertoyProject project) {
   warn_unbound(project);
   auto scene = std::make_unique<ShadertoyScene>(std::move(project));
@@ -339,6 +355,7 @@ std::unique_ptr<Scene> make_builtin_shader_scene(const std::string& name, const 
     p.camera = o.camera_path.empty() ? b.camera() : CameraPath::load(o.camera_path);
     p.date = o.date;
     load_channels("", o, p);
+    require_camera_read(p, o.camera_path);
     return make_shadertoy_scene(std::move(p));
   }
   throw Error("unknown built-in scene '" + name + "'");
@@ -356,6 +373,7 @@ std::unique_ptr<Scene> make_shadertoy_file(const std::string& path, const SceneO
                                    : CameraPath::load(o.camera_path);
   p.date = o.date;
   load_channels(path, o, p);
+  require_camera_read(p, o.camera_path);
   return make_shadertoy_scene(std::move(p));
 }
 

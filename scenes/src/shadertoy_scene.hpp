@@ -44,5 +44,10 @@ struct ShadertoyProject {
 /// nothing bound to it. Needs a current GL context.
 std::unique_ptr<Scene> make_shadertoy_scene(ShadertoyProject project);
 
+/// Refuses a camera path (`camera_path`, empty: none given) for a project
+/// none of whose passes reads the camera (foveate_cam_pos,
+/// foveate_cam_target, foveate_cam_fov or foveate_ray): its frames would be
+/// the same with or without it, and a run would say it followed the path.
+void require_camera_read(const ShadertoyProject& project, const std::string& camera_path);
 
 }  // namespace foveate::detail

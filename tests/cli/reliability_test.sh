@@ -127,6 +127,9 @@ expect "--param msaa beyond the GL implementation" 1 "supports G-buffer MSAA of 
 
 # ---- a camera looking straight down renders the scene (not an empty frame)
 printf '{"loop": false, "keyframes": [{"t": 0, "position": [0, 6, 0], "target": [0, 0, 0]}]}' > "$tmp/down.json"
+# ---- a camera path for a shader that reads no camera would change nothing: refused
+expect "a camera path for a shader without a camera" 1 "down.json: a camera path for scene 'slow.glsl', whose shader reads no camera" \
+  render --scene "$data/slow.glsl" --size 32x32 --camera-path "$tmp/down.json" --out "$tmp/nocam"
 for scene in cheap guenter; do
   "$FOVEATE" render --scene "$scene" --size 64x36 --camera-path "$tmp/down.json" --out "$tmp/down-$scene" > /dev/null 2>&1
   "$FOVEATE" render --scene "$scene" --size 64x36 --out "$tmp/default-$scene" > /dev/null 2>&1
