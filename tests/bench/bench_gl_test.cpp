@@ -650,7 +650,7 @@ TEST(Tune, ChoosesTheFastestSettingWithinTheBound) {
   }
   const std::string md = read_text(out + "/tune.md");
   EXPECT_NE(md.find("| speedup (95 % CI) |"), std::string::npos);
-  const TunePoint& front = tune_front(r, "cheap", "inset").front();
+  const TunePoint front = tune_front(r, "cheap", "inset").front();
   char interval[64];
   std::snprintf(interval, sizeof interval, "x (%.2f-%.2f) |", front.speedup_lo, front.speedup_hi);
   EXPECT_NE(md.find(interval), std::string::npos) << md;
