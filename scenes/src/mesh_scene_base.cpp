@@ -226,16 +226,20 @@ void MeshSceneBase::prepass_draw(const View& view, int lod) {
     s.y1 = view.skip_y1;
     skip_frustum = view_projection(s);
   }
-  std::vector<DrawItem> drawn = items(view, lod);
+  // The items the view shows (culled before they are ordered), nearest first.
+  std::vector<DrawItem> drawn;
   std::vector<WorldBounds> bounds;
-  bounds.reserve(drawn.size());
-  for (const DrawItem& item : drawn) bounds.push_back(world_bounds(item, eye));
+  for (DrawItem& item : items(view, lod)) {
+    const WorldBounds b = world_bounds(item, eye);
+    if (!visible(cull, b.centre, b.radius)) continue;
+    if (skips && visible(skip_frustum, b.centre, -b.radius)) continue;
+    drawn.push_back(std::move(item));
+    bounds.push_back(b);
+  }
   for (size_t index : draw_order(bounds)) {
     DrawItem& item = drawn[index];
     const GpuMesh& m = *item.mesh;
     const WorldBounds& b = bounds[index];
-    if (!visible(cull, b.centre, b.radius)) continue;
-    if (skips && visible(skip_frustum, b.centre, -b.radius)) continue;
     int l = item.lod;
     if (item.automatic) {
       // The coarsest LOD whose geometric error projects below one target

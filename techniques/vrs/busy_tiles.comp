@@ -8,8 +8,9 @@
 // Smooth (u_smooth above 0): its first texel shaded, and at every texel of
 // the tile shaded with both neighbours along an axis shaded, no colour
 // channel leaves the mean of those two neighbours by more than u_smooth of
-// the texel's luminance (at least kDark): bilinear interpolation at twice the spacing would have made the
-// texels the coarser rate drops within that share. A tile already shaded a
+// the texel's luminance (at least kDark): bilinear interpolation at twice
+// the spacing would have made the texels the coarser rate drops within that
+// share. A tile already shaded a
 // step coarser than the model asks (bit 6 of its class byte) is judged
 // against 4 u_smooth: on content of constant curvature the second difference
 // at twice the spacing is four times that at the spacing, so a tile
