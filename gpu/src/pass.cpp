@@ -1,5 +1,7 @@
 #include "foveate/gpu/pass.hpp"
 
+#include <algorithm>
+
 #include "foveate/gpu/shader.hpp"
 
 namespace foveate::gpu {
@@ -74,6 +76,20 @@ void RenderTarget::clear(float r, float g, float b, float a) const {
   const float rgba[4] = {r, g, b, a};
   glClearNamedFramebufferfv(framebuffer(), GL_COLOR, 0, rgba);
   if (has_depth_stencil()) glClearNamedFramebufferfi(framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+}
+
+void RenderTarget::clear(float r, float g, float b, float a,
+                         const std::array<int, 4>& region) const {
+  const int x0 = std::clamp(region[0], 0, width_), y0 = std::clamp(region[1], 0, height_);
+  const int x1 = std::clamp(region[2], x0, width_), y1 = std::clamp(region[3], y0, height_);
+  if (x1 == x0 || y1 == y0) return;
+  open_write_masks();
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0, y0, x1 - x0, y1 - y0);
+  const float rgba[4] = {r, g, b, a};
+  glClearNamedFramebufferfv(framebuffer(), GL_COLOR, 0, rgba);
+  if (has_depth_stencil()) glClearNamedFramebufferfi(framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void open_write_masks() {

@@ -100,15 +100,29 @@ void PassKit::list_edges(const EdgeScratch& e, const gpu::RenderTarget& buffer,
                          int first, int last, double contrast, bool wrap_rows, int rows) {
   const int w = buffer.width(), h = buffer.height();
   const gpu::ProfileScope timed("edges");
-  glCopyImageSubData(buffer.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, scratch.id(), GL_TEXTURE_2D, 0,
-                     0, 0, 0, w, h, 1);
+  const int used = rows > 0 ? std::min(rows, h) : h;
+  const std::vector<PixelRect> marked = in_rows(cover, used);
+  // The copy holds what the marks compare and what the shading of a marked
+  // texel reads (u_centre): the texels covered and their neighbours, all
+  // rows where rows wrap. A buffer only partly covered (vrs's 1x1 class:
+  // the fovea of a native-sized target) is not copied whole.
+  PixelRect box{w, used, 0, 0};
+  for (const PixelRect& q : marked)
+    box = {std::min(box[0], q[0] - 1), std::min(box[1], q[1] - 1), std::max(box[2], q[2] + 1),
+           std::max(box[3], q[3] + 1)};
+  if (wrap_rows) box[1] = 0, box[3] = used;
+  box = {std::max(box[0], std::max(first, 0)), std::max(box[1], 0),
+         std::min(box[2], std::min(last, w)), std::min(box[3], used)};
+  if (box[2] > box[0] && box[3] > box[1]) {
+    glCopyImageSubData(buffer.color().id(), GL_TEXTURE_2D, 0, box[0], box[1], 0, scratch.id(),
+                       GL_TEXTURE_2D, 0, box[0], box[1], 0, box[2] - box[0], box[3] - box[1], 1);
+  }
   const GLuint zero = 0;
   glClearTexImage(e.marks.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glBindImageTexture(0, e.marks.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   gpu::PassState mark;
   mark.color_off = true;
-  const int used = rows > 0 ? std::min(rows, h) : h;
-  rect_pass(over_rects("pass_kit/edges.frag"), in_rows(cover, used), buffer, mark,
+  rect_pass(over_rects("pass_kit/edges.frag"), marked, buffer, mark,
             [&](const gpu::Program& p, gpu::Samplers& samplers) {
               samplers.bind(p, "u_buffer", scratch);
               p.set("u_edge", float(contrast));

@@ -159,8 +159,15 @@ EmulatedPath::Shaded EmulatedPath::shade_class(PassKit& kit, Scene& scene, const
   t.color().set_wrap(GL_CLAMP_TO_EDGE);
   // The reconstruction reads no texel that this frame's mask leaves
   // unshaded, but the edge marks compare neighbours: those left unshaded
-  // read as alpha 0 (not shaded), never as an earlier frame's.
-  t.clear(0, 0, 0, 0);
+  // read as alpha 0 (not shaded), never as an earlier frame's. Nothing
+  // reads beyond the texels' box and one texel around it (the edges'
+  // neighbours), so only that is cleared: the 1x1 class's target is
+  // native's size, and clearing it whole cost more than its fovea's shading.
+  PixelRect clear_box{tw, th, 0, 0};
+  for (const PixelRect& q : texels)
+    clear_box = {std::min(clear_box[0], q[0] - 1), std::min(clear_box[1], q[1] - 1),
+                 std::max(clear_box[2], q[2] + 1), std::max(clear_box[3], q[3] + 1)};
+  t.clear(0, 0, 0, 0, clear_box);
   const gpu::Program& mask_program = kit.over_rects("vrs/mask.frag");
   const gpu::PassState mark = gpu::PassState::stencil_mark();
   kit.rect_pass(mask_program, texels, t, mark);

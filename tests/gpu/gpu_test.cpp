@@ -211,6 +211,23 @@ TEST_F(Gpu, RenderTargetsOwnTheirViewportAndClearThroughMasks) {
   gpu::apply(closed);
   a.clear(1, 0, 0, 1);
   EXPECT_EQ(gpu::read_texture(a.color()).at(7, 3)[0], 255);
+  // A region's clear reaches its pixels alone, clamped to the target, and
+  // leaves the scissor test as it found it (off: clears honour it). Regions
+  // are in GL's pixels, origin bottom-left; the image read back is top-down.
+  a.clear(0, 1, 0, 1, {5, 1, 20, 3});
+  a.clear(0, 0, 1, 1, {-4, -4, 1, 1});
+  a.clear(1, 1, 1, 1, {6, 2, 6, 4});  // empty: nothing
+  const Image cleared = gpu::read_texture(a.color());
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      const bool green = x >= 5 && y >= 1 && y < 3, blue = x < 1 && y == 3;
+      const auto px = cleared.at(x, y);
+      EXPECT_EQ(px[0], green || blue ? 0 : 255) << x << "," << y;
+      EXPECT_EQ(px[1], green ? 255 : 0) << x << "," << y;
+      EXPECT_EQ(px[2], blue ? 255 : 0) << x << "," << y;
+    }
+  }
+  EXPECT_FALSE(glIsEnabled(GL_SCISSOR_TEST));
   // A wrapped framebuffer is bound with its own size.
   gpu::RenderTarget w = gpu::RenderTarget::wrap(b.framebuffer(), 3, 5);
   w.bind();

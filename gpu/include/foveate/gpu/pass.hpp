@@ -38,6 +38,10 @@ class RenderTarget {
   /// Clears colour to `rgba`, and depth to 1 and stencil to 0 where the
   /// target has them. Write masks are opened first (GL clears honour them).
   void clear(float r, float g, float b, float a) const;
+  /// The same within pixels [x0, x1) x [y0, y1) alone (clamped to the
+  /// target): a clear costs per pixel, and a pass that writes and reads a
+  /// known region of a large target need not pay for the rest.
+  void clear(float r, float g, float b, float a, const std::array<int, 4>& region) const;
   [[nodiscard]] GLuint framebuffer() const { return owned_ ? fbo_.id() : wrapped_; }
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }
