@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -69,18 +70,57 @@ bool is_image_file(const fs::path& p) {
   return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tga";
 }
 
-// The frames of REFERENCE and TEST: one file each, or the image files of two
+// A frame's sequence: its file name without the trailing frame number and
+// extension ("frame-0007.png" -> "frame-").
+std::string sequence_name(const fs::path& p) {
+  std::string stem = p.stem().string();
+  while (!stem.empty() && std::isdigit(static_cast<unsigned char>(stem.back()))) stem.pop_back();
+  return stem;
+}
+
+// The image files of a folder sorted by name, all of one sequence: a folder
+// that `render --reference` wrote holds frame-NNNN and reference-NNNN, and
+// interleaving them would judge a sequence nobody rendered. There the
+// frames are taken (and a note says which files are left out); any other
+// mix is refused.
+std::vector<std::string> folder_frames(const std::string& path) {
+  std::map<std::string, std::vector<std::string>> by_sequence;
+  for (const auto& e : fs::directory_iterator(path)) {
+    if (e.is_regular_file() && is_image_file(e.path()))
+      by_sequence[sequence_name(e.path())].push_back(e.path().string());
+  }
+  if (by_sequence.empty())
+    throw Error(path + ": a folder without image files (PNG, JPEG, BMP, TGA)");
+  std::string chosen = by_sequence.begin()->first;
+  if (by_sequence.size() > 1) {
+    std::string names;
+    for (const auto& [name, files] : by_sequence)
+      names += (names.empty() ? "" : ", ") + name + "* (" + std::to_string(files.size()) + ")";
+    if (!by_sequence.count("frame-")) {
+      throw Error(path + ": holds image files of " + std::to_string(by_sequence.size()) +
+                  " sequences (" + names + "); give a folder of one sequence");
+    }
+    chosen = "frame-";
+    std::string left_out;
+    for (const auto& [name, files] : by_sequence) {
+      if (name != chosen)
+        left_out +=
+            (left_out.empty() ? "" : ", ") + name + "* (" + std::to_string(files.size()) + ")";
+    }
+    if (!quiet()) {
+      std::cerr << "foveate: note: " << path << ": comparing its frame-* images ("
+                << by_sequence[chosen].size() << "), leaving out " << left_out << "\n";
+    }
+  }
+  std::vector<std::string> files = by_sequence[chosen];
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The frames of REFERENCE and TEST: one file each, or the frames of two
 // folders sorted by name, as many in each.
 std::pair<std::vector<std::string>, std::vector<std::string>> frame_lists(const CompareArgs& a) {
-  const auto list = [](const std::string& path) {
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(path)) {
-      if (e.is_regular_file() && is_image_file(e.path())) files.push_back(e.path().string());
-    }
-    std::sort(files.begin(), files.end());
-    if (files.empty()) throw Error(path + ": a folder without image files (PNG, JPEG, BMP, TGA)");
-    return files;
-  };
+  const auto list = [](const std::string& path) { return folder_frames(path); };
   std::error_code ec;
   const bool ref_dir = fs::is_directory(a.reference, ec), test_dir = fs::is_directory(a.test, ec);
   if (ref_dir != test_dir) {
@@ -253,6 +293,24 @@ void run_compare(const CompareArgs& a) {
   check_args(a);
   const auto [refs, tests] = frame_lists(a);
   const bool sequence = refs.size() > 1 || fs::is_directory(a.reference);
+  // The diagnostics are an image pair's: asked of a sequence, they would
+  // silently not appear.
+  if (sequence) {
+    std::string image_only;
+    const auto given = [&](bool on, const char* flag) {
+      if (on) image_only += std::string(image_only.empty() ? "" : ", ") + flag;
+    };
+    given(!a.error_heatmap.empty(), "--error-heatmap");
+    given(!a.acuity_heatmap.empty(), "--acuity-heatmap");
+    given(!a.jnd_heatmap.empty(), "--jnd-heatmap");
+    given(a.no_flip, "--no-flip");
+    given(a.threshold != CompareArgs{}.threshold, "--threshold");
+    if (!image_only.empty()) {
+      throw Error(image_only + ": for an image pair; " + a.reference + " and " + a.test +
+                  " are folders of frames, judged by FovVideoVDP alone (--heatmap: its worst "
+                  "frame's heat map)");
+    }
+  }
   Image ref = read_image(refs[0]), test = read_image(tests[0]);
   check_same_size(ref, test, refs[0], tests[0]);
   // The display's field of view at the images' resolution.

@@ -147,6 +147,20 @@ b=open(sys.argv[1],\"rb\").read(24); assert struct.unpack(\">II\", b[16:24])==(1
 " "$tmp/seqh.png"'
 err=$("$F" compare "$tmp/seq_ref" "$tmp/seq_short" 2>&1); rc=$?
 check "folders of different lengths: exit 1, both counts named" '[[ $rc -eq 1 && "$err" == *"seq_ref 6"* && "$err" == *"seq_short 5"* ]]'
+# A folder `render --reference` wrote holds frame-NNNN and reference-NNNN:
+# its frames are judged, never the two interleaved; another mix is refused.
+mkdir -p "$tmp/seq_mixed" "$tmp/seq_two"
+for f in "$tmp"/seq_noise/frame-*.png; do cp "$f" "$tmp/seq_mixed/"; cp "$tmp/seq_ref/$(basename "$f")" "$tmp/seq_mixed/reference-${f##*-}"; done
+mixed=$("$F" compare "$tmp/seq_ref" "$tmp/seq_mixed" --json 2>"$tmp/mixed.err")
+check "a folder with frames and references: its 6 frames judged, as the frames alone, and a note" 'python3 -c "
+import json,sys; m,a=(json.loads(x) for x in sys.argv[1:3])
+assert m[\"fvvdp\"][\"frames\"] == 6 and m[\"jod\"] == a[\"jod\"]
+" "$mixed" "$a" && grep -q "leaving out reference-\* (6)" "$tmp/mixed.err"'
+cp "$tmp"/seq_ref/frame-0000.png "$tmp/seq_two/a-0.png"; cp "$tmp"/seq_ref/frame-0001.png "$tmp/seq_two/b-0.png"
+err=$("$F" compare "$tmp/seq_two" "$tmp/seq_two" 2>&1); rc=$?
+check "a folder of two other sequences: exit 1, both named" '[[ $rc -eq 1 && "$err" == *"2 sequences"*"a-* (1), b-* (1)"* ]]'
+err=$("$F" compare "$tmp/seq_ref" "$tmp/seq_noise" --jnd-heatmap "$tmp/seq_j.png" --no-flip 2>&1); rc=$?
+check "an image pair's diagnostics asked of sequences: exit 1, the flags named, no file" '[[ $rc -eq 1 && "$err" == *"--jnd-heatmap, --no-flip: for an image pair"* && ! -e "$tmp/seq_j.png" ]]'
 err=$("$F" compare "$tmp/seq_ref" "$tmp/ref.png" 2>&1); rc=$?
 check "a folder against a file: exit 1, says which is which" '[[ $rc -eq 1 && "$err" == *"seq_ref is a folder"* ]]'
 err=$("$F" compare "$tmp/ref.png" "$tmp/noise5.png" --peak-luminance 0.1 2>&1); rc=$?
