@@ -37,9 +37,19 @@ bench::ParamOverrides session_params(const SessionArgs& a,
   if (!a.params_file.empty()) {
     // A file holds values for every technique it was tuned for: those of the
     // techniques run apply.
-    out = with_flag("--params-file", [&] {
-            return bench::read_params_file(a.params_file);
-          }).only(techniques);
+    const bench::ParamOverrides file =
+        with_flag("--params-file", [&] { return bench::read_params_file(a.params_file); });
+    out = file.only(techniques);
+    // A file for other techniques alone would change nothing: that is a
+    // wrong file or a wrong --technique(s), not a run to make silently.
+    if (!file.per_technique.empty() && out.per_technique.empty()) {
+      std::string in_file, run;
+      for (const auto& [technique, values] : file.per_technique)
+        in_file += (in_file.empty() ? "" : ", ") + technique;
+      for (const std::string& t : techniques) run += (run.empty() ? "" : ", ") + t;
+      throw Error("--params-file " + a.params_file + ": holds parameters for " + in_file +
+                  ", none for the techniques run (" + run + ")");
+    }
   }
   const bench::ParamOverrides given = parse_params(a.params);
   // What --param says must apply to a technique run (the library names the field).

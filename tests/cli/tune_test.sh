@@ -32,6 +32,8 @@ import json,sys; t=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2]))
 chosen=t[\"chosen\"][\"layered\"]; got=[r for r in b[\"results\"] if r[\"technique\"]==\"layered\"][0][\"parameters\"]
 assert all(abs(got[k]-v) < 1e-9 for k,v in chosen.items()), (chosen, got)
 " "$tmp/t/tune.json" "$tmp/b/results.json"'
+err=$("$F" render --scene cheap --size 64x36 --technique vrs --params-file "$tmp/t/params.json" --out "$tmp/pf_none" --quiet 2>&1); rc=$?
+check "--params-file with none of the techniques run: exit 1, names the file's and the run's, no output" '[[ $rc -eq 1 && "$err" == *"holds parameters for inset, layered, none for the techniques run (vrs)"* && ! -e "$tmp/pf_none" ]]'
 "$F" bench --scene cheap --size 64x36 --frames 1 --techniques native,layered --params-file "$tmp/t/params.json" --param layered.margin=3 --out "$tmp/b2" --quiet > /dev/null
 check "--param overrides --params-file" 'python3 -c "
 import json,sys; b=json.load(open(sys.argv[1]))
