@@ -92,12 +92,6 @@ bench::BenchOptions to_options(const BenchArgs& a, const std::string& command) {
   o.video = a.video;
   o.side_by_side = a.side_by_side;
   if (!a.sweep.empty()) o.sweep = parse_sweep(a.sweep);
-  // The swept margins replace --margin in every run: results.json would
-  // record a margin no run used.
-  if (a.session.margin && o.sweep.technique.empty() && o.sweep.param == kPlanMarginKey) {
-    throw Error("--sweep " + o.sweep.key + " and --margin: the sweep sets the margin of " +
-                "each run; give one of them");
-  }
   if (!a.shard.empty()) o.shard = bench::parse_shard(a.shard);
   if (!a.memory_limit.empty())
     o.memory_limit_bytes = double(parse_byte_size(a.memory_limit, "--memory-limit"));

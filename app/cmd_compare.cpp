@@ -91,25 +91,25 @@ std::vector<std::string> folder_frames(const std::string& path) {
   }
   if (by_sequence.empty())
     throw Error(path + ": a folder without image files (PNG, JPEG, BMP, TGA)");
+  // The sequences but `skip`, named with their counts.
+  const auto named = [&](const std::string& skip) {
+    std::string names;
+    for (const auto& [name, files] : by_sequence) {
+      if (name != skip)
+        names += (names.empty() ? "" : ", ") + name + "* (" + std::to_string(files.size()) + ")";
+    }
+    return names;
+  };
   std::string chosen = by_sequence.begin()->first;
   if (by_sequence.size() > 1) {
-    std::string names;
-    for (const auto& [name, files] : by_sequence)
-      names += (names.empty() ? "" : ", ") + name + "* (" + std::to_string(files.size()) + ")";
     if (!by_sequence.count("frame-")) {
       throw Error(path + ": holds image files of " + std::to_string(by_sequence.size()) +
-                  " sequences (" + names + "); give a folder of one sequence");
+                  " sequences (" + named("") + "); give a folder of one sequence");
     }
     chosen = "frame-";
-    std::string left_out;
-    for (const auto& [name, files] : by_sequence) {
-      if (name != chosen)
-        left_out +=
-            (left_out.empty() ? "" : ", ") + name + "* (" + std::to_string(files.size()) + ")";
-    }
     if (!quiet()) {
       std::cerr << "foveate: note: " << path << ": comparing its frame-* images ("
-                << by_sequence[chosen].size() << "), leaving out " << left_out << "\n";
+                << by_sequence[chosen].size() << "), leaving out " << named(chosen) << "\n";
     }
   }
   std::vector<std::string> files = by_sequence[chosen];
@@ -120,7 +120,6 @@ std::vector<std::string> folder_frames(const std::string& path) {
 // The frames of REFERENCE and TEST: one file each, or the frames of two
 // folders sorted by name, as many in each.
 std::pair<std::vector<std::string>, std::vector<std::string>> frame_lists(const CompareArgs& a) {
-  const auto list = [](const std::string& path) { return folder_frames(path); };
   std::error_code ec;
   const bool ref_dir = fs::is_directory(a.reference, ec), test_dir = fs::is_directory(a.test, ec);
   if (ref_dir != test_dir) {
@@ -129,7 +128,7 @@ std::pair<std::vector<std::string>, std::vector<std::string>> frame_lists(const 
         " is a folder, " + (ref_dir ? a.test : a.reference) + " is not");
   }
   if (!ref_dir) return {{a.reference}, {a.test}};
-  auto refs = list(a.reference), tests = list(a.test);
+  auto refs = folder_frames(a.reference), tests = folder_frames(a.test);
   if (refs.size() != tests.size()) {
     throw Error("the folders hold different numbers of frames: " + a.reference + " " +
                 std::to_string(refs.size()) + ", " + a.test + " " + std::to_string(tests.size()));

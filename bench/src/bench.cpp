@@ -43,6 +43,14 @@ void validate(const BenchOptions& o) {
   }
   o.params.validate(o.techniques.value_or(technique_names()));
   if (o.runs.empty()) o.sweep.check_values(o.techniques.value_or(technique_names()));
+  // Every technique's margin swept replaces the session's in every run:
+  // results.json would record a margin no run used.
+  if (o.session.margin && o.sweep.technique.empty() && o.sweep.param == kPlanMarginKey) {
+    throw OptionError("sweep", FieldText{"{sweep} " + o.sweep.key +
+                                             " and {margin}: the sweep sets each run's margin; "
+                                             "give one of them",
+                                         {"sweep", "margin"}});
+  }
   const auto check_runs = [](const std::vector<RunSpec>& runs, const std::string& field) {
     for (size_t i = 0; i < runs.size(); ++i) {
       const RunSpec& r = runs[i];

@@ -106,10 +106,7 @@ void PassKit::list_edges(const EdgeScratch& e, const gpu::RenderTarget& buffer,
   // texel reads (u_centre): the texels covered and their neighbours, all
   // rows where rows wrap. A buffer only partly covered (vrs's 1x1 class:
   // the fovea of a native-sized target) is not copied whole.
-  PixelRect box{w, used, 0, 0};
-  for (const PixelRect& q : marked)
-    box = {std::min(box[0], q[0] - 1), std::min(box[1], q[1] - 1), std::max(box[2], q[2] + 1),
-           std::max(box[3], q[3] + 1)};
+  PixelRect box = bounding_box(marked, 1);
   if (wrap_rows) box[1] = 0, box[3] = used;
   box = {std::max(box[0], std::max(first, 0)), std::max(box[1], 0),
          std::min(box[2], std::min(last, w)), std::min(box[3], used)};

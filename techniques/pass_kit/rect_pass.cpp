@@ -43,6 +43,15 @@ std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects) {
   return out;
 }
 
+PixelRect bounding_box(const std::vector<PixelRect>& rects, int grow) {
+  if (rects.empty()) return {0, 0, 0, 0};
+  PixelRect box = rects.front();
+  for (const PixelRect& r : rects)
+    box = {std::min(box[0], r[0]), std::min(box[1], r[1]), std::max(box[2], r[2]),
+           std::max(box[3], r[3])};
+  return {box[0] - grow, box[1] - grow, box[2] + grow, box[3] + grow};
+}
+
 std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const PixelRect& bounds) {
   std::vector<PixelRect> out;
   for (const PixelRect& r : rects) {

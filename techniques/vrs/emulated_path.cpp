@@ -11,10 +11,7 @@ namespace {
 
 // The part of a class's view that `texels` (of its grid) span.
 View bounds(const View& full, const std::vector<PixelRect>& texels, ShadingRate r) {
-  PixelRect box{full.target_width, full.target_height, 0, 0};
-  for (const PixelRect& q : texels)
-    box = {std::min(box[0], q[0]), std::min(box[1], q[1]), std::max(box[2], q[2]),
-           std::max(box[3], q[3])};
+  const PixelRect box = bounding_box(texels);
   View v = full;
   v.x0 = double(box[0] * r.width);
   v.y0 = double(box[1] * r.height);
@@ -161,13 +158,9 @@ EmulatedPath::Shaded EmulatedPath::shade_class(PassKit& kit, Scene& scene, const
   // unshaded, but the edge marks compare neighbours: those left unshaded
   // read as alpha 0 (not shaded), never as an earlier frame's. Nothing
   // reads beyond the texels' box and one texel around it (the edges'
-  // neighbours), so only that is cleared: the 1x1 class's target is
-  // native's size, and clearing it whole cost more than its fovea's shading.
-  PixelRect clear_box{tw, th, 0, 0};
-  for (const PixelRect& q : texels)
-    clear_box = {std::min(clear_box[0], q[0] - 1), std::min(clear_box[1], q[1] - 1),
-                 std::max(clear_box[2], q[2] + 1), std::max(clear_box[3], q[3] + 1)};
-  t.clear(0, 0, 0, 0, clear_box);
+  // neighbours), so only that is cleared: a clear costs per pixel, and the
+  // 1x1 class's target is native's size for the fovea's tiles alone.
+  t.clear(0, 0, 0, 0, bounding_box(texels, 1));
   const gpu::Program& mask_program = kit.over_rects("vrs/mask.frag");
   const gpu::PassState mark = gpu::PassState::stencil_mark();
   kit.rect_pass(mask_program, texels, t, mark);

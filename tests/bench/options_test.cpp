@@ -383,6 +383,16 @@ TEST(Options, ASweepIsCheckedAgainstTheTechniquesRun) {
   // The slope changes every technique.
   o.sweep = Sweep::range("slope", 0.02, 0.03, 0.01);
   EXPECT_EQ(field_of([&] { validate(o); }), "no error");
+  // Every technique's margin swept beside the session's margin: one of them
+  // would not be what results.json says; one technique's margin swept
+  // beside it (for the others) is a run of its own.
+  o.techniques = std::vector<std::string>{"native", "inset"};
+  o.session.margin = 1.5;
+  o.sweep = Sweep::of("margin", {1, 2});
+  EXPECT_EQ(error_of([&] { validate(o); }),
+            "sweep margin and margin: the sweep sets each run's margin; give one of them");
+  o.sweep = Sweep::of("inset.margin", {1, 2});
+  EXPECT_EQ(field_of([&] { validate(o); }), "no error");
 }
 
 // Runs that would hold more memory together than the limit are judged in

@@ -104,6 +104,6 @@ expect_error "bad sweep" "--sweep" bench --scene cheap --size 32x32 --sweep laye
 expect_error "sweep of an unknown key" "no technique has" bench --scene cheap --size 32x32 --sweep warp=1:2:1 --out "$tmp/x"
 expect_error "a value listed twice" "--sweep margin: 1 is listed twice" bench --scene cheap --size 32x32 --sweep margin=1,2,1 --out "$tmp/x"
 expect_error "a listed value that is no number" "--sweep: 'x' is not a number" bench --scene cheap --size 32x32 --sweep margin=1,x --out "$tmp/x"
-expect_error "a swept margin with --margin" "--sweep margin and --margin: the sweep sets the margin of each run" bench --scene cheap --size 32x32 --sweep margin=1,2 --margin 1.5 --out "$tmp/x"
+expect_error "a swept margin with --margin" "--sweep margin and --margin: the sweep sets each run's margin" bench --scene cheap --size 32x32 --sweep margin=1,2 --margin 1.5 --out "$tmp/x"
 expect_error "an empty listed value" "--sweep: '' is not a number" bench --scene cheap --size 32x32 --sweep margin=1, --out "$tmp/x"
 exit $fail

@@ -125,5 +125,13 @@ TEST(Rects, MergedRunsCoverTheSamePixels) {
     for (int x = 0; x < 24; ++x) EXPECT_EQ(covered(tiles, x, y), covered(merged, x, y));
 }
 
+TEST(Rects, BoundingBoxHoldsEveryRectangleGrownOnEachSide) {
+  const std::vector<PixelRect> rects = {{4, 6, 8, 9}, {-2, 10, 3, 12}, {5, 1, 6, 2}};
+  EXPECT_EQ(bounding_box(rects), (PixelRect{-2, 1, 8, 12}));
+  EXPECT_EQ(bounding_box(rects, 1), (PixelRect{-3, 0, 9, 13}));
+  // None: an empty box, not grown (a clear or a copy over it does nothing).
+  EXPECT_EQ(bounding_box({}, 1), (PixelRect{0, 0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace foveate::tech

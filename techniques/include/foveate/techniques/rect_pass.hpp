@@ -41,6 +41,10 @@ class RectPass {
 /// their rows (fewer, longer quads; the pixels covered are the same).
 std::vector<PixelRect> merge_runs(const std::vector<PixelRect>& rects);
 
+/// The smallest rectangle holding every one of `rects`, grown by `grow`
+/// pixels on each side (unclipped); {0, 0, 0, 0} when there are none.
+PixelRect bounding_box(const std::vector<PixelRect>& rects, int grow = 0);
+
 /// The parts of `rects` inside `bounds` (empty ones left out).
 std::vector<PixelRect> clip_rects(const std::vector<PixelRect>& rects, const PixelRect& bounds);
 
