@@ -85,6 +85,8 @@ def test_bad_bench_input_raises(fv, tmp_path):
         tiny(fv, frames=0)
     with pytest.raises(fv.Error, match="sweep slope: .* over the limit of 50"):
         tiny(fv, sweep=("slope", 0, 1, 1e-9))
+    with pytest.raises(fv.Error, match="sweep margin and margin: the sweep sets each run's margin"):
+        tiny(fv, margin=1.5, sweep=("margin", [1, 2]))
     with pytest.raises(fv.Error, match="sweep margin: 1 is listed twice"):
         tiny(fv, sweep=("margin", [1, 1]))
     with pytest.raises(fv.Error, match="side_by_side: only with video"):
