@@ -66,7 +66,7 @@ RenderSetup check(const RenderArgs& a) {
   s.session = to_session_options(a.session);
   if (!a.mouse.empty()) {
     s.session.mouse_px =
-        parse_point(a.mouse, s.session.size.width, s.session.size.height, "--mouse");
+        parse_point_on_image(a.mouse, s.session.size.width, s.session.size.height, "--mouse");
     s.session.mouse_down = true;
   }
   with_flag("--technique", [&] { return technique_info(a.technique); });

@@ -55,6 +55,7 @@ expect_error "parameter out of range" "out of range" render --scene cheap --size
 expect_error "parameter not a number" "not a number" render --scene cheap --size 32x32 --technique layered --param layers=three --out "$tmp/x"
 expect_error "frames zero" "--frames" render --scene cheap --size 32x32 --frames 0 --out "$tmp/x"
 expect_error "bad gaze" "--gaze" render --scene cheap --size 32x32 --gaze left --out "$tmp/x"
+expect_error "mouse off the image" "--mouse: '500,10' is (500, 10) px, outside the 64x32 image" render --scene "$data/channels.glsl" --size 64x32 --mouse 500,10 --out "$tmp/x"
 expect_error "missing gaze trace" "nope.csv" render --scene cheap --size 32x32 --gaze "trace:$tmp/nope.csv" --out "$tmp/x"
 expect_error "mouse without a window" "window" render --scene cheap --size 32x32 --gaze mouse --out "$tmp/x"
 expect_error "lodmask on a shader scene" "has no meshes" render --scene cheap --size 32x32 --technique lodmask --out "$tmp/x"
