@@ -281,8 +281,11 @@ BenchResult BenchRun::run() {
   for (const std::string& e : session_.take_gl_errors())
     notice(NoticeKind::Warning, {"GL debug error: " + e, {}});
   out_.gaze_report = session_.gaze().report();
-  out_.savings = check_savings(session_.display(), options_.session.acuity,
-                               strictest_plan_margin(options_.session.margin, out_.techniques));
+  // The finest plan the runs were made at (parameters and sweeps included).
+  out_.savings = check_savings(
+      session_.display(), options_.session.acuity,
+      session_.largest_plan_margin().value_or(
+          strictest_plan_margin(options_.session.margin, out_.techniques)));
   finish_environment(out_.environment);
   if (video_) {
     video_->finish();

@@ -112,8 +112,13 @@ void Session::announce() const {
             format_fixed(display_.pixels_per_degree(c, c), 1) + " px/deg at the centre; gaze " +
             gaze_->describe(),
         {}}});
-  const SavingsCheck savings =
-      check_savings(display_, options_.acuity, strictest_plan_margin(options_.margin));
+}
+
+void Session::note_savings() {
+  if (savings_noted_ || !largest_margin_) return;
+  savings_noted_ = true;
+  if (!callbacks_.notice) return;
+  const SavingsCheck savings = check_savings(display_, options_.acuity, *largest_margin_);
   if (savings.nothing_to_save) callbacks_.notice({NoticeKind::Note, savings.note});
 }
 
@@ -157,6 +162,10 @@ SessionTechnique Session::make(const std::string& technique, const ParamOverride
   SessionTechnique t;
   t.view = make_for(Eye::Left);
   if (stereo_) t.right = make_for(Eye::Right);
+  if (t.view->values().has(kPlanMarginKey)) {
+    const double m = t.view->values().real(kPlanMarginKey);
+    largest_margin_ = std::max(largest_margin_.value_or(m), m);
+  }
   return t;
 }
 
@@ -165,6 +174,7 @@ SessionFrame Session::render(SessionTechnique& t, int frame, const GazeState& ga
 }
 
 SessionFrame Session::render(SessionTechnique& t, const FrameInput& input, const GazeState& gaze) {
+  note_savings();
   SessionFrame out;
   if (!stereo_) {
     out.total = frame_runner_->render(*t.view, input, gaze);

@@ -23,8 +23,20 @@ check "plan plans 1920x1080 by default" 'grep -q "1920x1080" "$tmp/plan.txt" && 
 "$FOVEATE" plan --size 320x180 > /dev/null 2> "$tmp/note.txt"
 check "plan at 320x180 notes the 1.00x bound and suggests a size" \
   'grep -q "pixel bound is 1.00x" "$tmp/note.txt" && grep -q "try --size 1280x720" "$tmp/note.txt" && grep -q "6.5 pixels per degree" "$tmp/note.txt"'
-"$FOVEATE" render --scene cheap --size 64x36 --frames 3 --out "$tmp/r" > /dev/null 2> "$tmp/note.txt"
+"$FOVEATE" render --scene cheap --size 64x36 --technique layered --frames 3 --out "$tmp/r" > /dev/null 2> "$tmp/note.txt"
 check "render says it once" '[[ $(grep -c "nothing to save" "$tmp/note.txt") == 1 ]]'
+# The note is for the plans of the techniques run: at 640x360 vrs's (margin 1,
+# bound 1.78x) has something to save, layered's (1.5, 1.15x) little, and a
+# margin given as a parameter is the one named.
+"$FOVEATE" render --scene cheap --size 640x360 --technique vrs --no-write > /dev/null 2> "$tmp/note.txt"
+check "no note for vrs's plan at 640x360" '! grep -q "nothing to save" "$tmp/note.txt"'
+"$FOVEATE" render --scene cheap --size 640x360 --technique layered --no-write > /dev/null 2> "$tmp/note.txt"
+check "a note for layered's plan at 640x360, at its margin" 'grep -q "pixel bound is 1.15x at planning margin 1.5" "$tmp/note.txt"'
+"$FOVEATE" render --scene cheap --size 640x360 --technique vrs --param vrs.margin=3 --no-write > /dev/null 2> "$tmp/note.txt"
+check "a note at the margin a parameter sets" 'grep -q "pixel bound is 1.00x at planning margin 3" "$tmp/note.txt"'
+"$FOVEATE" bench --scene cheap --size 640x360 --techniques native,vrs,layered --frames 1 --warmup 0 --no-metrics --out "$tmp/sv" > /dev/null 2> "$tmp/note.txt"
+check "bench notes, and records, the finest plan of its runs" \
+  'grep -q "planning margin 1.5" "$tmp/note.txt" && grep -q "\"margin\": 1.5" "$tmp/sv/results.json"'
 "$FOVEATE" plan --size 1280x720 > /dev/null 2> "$tmp/note.txt"
 check "no note where there is something to save" '! grep -q "nothing to save" "$tmp/note.txt"'
 "$FOVEATE" plan --size 320x180 --quiet > /dev/null 2> "$tmp/note.txt"

@@ -93,6 +93,11 @@ class Session {
   /// Bad parameters are an OptionError of "params".
   SessionTechnique make(const std::string& technique, const ParamOverrides& params,
                         std::optional<AcuityModel> acuity = std::nullopt) const;
+  /// The largest planning margin of the techniques made so far (the finest
+  /// plan, with its parameters and the session's margin applied); unset
+  /// while none that plans by a margin was made. The savings note of the
+  /// first frame rendered (bench::check_savings) is for this plan.
+  [[nodiscard]] std::optional<double> largest_plan_margin() const { return largest_margin_; }
   /// Renders frame `frame` of the fixed clock (or `input`) for the combined gaze.
   SessionFrame render(SessionTechnique& technique, int frame, const GazeState& gaze);
   SessionFrame render(SessionTechnique& technique, const FrameInput& input, const GazeState& gaze);
@@ -124,9 +129,14 @@ class Session {
   void make_frame_runners();
   void make_tracker();
   void announce() const;
+  /// The savings note, once, before the first frame: for the techniques
+  /// made, whose margins only then are known.
+  void note_savings();
 
   SessionOptions options_;
   SessionCallbacks callbacks_;
+  mutable std::optional<double> largest_margin_;  ///< made techniques' (make is const)
+  bool savings_noted_ = false;
   std::unique_ptr<gpu::Context> context_;
   gpu::Window* window_ = nullptr;
   std::unique_ptr<Scene> scene_;
