@@ -20,8 +20,16 @@ Session::Session(const SessionOptions& o, SessionCallbacks callbacks)
     stereo_display_ = for_field("stereo", [&] { return StereoDisplay::from(display_); });
   }
   make_context();
-  scene_ = load_scene(o.scene, o.scene_options);
-  if (o.stereo) right_scene_ = load_scene(o.scene, o.scene_options);
+  // The scene's load warnings are the session's notices (so --quiet and
+  // Python's warnings see them).
+  SceneOptions scene_options = o.scene_options;
+  if (callbacks_.notice && !scene_options.warning) {
+    scene_options.warning = [notice = callbacks_.notice](const std::string& text) {
+      notice({NoticeKind::Warning, {text, {}}});
+    };
+  }
+  scene_ = load_scene(o.scene, scene_options);
+  if (o.stereo) right_scene_ = load_scene(o.scene, scene_options);
   make_frame_runners();
   watchdog_ = std::make_unique<FrameWatchdog>(o.frame_timeout_s, scene_->info().name,
                                               callbacks_.frame_timeout);

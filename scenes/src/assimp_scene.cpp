@@ -33,6 +33,7 @@
 #include "mesh_scene_base.hpp"
 #include "model_files.hpp"
 #include "model_geometry.hpp"
+#include "scene_warnings.hpp"
 
 namespace foveate::detail {
 
@@ -63,7 +64,7 @@ Image decode_embedded(const aiTexture* t, const std::string& where) {
   return img;
 }
 
-void warn(const std::string& text) { std::fprintf(stderr, "foveate: warning: %s\n", text.c_str()); }
+void warn(const std::string& text) { warn_once(text); }
 
 std::string lower_ext(const std::string& path) {
   std::string ext = fs::path(path).extension().string();

@@ -7,6 +7,7 @@
 #include "foveate/core/error.hpp"
 #include "foveate/core/parse.hpp"
 #include "foveate_embedded/scenes_shaders.hpp"
+#include "scene_warnings.hpp"
 
 namespace foveate {
 
@@ -28,6 +29,7 @@ void Scene::prepass_draw(const View&, int) {}
 void Scene::prepass_end() {}
 
 std::unique_ptr<Scene> load_scene(const std::string& name_or_path, const SceneOptions& options) {
+  const detail::ScopedSceneWarnings warnings(options.warning);
   if (name_or_path == "guenter") return detail::make_guenter_scene(options);
   if (detail::is_builtin_shader_scene(name_or_path)) {
     return detail::make_builtin_shader_scene(name_or_path, options);

@@ -9,8 +9,6 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <mutex>
-#include <set>
 
 #include "foveate/core/error.hpp"
 #include "foveate/core/file.hpp"
@@ -109,14 +107,6 @@ static void blank_channel_directives(UserPass& p) {
     pos = eol + 1;
     ++line;
   }
-}
-
-void warn_once(const std::string& message) {
-  static std::mutex mutex;
-  static std::set<std::string> said;
-  std::lock_guard<std::mutex> lock(mutex);
-  if (!said.insert(message).second) return;
-  std::fprintf(stderr, "foveate: warning: %s\n", message.c_str());
 }
 
 UserPass read_user_pass(const std::string& path, const std::string& what, bool need_main_image) {

@@ -12,6 +12,7 @@
 #include "foveate/gpu/shader.hpp"
 #include "foveate/scenes/scene.hpp"
 #include "foveate/scenes/shadertoy_source.hpp"
+#include "scene_warnings.hpp"
 
 namespace foveate::detail {
 
@@ -50,8 +51,5 @@ void set_shadertoy_inputs(const gpu::Program& program, const FrameInput& f,
                           const ShadertoyDate& date, const float channel_size[4][2]);
 /// The inputs a pass may leave out (Program::allow_missing).
 void allow_missing_shadertoy_inputs(const gpu::Program& program);
-
-/// "foveate: warning: ..." on stderr, once per distinct message per process.
-void warn_once(const std::string& message);
 
 }  // namespace foveate::detail

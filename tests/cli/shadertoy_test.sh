@@ -63,6 +63,8 @@ render --scene "$data/unbound_channel.glsl" --channel "$data/quadrants.png" --re
   && ok "one warning for the unbound iChannel1" || bad "warning: $(cat "$tmp/u.err")"
 grep -q "iChannel3\|iChannel0" "$tmp/u.err" && bad "warned for a bound or commented channel" || ok "no warning for a bound channel or one in a comment"
 near "the unbound channel reads black" "$(px "$tmp/u/frame-0000.png" 8,4)" "127 0 0 255"
+render --scene "$data/unbound_channel.glsl" --channel "$data/quadrants.png" --quiet --out "$tmp/uq" > /dev/null 2> "$tmp/uq.err" || bad "unbound channel render, --quiet"
+[[ ! -s "$tmp/uq.err" ]] && ok "--quiet silences the scene's warning" || bad "--quiet printed: $(cat "$tmp/uq.err")"
 
 # 4. iDate: fixed by default in render, set by --date, rolls over midnight.
 render --scene "$data/clock.glsl" --out "$tmp/d0" > /dev/null

@@ -95,3 +95,14 @@ def test_bench_refuses_an_out_folder_holding_another_run(fv, tmp_path):
         (tmp_path / "stale-notes.txt").write_text("mine")
         fv.bench(**args, overwrite=True)
     assert (tmp_path / "results.md").exists() and (tmp_path / "stale-notes.txt").exists()
+
+
+def test_a_scenes_load_warning_is_a_python_warning(fv):
+    # A Shadertoy file sampling a channel bound to nothing: the scene's warning
+    # reaches Python as a UserWarning and the result's notes, not stderr alone.
+    import pathlib
+
+    shader = pathlib.Path(__file__).parents[1] / "data" / "shadertoy" / "unbound_channel.glsl"
+    with pytest.warns(UserWarning, match="samples iChannel1 but no image or buffer is bound"):
+        r = fv.render(scene=str(shader), size=(64, 36))
+    assert any("iChannel1" in n for n in r["notes"])

@@ -13,6 +13,7 @@
 // scene, and what a user implements to foveate their own renderer.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -194,6 +195,10 @@ struct SceneOptions {
   std::uint64_t model_memory_limit = 0;
   /// iDate of Shadertoy scenes; by default 2026-01-01 00:00 (deterministic).
   ShadertoyDate date;
+  /// Where load_scene's warnings go (a Shadertoy channel sampled but bound to
+  /// nothing, an ignored directive, a mesh file's repaired faces), each
+  /// distinct one once per process; unset: "foveate: warning: ..." on stderr.
+  std::function<void(const std::string&)> warning;
 };
 
 /// The MSAA sample counts (above 1) a mesh scene's G-buffer can have on the
