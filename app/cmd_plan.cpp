@@ -218,6 +218,10 @@ GazePlan make_gaze_plan(const PlanArgs& a) {
 
 void print_plan_json(const PlanArgs& a, const GazePlan& g) {
   nlohmann::json j = g.plan;
+  // "acuity" is the model judged by, as in the text and in bench's
+  // results.json; the plan is made for it `margin` times finer.
+  j["planned_acuity"] = j["acuity"];
+  j["acuity"] = {{"slope", g.acuity.slope}, {"w0_deg", g.acuity.w0_deg}};
   j["gaze_px"] = {g.gaze.x, g.gaze.y};
   j["margin"] = g.margin;
   if (g.without_lens) {

@@ -10,6 +10,8 @@ check "table shows the paper's geometry" '[[ "$out" == *"e* (half field of view)
 check "table shows the half-rate ratio 13.3" '[[ "$out" == *"half rate = 13.3"* ]]'
 
 json=$("$FOVEATE" plan --quality B --json --margin 1)
+json2=$("$FOVEATE" plan --json --margin 2)
+check "json: acuity is the model judged by, planned_acuity the margin's" 'python3 -c "import json,sys; j=json.loads(sys.argv[1]); assert j[\"margin\"]==2 and abs(j[\"acuity\"][\"slope\"]-0.0275)<1e-9 and abs(j[\"planned_acuity\"][\"slope\"]-0.01375)<1e-9 and abs(j[\"planned_acuity\"][\"w0_deg\"]*2-j[\"acuity\"][\"w0_deg\"])<1e-12" "$json2"'
 check "json has layers and ratios" 'python3 -c "import json,sys; j=json.loads(sys.argv[1]); assert len(j[\"layers\"])==3; assert abs(j[\"pixel_ratio_half_rate\"]-9.8)<0.5; assert abs(j[\"display\"][\"half_fov_deg\"]-23.4)<0.05; [l[k] for l in j[\"layers\"] for k in (\"radius_deg\",\"sampling_factor\",\"width_px\",\"height_px\",\"pixels\")]" "$json"'
 
 "$FOVEATE" plan --sweep "$tmp/sweep.csv" >/dev/null
