@@ -108,7 +108,10 @@ void add_common(CLI::App* sub, BenchArgs& a) {
       ->capture_default_str()
       ->each([&a](const std::string&) { a.techniques_given = true; });
   sub->add_option("--frames", a.frames, "Measured frames per technique")->capture_default_str();
-  sub->add_option("--warmup", a.warmup, "Warm-up frames per technique (not measured)")
+  sub->add_option(
+         "--warmup", a.warmup,
+         "Warm-up frames (not measured), at least: every technique warms up as long as the slowest "
+         "to settle takes (layered's half-rate layers: 3), with a note when that is longer")
       ->capture_default_str();
   sub->add_option("--out", a.out,
                   "Output directory: results.json, results.csv, results.md, report.html")

@@ -157,7 +157,11 @@ void register_tune(CLI::App& app) {
   sub->add_option("--fps", a->fps, "Frame rate of the fixed clock")->capture_default_str();
   sub->add_option("--frames", a->frames, "Measured frames per candidate (a moving camera)")
       ->capture_default_str();
-  sub->add_option("--warmup", a->warmup, "Warm-up frames per candidate")->capture_default_str();
+  sub->add_option("--warmup", a->warmup,
+                  "Warm-up frames per candidate, at least: every candidate warms up as long as the "
+                  "slowest to settle takes, so that all are measured on the same frames (a note "
+                  "says so; tune.md names them)")
+      ->capture_default_str();
   sub->add_option("--reference", a->reference,
                   "What JOD is judged against: ssaa[:N] (native with NxN supersampling) or native")
       ->capture_default_str();

@@ -265,6 +265,27 @@ BenchResult BenchRun::run() {
   out_.warmup = options_.warmup;
   for (const Run& r : runs_) out_.warmup = std::max(out_.warmup, r.impl.view->settle_frames());
   out_.warmup = std::max(out_.warmup, unmeasured_settle_);
+  if (out_.warmup > options_.warmup) {
+    // Said, since the frames measured are not the ones asked for.
+    std::string who;
+    for (const Run& r : runs_) {
+      if (r.impl.view->settle_frames() == out_.warmup) {
+        who = r.result.label.empty() ? r.technique : r.result.label;
+        break;
+      }
+    }
+    const std::string n = std::to_string(out_.warmup);
+    notice(NoticeKind::Note,
+           {"warm-up of " + n + " frames, not the " + std::to_string(options_.warmup) +
+                " asked ({warmup}): " +
+                (who.empty() ? "a run of the campaign (settle_runs) needs " + n +
+                                   " to settle, and every benchmark of it measures the same "
+                                   "frames"
+                             : who + " needs " + n + " to settle (its work per frame steady)") +
+                "; frames " + n + "-" + std::to_string(out_.warmup + options_.frames - 1) +
+                " are measured",
+            {"warmup"}});
+  }
   open_video();
   // Steps: every frame rendered, and every frame judged (the metrics take as
   // long as the rendering on a CPU), so that the time left is honest.
@@ -282,10 +303,9 @@ BenchResult BenchRun::run() {
     notice(NoticeKind::Warning, {"GL debug error: " + e, {}});
   out_.gaze_report = session_.gaze().report();
   // The finest plan the runs were made at (parameters and sweeps included).
-  out_.savings = check_savings(
-      session_.display(), options_.session.acuity,
-      session_.largest_plan_margin().value_or(
-          strictest_plan_margin(options_.session.margin, out_.techniques)));
+  out_.savings = check_savings(session_.display(), options_.session.acuity,
+                               session_.largest_plan_margin().value_or(strictest_plan_margin(
+                                   options_.session.margin, out_.techniques)));
   finish_environment(out_.environment);
   if (video_) {
     video_->finish();

@@ -19,6 +19,13 @@ check "techniques derives for 1920x1080 by default" 'grep -q "desktop-1080p at 1
 "$FOVEATE" plan --margin 1 > "$tmp/plan.txt"
 check "plan plans 1920x1080 by default" 'grep -q "1920x1080" "$tmp/plan.txt" && grep -q "pixel ratio P\*/P = 8.49x" "$tmp/plan.txt"'
 
+# --- A warm-up longer than asked is said, with the frames measured.
+"$FOVEATE" bench --scene cheap --size 320x180 --techniques native,layered --frames 2 --warmup 0 --no-metrics --out "$tmp/wu" > /dev/null 2> "$tmp/wu.txt"
+check "bench says it warmed up longer than asked, and why" \
+  'grep -q "warm-up of 3 frames, not the 0 asked (--warmup): layered needs 3 to settle" "$tmp/wu.txt" && grep -q "frames 3-4 are measured" "$tmp/wu.txt"'
+"$FOVEATE" bench --scene cheap --size 320x180 --techniques native,vrs --frames 2 --warmup 2 --no-metrics --out "$tmp/wu2" > /dev/null 2> "$tmp/wu.txt"
+check "no such note when the warm-up asked is long enough" '! grep -q "warm-up of" "$tmp/wu.txt"'
+
 # --- Nothing to save: said once on stderr, with the figure and a size to try.
 "$FOVEATE" plan --size 320x180 > /dev/null 2> "$tmp/note.txt"
 check "plan at 320x180 notes the 1.00x bound and suggests a size" \
