@@ -103,6 +103,14 @@ void validate(const BenchOptions& o) {
                                 "that eye)",
                                 {"reference", "stereo"}});
   }
+  if (o.reference > 1 && !o.image_metrics) {
+    // It would be rendered every frame, at N x N the pixels, and judged
+    // nothing against, while results.json recorded it.
+    throw OptionError("reference",
+                      FieldText{"{reference}: the supersampled reference is what the image "
+                                "metrics judge against, and {image_metrics} turns them off",
+                                {"reference", "image_metrics"}});
+  }
   if (o.side_by_side && o.video.empty()) {
     throw OptionError("side_by_side",
                       FieldText{"{side_by_side}: only with {video}", {"side_by_side", "video"}});

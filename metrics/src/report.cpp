@@ -221,23 +221,28 @@ nlohmann::json to_json(const QualityReport& r) {
 }
 
 nlohmann::json to_json(const QualitySummary& s) {
-  nlohmann::json j = to_json(s.mean);
+  // Without the diagnostics only FovVideoVDP was measured: the rest is left
+  // out rather than written as zeros and nulls that read as measured.
+  nlohmann::json j = s.diagnostics ? to_json(s.mean) : nlohmann::json::object();
   j["frames"] = s.frames;
-  j["identical_frames"] = s.identical_frames;
-  j["flicker_ratio"] = number(s.flicker.ratio);
-  j["flicker_reference_change"] = number(s.flicker.reference_change);
-  j["flicker_test_change"] = number(s.flicker.test_change);
-  nlohmann::json bands = nlohmann::json::array();
-  for (const FlickerBand& b : s.flicker.bands) {
-    bands.push_back({{"from_deg", b.from_deg},
-                     {"to_deg", number(b.to_deg)},
-                     {"reference_change", number(b.reference_change)},
-                     {"test_change", number(b.test_change)},
-                     {"test_change_last", number(b.test_change_last)},
-                     {"excess_change", number(b.excess_change)},
-                     {"ratio", number(b.ratio)}});
+  j["diagnostics"] = s.diagnostics;
+  if (s.diagnostics) {
+    j["identical_frames"] = s.identical_frames;
+    j["flicker_ratio"] = number(s.flicker.ratio);
+    j["flicker_reference_change"] = number(s.flicker.reference_change);
+    j["flicker_test_change"] = number(s.flicker.test_change);
+    nlohmann::json bands = nlohmann::json::array();
+    for (const FlickerBand& b : s.flicker.bands) {
+      bands.push_back({{"from_deg", b.from_deg},
+                       {"to_deg", number(b.to_deg)},
+                       {"reference_change", number(b.reference_change)},
+                       {"test_change", number(b.test_change)},
+                       {"test_change_last", number(b.test_change_last)},
+                       {"excess_change", number(b.excess_change)},
+                       {"ratio", number(b.ratio)}});
+    }
+    j["flicker_bands"] = bands;
   }
-  j["flicker_bands"] = bands;
   j["jod"] = s.fvvdp ? number(s.fvvdp->jod) : nlohmann::json(nullptr);
   if (s.fvvdp) j["fvvdp"] = to_json(*s.fvvdp);
   if (!s.fvvdp_streams.empty()) {

@@ -101,6 +101,7 @@ FvvdpResult fvvdp_result_from_json(const nlohmann::json& j) {
 QualitySummary quality_summary_from_json(const nlohmann::json& j) {
   QualitySummary s;
   s.frames = j.value("frames", 0);
+  s.diagnostics = j.value("diagnostics", true);
   s.identical_frames = j.value("identical_frames", 0);
   s.mean = report_from_json(j);
   s.flicker.ratio = number_at(j, "flicker_ratio");

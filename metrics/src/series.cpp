@@ -165,6 +165,7 @@ void QualitySeries::set_fvvdp_heatmap(bool on) { fvvdp_heatmap_ = on; }
 QualitySummary QualitySeries::summary() const {
   QualitySummary s;
   s.frames = frames();
+  s.diagnostics = options_.diagnostics;
   for (const QualityReport& r : reports_) s.identical_frames += std::isinf(r.psnr_db) ? 1 : 0;
   s.mean = mean_report(reports_);
   s.flicker.ratio = flicker_.ratio();

@@ -71,6 +71,9 @@ check "--param for a technique not run: exit 1 naming it" \
   '[[ $rc -eq 1 && "$err" == *"--param logpolar.sigma"* && "$err" == *"not among the techniques run (layered)"* ]] || { echo "  rc $rc: $err"; false; }'
 run bench --scene cheap --size 64x36 --techniques layered --param logpolar.sigma=2 --frames 1 --out "$tmp/b3"
 check "bench: the same" '[[ $rc -eq 1 && "$err" == *"not among the techniques run"* ]] || { echo "  rc $rc: $err"; false; }'
+run bench --scene cheap --size 64x36 --techniques layered --reference ssaa:4 --no-metrics --frames 1 --out "$tmp/b4"
+check "bench --reference ssaa with --no-metrics: exit 1 naming both, nothing written" \
+  '[[ $rc -eq 1 && "$err" == *"--reference: the supersampled reference is what the image metrics judge against, and --no-metrics turns them off"* && ! -e "$tmp/b4" ]] || { echo "  rc $rc: $err"; false; }'
 run render --scene cheap --size 64x36 --technique layered --param layered.sigma=2 --no-write
 check "a key the technique does not declare" '[[ $rc -eq 1 && "$err" == *"layered has no parameter '"'"'sigma'"'"'"* ]] || { echo "  rc $rc: $err"; false; }'
 run render --scene cheap --size 64x36 --technique vrs --param vrs.edge_samples=3 --no-write

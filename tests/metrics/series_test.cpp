@@ -253,6 +253,7 @@ TEST(Series, JsonKeysAndNulls) {
                                           "flicker_bands",
                                           "bands",
                                           "jod",
+                                          "diagnostics",
                                           "fvvdp"};
   EXPECT_EQ(keys, expect_keys);
   // FovVideoVDP over the sequence: the same JOD as feeding it the frames directly.
@@ -361,6 +362,41 @@ TEST(Series, ClearErrors) {
   EXPECT_THROW(series.add(noise(1), Image(kW + 1, kH), {0, 0}), Error);
   EXPECT_THROW(series.add(Image(2 * kW, 2 * kH), Image(2 * kW, 2 * kH), {0, 0}), Error);
   EXPECT_EQ(series.frames(), 0);  // nothing was added
+}
+
+// Without the diagnostics only FovVideoVDP is measured; results.json must not
+// carry the diagnostics' fields as zeros and nulls that read as measured, and
+// reading it back must say they were not.
+TEST(Series, WithoutDiagnosticsOnlyFvvdpIsWrittenAndReadBack) {
+  const Frames f;
+  QualityOptions o;
+  o.acuity = AcuityModel::preset("A");
+  o.diagnostics = false;
+  QualitySeries series(display(), o);
+  for (size_t k = 0; k < f.test.size(); ++k) series.add(f.reference[k], f.test[k], f.gaze[k]);
+  const QualitySummary s = series.summary();
+  EXPECT_FALSE(s.diagnostics);
+  EXPECT_EQ(s.frames, 3);
+  ASSERT_TRUE(s.fvvdp.has_value());
+  const nlohmann::json j = to_json(s);
+  EXPECT_EQ(j.at("diagnostics"), false);
+  EXPECT_DOUBLE_EQ(j.at("jod").get<double>(), s.fvvdp->jod);
+  for (const char* key : {"width", "identical", "psnr_db", "ssim", "acuity_rmse", "bands",
+                          "flicker_bands", "identical_frames", "eccentricity_profile"})
+    EXPECT_FALSE(j.contains(key)) << key;
+  const QualitySummary back = quality_summary_from_json(j);
+  EXPECT_FALSE(back.diagnostics);
+  EXPECT_EQ(back.frames, 3);
+  ASSERT_TRUE(back.fvvdp.has_value());
+  EXPECT_DOUBLE_EQ(back.fvvdp->jod, s.fvvdp->jod);
+
+  o.diagnostics = true;
+  QualitySeries full(display(), o);
+  full.add(f.reference[0], f.test[0], f.gaze[0]);
+  const nlohmann::json fj = to_json(full.summary());
+  EXPECT_EQ(fj.at("diagnostics"), true);
+  EXPECT_TRUE(fj.contains("psnr_db") && fj.contains("flicker_bands"));
+  EXPECT_TRUE(quality_summary_from_json(fj).diagnostics);
 }
 
 }  // namespace

@@ -204,3 +204,10 @@ def test_tune_shards_merge(fv, tmp_path):
              metrics=False, out=str(tmp_path / "b"))
     with pytest.raises(fv.Error, match="a benchmark's results, but .* is a tune run's"):
         fv.merge([str(tmp_path / "t1"), str(tmp_path / "b")])
+
+
+def test_a_supersampled_reference_without_the_metrics_is_refused_naming_the_keywords(fv):
+    with pytest.raises(fv.Error, match="reference: the supersampled reference is what the image "
+                       "metrics judge against, and metrics turns them off"):
+        fv.bench(scene="cheap", techniques=["layered"], size=(48, 27), frames=1, warmup=0,
+                 metrics=False, reference="ssaa:2")

@@ -268,6 +268,9 @@ struct FlickerSummary {
 /// Quality of a sequence of test frames against their reference frames.
 struct QualitySummary {
   int frames = 0;            ///< frames compared
+  /// False when QualityOptions::diagnostics was off: only FovVideoVDP was
+  /// measured, `mean` and `flicker` hold nothing (to_json leaves them out).
+  bool diagnostics = true;
   int identical_frames = 0;  ///< frames identical to their reference (infinite PSNR)
   /// Every number of QualityReport, over the image and per band, averaged over
   /// the frames: the mean of the finite per-frame values, +inf when there were
