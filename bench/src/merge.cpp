@@ -5,6 +5,7 @@
 #include <set>
 
 #include "foveate/core/error.hpp"
+#include "shard_check.hpp"
 
 namespace foveate::bench {
 
@@ -149,7 +150,7 @@ BenchResult read_bench_results(const nlohmann::json& j, const std::string& where
 
 BenchResult merge_shards(const std::vector<BenchResult>& shards,
                          const std::vector<std::string>& names) {
-  if (shards.empty()) throw Error("merge: no shards given");
+  if (shards.empty()) throw Error("no shards given");
   const BenchResult& first = shards.front();
   const int count = first.options.shard.count;
   const auto settings_of = [](const BenchResult& r) {
@@ -175,13 +176,7 @@ BenchResult merge_shards(const std::vector<BenchResult>& shards,
                   std::to_string(count) + " given twice");
     }
   }
-  if (static_cast<int>(seen.size()) != count) {
-    std::string missing;
-    for (int k = 0; k < count; ++k) {
-      if (!seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k + 1);
-    }
-    throw Error("merge: shard(s) " + missing + " of " + std::to_string(count) + " missing");
-  }
+  detail::check_every_shard(seen, count, names[0]);
   BenchResult out = first;
   out.results.clear();
   out.techniques.clear();

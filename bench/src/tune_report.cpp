@@ -14,6 +14,7 @@
 #include "foveate/core/file.hpp"
 #include "foveate/techniques/palette.hpp"
 #include "report_common.hpp"
+#include "shard_check.hpp"
 
 namespace foveate::bench {
 
@@ -172,7 +173,7 @@ TuneResult read_tune_results(const nlohmann::json& j, const std::string& where) 
 
 TuneResult merge_tune_shards(const std::vector<TuneResult>& shards,
                              const std::vector<std::string>& names) {
-  if (shards.empty()) throw Error("merge: no shards given");
+  if (shards.empty()) throw Error("no shards given");
   const TuneResult& first = shards.front();
   const int count = first.options.shard.count;
   std::set<int> seen;
@@ -190,10 +191,7 @@ TuneResult merge_tune_shards(const std::vector<TuneResult>& shards,
                   std::to_string(count) + " given twice");
     }
   }
-  if (static_cast<int>(seen.size()) != count) {
-    throw Error("merge: " + std::to_string(count - static_cast<int>(seen.size())) + " of " +
-                std::to_string(count) + " shards missing");
-  }
+  detail::check_every_shard(seen, count, names[0]);
   TuneResult out = first;
   out.points.clear();
   for (const TuneResult& s : shards) {

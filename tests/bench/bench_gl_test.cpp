@@ -451,7 +451,9 @@ TEST(Bench, ShardsMergedEqualOneRun) {
   EXPECT_EQ(read_json(out + "/results.json")["shard"]["merged"].get<int>(), 2);
   std::filesystem::remove_all(out);
   // Refusals.
-  EXPECT_NE(error_of([&] { (void)merge_shards({shards[0]}, {names[0]}); }).find("missing"),
+  EXPECT_NE(error_of([&] {
+              (void)merge_shards({shards[0]}, {names[0]});
+            }).find("shard 2 of 2 is not given"),
             std::string::npos);
   EXPECT_NE(error_of([&] {
               (void)merge_shards({shards[0], shards[0]}, {"a", "b"});
@@ -734,8 +736,13 @@ TEST(Tune, ShardsMergedEqualTheGrid) {
     ASSERT_NE(it, merged.points.end());
     EXPECT_DOUBLE_EQ(it->jod, p.jod);
   }
-  EXPECT_NE(error_of([&] {
+  EXPECT_EQ(error_of([&] {
               (void)merge_tune_shards({shards[0], shards[1]}, {"a", "b"});
-            }).find("missing"),
+            }),
+            "a: one of 3 shards, and shard 3 of 3 is not given: every shard's results are "
+            "needed to join them");
+  EXPECT_NE(error_of([&] {
+              (void)merge_tune_shards({shards[1]}, {"b"});
+            }).find("shards 1, 3 of 3 are not given"),
             std::string::npos);
 }

@@ -65,7 +65,11 @@ rb=[(r[\"technique\"], r[\"shaded_pixels\"], r[\"quality\"][\"jod\"]) for r in b
 assert ra == rb, (ra, rb)
 " "$tmp/whole/results.json" "$tmp/m/results.json"'
 err=$("$F" merge "$tmp/s1" --out "$tmp/m2" 2>&1); rc=$?
-check "merge of one shard of two: exit 1, says a shard is missing" '[[ $rc -eq 1 && "$err" == *"missing"* ]]'
+check "merge of one shard of two: exit 1, names the shard given and the one missing" \
+  '[[ $rc -eq 1 && "$err" == *"s1/results.json: one of 2 shards, and shard 2 of 2 is not given"* ]]'
+err=$("$F" report "$tmp/s1" --out "$tmp/r2" 2>&1); rc=$?
+check "report of one shard of two: the same, without a merge command named" \
+  '[[ $rc -eq 1 && "$err" == *"shard 2 of 2 is not given"* && "$err" != *"merge:"* ]]'
 err=$("$F" merge "$tmp/s1" "$tmp/whole" --out "$tmp/m3" 2>&1); rc=$?
 check "merge of a shard and a whole run: exit 1, names the file" '[[ $rc -eq 1 && "$err" == *"whole"* ]]'
 err=$("$F" merge "$tmp/s1" "$tmp/t" --out "$tmp/m4" 2>&1); rc=$?

@@ -170,7 +170,7 @@ def test_shards_merged_equal_one_run(fv, tmp_path):
     assert (tmp_path / "m" / "report.html").exists()
     runs = lambda r: [(t["technique"], t["shaded_pixels"]) for t in r["results"]]
     assert runs(merged) == runs(whole)
-    with pytest.raises(fv.Error, match="missing"):
+    with pytest.raises(fv.Error, match="shard 2 of 2 is not given"):
         fv.merge([str(tmp_path / "s1")])
     with pytest.raises(fv.Error, match="shard: expected K/N"):
         fv.bench(**small, shard="3/2")
