@@ -453,7 +453,7 @@ TEST(Bench, ShardsMergedEqualOneRun) {
   // Refusals.
   EXPECT_NE(error_of([&] {
               (void)merge_shards({shards[0]}, {names[0]});
-            }).find("shard 2 of 2 is not given"),
+            }).find("shard 1 of 2 is not given"),
             std::string::npos);
   EXPECT_NE(error_of([&] {
               (void)merge_shards({shards[0], shards[0]}, {"a", "b"});
