@@ -182,8 +182,9 @@ RatesPlan make_rates_plan(const RatesArgs& a) {
   if (a.margin) bench::check_margin(*a.margin);
   p.margin = a.margin.value_or(kStaticRatesMargin);
   const AcuityModel acuity = p.judged.finer(p.margin);
-  p.gaze = a.gaze.empty() ? p.display.principal_point()
-                          : parse_point_on_image(a.gaze, p.display.width_px, p.display.height_px, "--gaze");
+  p.gaze = a.gaze.empty()
+               ? p.display.principal_point()
+               : parse_point_on_image(a.gaze, p.display.width_px, p.display.height_px, "--gaze");
   p.m = shading_rate_image(p.display, acuity, p.gaze, p.opt);
   p.bytes = p.m.encode(p.api);
   if (p.display.lens) {

@@ -267,7 +267,7 @@ struct FlickerSummary {
 
 /// Quality of a sequence of test frames against their reference frames.
 struct QualitySummary {
-  int frames = 0;            ///< frames compared
+  int frames = 0;  ///< frames compared
   /// False when QualityOptions::diagnostics was off: only FovVideoVDP was
   /// measured, `mean` and `flicker` hold nothing (to_json leaves them out).
   bool diagnostics = true;
