@@ -43,12 +43,11 @@ bench::ParamOverrides session_params(const SessionArgs& a,
     // A file for other techniques alone would change nothing: that is a
     // wrong file or a wrong --technique(s), not a run to make silently.
     if (!file.per_technique.empty() && out.per_technique.empty()) {
-      std::string in_file, run;
-      for (const auto& [technique, values] : file.per_technique)
-        in_file += (in_file.empty() ? "" : ", ") + technique;
-      for (const std::string& t : techniques) run += (run.empty() ? "" : ", ") + t;
-      throw Error("--params-file " + a.params_file + ": holds parameters for " + in_file +
-                  ", none for the techniques run (" + run + ")");
+      std::vector<std::string> in_file;
+      for (const auto& [technique, values] : file.per_technique) in_file.push_back(technique);
+      throw Error("--params-file " + a.params_file + ": holds parameters for " +
+                  join(in_file, ", ") + ", none for the techniques run (" + join(techniques, ", ") +
+                  ")");
     }
   }
   const bench::ParamOverrides given = parse_params(a.params);

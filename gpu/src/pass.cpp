@@ -73,9 +73,7 @@ PassState PassState::stencil_equal(GLint ref) {
 
 void RenderTarget::clear(float r, float g, float b, float a) const {
   open_write_masks();
-  const float rgba[4] = {r, g, b, a};
-  glClearNamedFramebufferfv(framebuffer(), GL_COLOR, 0, rgba);
-  if (has_depth_stencil()) glClearNamedFramebufferfi(framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  clear_attachments(r, g, b, a);
 }
 
 void RenderTarget::clear(float r, float g, float b, float a,
@@ -83,13 +81,17 @@ void RenderTarget::clear(float r, float g, float b, float a,
   const int x0 = std::clamp(region[0], 0, width_), y0 = std::clamp(region[1], 0, height_);
   const int x1 = std::clamp(region[2], x0, width_), y1 = std::clamp(region[3], y0, height_);
   if (x1 == x0 || y1 == y0) return;
-  open_write_masks();
+  open_write_masks();  // (which turns the scissor test off)
   glEnable(GL_SCISSOR_TEST);
   glScissor(x0, y0, x1 - x0, y1 - y0);
+  clear_attachments(r, g, b, a);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void RenderTarget::clear_attachments(float r, float g, float b, float a) const {
   const float rgba[4] = {r, g, b, a};
   glClearNamedFramebufferfv(framebuffer(), GL_COLOR, 0, rgba);
   if (has_depth_stencil()) glClearNamedFramebufferfi(framebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  glDisable(GL_SCISSOR_TEST);
 }
 
 void open_write_masks() {

@@ -10,11 +10,11 @@
 // channel leaves the mean of those two neighbours by more than u_smooth of
 // the texel's luminance (at least kDark): bilinear interpolation at twice
 // the spacing would have made the texels the coarser rate drops within that
-// share. A tile already shaded a
-// step coarser than the model asks (bit 6 of its class byte) is judged
-// against 4 u_smooth: on content of constant curvature the second difference
-// at twice the spacing is four times that at the spacing, so a tile
-// coarsened stays so while the content that coarsened it holds.
+// share. A tile already shaded a step coarser than the model asks (bit 6 of
+// its class byte) is judged against 4 u_smooth: on content of constant
+// curvature the second difference at twice the spacing is four times that
+// at the spacing, so a tile coarsened stays so while the content that
+// coarsened it holds.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r8ui, binding = 0) uniform writeonly uimage2D u_busy;
 uniform usampler2D u_classes;  // the frame's class per tile (bits 0-2), coarsened (bit 6)

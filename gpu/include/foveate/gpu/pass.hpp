@@ -51,6 +51,8 @@ class RenderTarget {
   explicit operator bool() const { return framebuffer() != 0 || (width_ > 0 && !owned_); }
 
  private:
+  /// Clears colour, depth and stencil under the current scissor state.
+  void clear_attachments(float r, float g, float b, float a) const;
   bool owned_ = false;
   GLuint wrapped_ = 0;
   int width_ = 0, height_ = 0;
