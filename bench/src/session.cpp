@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
+#include <set>
+#include <string>
 
 #include "foveate/bench/savings.hpp"
 #include "foveate/core/parse.hpp"
@@ -22,14 +25,16 @@ Session::Session(const SessionOptions& o, SessionCallbacks callbacks)
   make_context();
   // The scene's load warnings are the session's notices (so --quiet and
   // Python's warnings see them).
-  SceneOptions scene_options = o.scene_options;
-  if (callbacks_.notice && !scene_options.warning) {
-    scene_options.warning = [notice = callbacks_.notice](const std::string& text) {
-      notice({NoticeKind::Warning, {text, {}}});
-    };
+  scene_options_ = o.scene_options;
+  if (callbacks_.notice && !scene_options_.warning) {
+    scene_options_.warning =
+        [notice = callbacks_.notice,
+         said = std::make_shared<std::set<std::string>>()](const std::string& text) {
+          if (said->insert(text).second) notice({NoticeKind::Warning, {text, {}}});
+        };
   }
-  scene_ = load_scene(o.scene, scene_options);
-  if (o.stereo) right_scene_ = load_scene(o.scene, scene_options);
+  scene_ = load_scene(o.scene, scene_options_);
+  if (o.stereo) right_scene_ = load_scene(o.scene, scene_options_);
   make_frame_runners();
   watchdog_ = std::make_unique<FrameWatchdog>(o.frame_timeout_s, scene_->info().name,
                                               callbacks_.frame_timeout);
@@ -234,7 +239,7 @@ std::unique_ptr<SupersampledScene> Session::make_reference(int factor) const {
                                              {"reference", "stereo"}});
   }
   auto r = std::make_unique<SupersampledScene>();
-  r->scene = load_scene(options_.scene, options_.scene_options);
+  r->scene = load_scene(options_.scene, scene_options_);
   r->supersampled = for_field(
       "reference", [&] { return std::make_unique<SupersampledNative>(display_, factor); });
   return r;

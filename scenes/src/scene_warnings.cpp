@@ -2,31 +2,30 @@
 
 #include <cstdio>
 #include <mutex>
-#include <set>
 #include <utility>
 
 namespace foveate::detail {
 
 namespace {
-thread_local std::function<void(const std::string&)> t_warning_sink;
+thread_local ScopedSceneWarnings* t_scope = nullptr;
 }  // namespace
 
 ScopedSceneWarnings::ScopedSceneWarnings(std::function<void(const std::string&)> sink)
-    : previous_(std::exchange(t_warning_sink, std::move(sink))) {}
-ScopedSceneWarnings::~ScopedSceneWarnings() { t_warning_sink = std::move(previous_); }
+    : sink_(std::move(sink)), previous_(std::exchange(t_scope, this)) {}
+ScopedSceneWarnings::~ScopedSceneWarnings() { t_scope = previous_; }
 
 void warn_once(const std::string& message) {
+  if (t_scope && t_scope->sink_) {
+    if (t_scope->said_.insert(message).second) t_scope->sink_(message);
+    return;
+  }
   static std::mutex mutex;
   static std::set<std::string> said;
   {
-    std::lock_guard<std::mutex> lock(mutex);
+    const std::lock_guard<std::mutex> lock(mutex);
     if (!said.insert(message).second) return;
   }
-  if (t_warning_sink) {
-    t_warning_sink(message);
-  } else {
-    std::fprintf(stderr, "foveate: warning: %s\n", message.c_str());
-  }
+  std::fprintf(stderr, "foveate: warning: %s\n", message.c_str());
 }
 
 }  // namespace foveate::detail

@@ -106,3 +106,7 @@ def test_a_scenes_load_warning_is_a_python_warning(fv):
     with pytest.warns(UserWarning, match="samples iChannel1 but no image or buffer is bound"):
         r = fv.render(scene=str(shader), size=(64, 36))
     assert any("iChannel1" in n for n in r["notes"])
+    # Each render loads the scene again and says it again, once.
+    with pytest.warns(UserWarning, match="samples iChannel1"):
+        again = fv.render(scene=str(shader), size=(64, 36))
+    assert sum("iChannel1" in n for n in again["notes"]) == 1

@@ -135,6 +135,10 @@ class Session {
 
   SessionOptions options_;
   SessionCallbacks callbacks_;
+  /// options_.scene_options with the scene's load warnings sent to the
+  /// session's notices, each once per session however often it loads the
+  /// scene (a stereo pair's second eye, the supersampled reference).
+  SceneOptions scene_options_;
   mutable std::optional<double> largest_margin_;  ///< made techniques' (make is const)
   bool savings_noted_ = false;
   std::unique_ptr<gpu::Context> context_;

@@ -197,7 +197,8 @@ struct SceneOptions {
   ShadertoyDate date;
   /// Where load_scene's warnings go (a Shadertoy channel sampled but bound to
   /// nothing, an ignored directive, a mesh file's repaired faces), each
-  /// distinct one once per process; unset: "foveate: warning: ..." on stderr.
+  /// distinct one once per load; unset: "foveate: warning: ..." on stderr,
+  /// each distinct one once per process.
   std::function<void(const std::string&)> warning;
 };
 
