@@ -128,8 +128,8 @@ void Session::announce() const {
 }
 
 void Session::note_savings() {
-  if (savings_noted_ || !largest_margin_) return;
-  savings_noted_ = true;
+  if (!largest_margin_ || (savings_checked_ && *largest_margin_ <= *savings_checked_)) return;
+  savings_checked_ = largest_margin_;
   if (!callbacks_.notice) return;
   const SavingsCheck savings = check_savings(display_, options_.acuity, *largest_margin_);
   if (savings.nothing_to_save) callbacks_.notice({NoticeKind::Note, savings.note});

@@ -235,6 +235,34 @@ TEST(Session, ErrorsNameTheField) {
   EXPECT_EQ(s.take_gl_errors().size(), 1u);
 }
 
+// The little-to-save note is for the finest plan rendered so far: at 640x360
+// vrs's (margin 1, bound 1.78x) has something to save, layered's (1.5,
+// 1.15x) little, said when the first frame after making layered is
+// rendered (the viewer's switch), once.
+TEST(Session, TheSavingsNoteFollowsTheFinestPlanRendered) {
+  SessionOptions o;
+  o.scene = "cheap";
+  o.size = {640, 360};
+  std::vector<std::string> notes;
+  SessionCallbacks callbacks;
+  callbacks.notice = [&](const Notice& n) {
+    if (n.kind == NoticeKind::Note) notes.push_back(n.text.render());
+  };
+  Session s(o, callbacks);
+  const GazeState gaze{{320.0, 180.0}};
+  SessionTechnique vrs = s.make("vrs", {});
+  s.render(vrs, 0, gaze);
+  EXPECT_TRUE(notes.empty()) << notes.front();
+  SessionTechnique layered = s.make("layered", {});
+  s.render(layered, 1, gaze);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("pixel bound is 1.15x at planning margin 1.5"), std::string::npos)
+      << notes[0];
+  s.render(layered, 2, gaze);
+  s.render(vrs, 3, gaze);
+  EXPECT_EQ(notes.size(), 1u);
+}
+
 // A frame past the frame timeout: the front end is told at the deadline
 // (the command line ends the process there); when its callback returns, the
 // run stops with an error naming the field once the frame has finished.

@@ -95,8 +95,10 @@ class Session {
                         std::optional<AcuityModel> acuity = std::nullopt) const;
   /// The largest planning margin of the techniques made so far (the finest
   /// plan, with its parameters and the session's margin applied); unset
-  /// while none that plans by a margin was made. The savings note of the
-  /// first frame rendered (bench::check_savings) is for this plan.
+  /// while none that plans by a margin was made. The savings note
+  /// (bench::check_savings) is for this plan: checked at the first frame
+  /// rendered, and again at the first frame after a technique with a finer
+  /// plan was made (the viewer's switch to it).
   [[nodiscard]] std::optional<double> largest_plan_margin() const { return largest_margin_; }
   /// Renders frame `frame` of the fixed clock (or `input`) for the combined gaze.
   SessionFrame render(SessionTechnique& technique, int frame, const GazeState& gaze);
@@ -140,7 +142,7 @@ class Session {
   /// scene (a stereo pair's second eye, the supersampled reference).
   SceneOptions scene_options_;
   mutable std::optional<double> largest_margin_;  ///< made techniques' (make is const)
-  bool savings_noted_ = false;
+  std::optional<double> savings_checked_;         ///< the margin note_savings last checked
   std::unique_ptr<gpu::Context> context_;
   gpu::Window* window_ = nullptr;
   std::unique_ptr<Scene> scene_;
