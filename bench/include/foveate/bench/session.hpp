@@ -131,8 +131,9 @@ class Session {
   void make_frame_runners();
   void make_tracker();
   void announce() const;
-  /// The savings note, once, before the first frame: for the techniques
-  /// made, whose margins only then are known.
+  /// The savings note before a frame, for the finest plan made (margins are
+  /// known only once techniques are made): checked at the first frame, and
+  /// again only when a finer plan was made since.
   void note_savings();
 
   SessionOptions options_;
