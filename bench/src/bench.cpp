@@ -211,7 +211,16 @@ BenchResult join_groups(std::vector<BenchResult> parts) {
   for (const TechniqueResult& r : out.results) out.techniques.push_back(r.technique);
   out.memory_groups = static_cast<int>(parts.size());
   out.options.group = {};
+  // The machine around the whole benchmark, from the first group's start.
+  finish_environment(out.environment);
   return out;
+}
+
+// Once per benchmark, however many groups judged it.
+BenchResult said_if_busy(BenchResult r, const BenchCallbacks& callbacks) {
+  if (const auto busy = busy_machine(r.environment); busy && callbacks.session.notice)
+    callbacks.session.notice({NoticeKind::Warning, {*busy, {}}});
+  return r;
 }
 
 }  // namespace
@@ -221,7 +230,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbac
   const double limit =
       options.memory_limit_bytes > 0 ? options.memory_limit_bytes : 0.7 * available_memory_bytes();
   const int groups = options.group.count > 1 ? 1 : judging_groups(options, limit);
-  if (groups == 1) return BenchRun(options, callbacks).run();
+  if (groups == 1) return said_if_busy(BenchRun(options, callbacks).run(), callbacks);
   if (callbacks.session.notice) {
     callbacks.session.notice(
         {NoticeKind::Note,
@@ -254,7 +263,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchCallbacks& callbac
     parts.push_back(BenchRun(o, each).run());
   }
   if (callbacks.finish) callbacks.finish();
-  return join_groups(std::move(parts));
+  return said_if_busy(join_groups(std::move(parts)), callbacks);
 }
 
 BenchResult BenchRun::run() {

@@ -3,6 +3,7 @@
 // written as one beside the page); images as PNG; numbers with a few
 // significant digits; opens offline.
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 #include "foveate/bench/report.hpp"
@@ -75,7 +76,16 @@ std::string run_intro(const BenchResult& b) {
     << escape_html(env.version) << ", " << escape_html(env.date_utc) << ", CPU "
     << escape_html(env.cpu_model) << " (" << env.cores << " cores), load "
     << cell(env.load_start[0], 2) << " (1 min) at the start, " << cell(env.load_end[0], 2)
-    << " at the end.</p>\n";
+    << " at the end"
+    << (env.others_cpu_share >= 0
+            ? "; other processes used " + format_percent(env.others_cpu_share, 2) +
+                  " of the CPU during it"
+            : std::string())
+    << ".</p>\n";
+  if (auto busy = busy_machine(env)) {
+    busy->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(busy->front())));
+    h << "<p class=warn>" << escape_html(*busy) << ".</p>\n";
+  }
   for (const auto& [name, value] : env.variables)
     h << "<p class=note>Run with " << escape_html(name) << "=" << escape_html(value) << ".</p>\n";
   for (const std::string& s : b.skipped)

@@ -89,6 +89,8 @@ nlohmann::json environment_json(const RunEnvironment& e) {
           {"cpu_cores", e.cores},
           {"load_average_start", e.load_start},
           {"load_average_end", e.load_end},
+          {"others_cpu_share",
+           e.others_cpu_share >= 0 ? nlohmann::json(e.others_cpu_share) : nlohmann::json()},
           {"variables", e.variables}};
 }
 

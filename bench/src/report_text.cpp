@@ -111,6 +111,7 @@ std::string bench_markdown(const BenchResult& b) {
   const std::vector<std::string> notes = mark_notes(b);
   if (!notes.empty()) s << '\n';
   for (const std::string& n : notes) s << n << '\n';
+  if (const auto busy = busy_machine(b.environment)) s << "\nWarning: " << *busy << ".\n";
   s << eyes_markdown(b) << passes_markdown(b);
   return s.str();
 }

@@ -5,9 +5,25 @@
 // the environment variables that choose what runs.
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace foveate::bench {
+
+/// CPU time, in seconds, of the whole machine (busy and in all) and of this
+/// process (every thread: llvmpipe's rasterizers are threads of it); -1
+/// where unknown.
+struct CpuSample {
+  double busy_s = -1, total_s = -1, own_s = -1;
+};
+
+/// The machine's and this process's CPU time now (/proc/stat, getrusage).
+CpuSample sample_cpu();
+/// The share (0..1) of the machine's CPU time between `a` and `b` that went
+/// to other processes (or to the hypervisor: steal); -1 where unknown or
+/// where the interval is under 4 s of the machine's CPU time (2 s on 2
+/// cores), too short for the kernel's ticks to tell.
+double others_cpu_share(const CpuSample& a, const CpuSample& b);
 
 struct RunEnvironment {
   std::string command;     ///< what started the run (the full command line)
@@ -18,6 +34,10 @@ struct RunEnvironment {
   std::string cpu_model;   ///< /proc/cpuinfo's model name (empty when unknown)
   unsigned cores = 0;      ///< hardware threads
   std::array<double, 3> load_start{}, load_end{};  ///< 1, 5 and 15 minute load averages
+  /// Share of the machine's CPU time that other processes used while the
+  /// run measured (others_cpu_share); -1 where unknown.
+  double others_cpu_share = -1;
+  CpuSample cpu_start;  ///< what capture_environment sampled, for finish_environment
   /// Those of kRunVariables that were set, by name: the same build on the
   /// same renderer runs other passes under them.
   std::map<std::string, std::string> variables;
@@ -30,8 +50,15 @@ inline constexpr const char* kRunVariables[] = {"FOVEATE_EGL", "FOVEATE_EDGES"};
 
 /// Captures everything but load_end (needs a current GL context).
 RunEnvironment capture_environment(const std::string& command);
-/// Records the load average at the end of the run.
+/// Records the load average at the end of the run and the share of the CPU
+/// that other processes used since capture_environment.
 void finish_environment(RunEnvironment& env);
+/// Where other work took a fifth or more of the machine's CPU time during
+/// the run, what to tell the user: it inflates frame times (four to six
+/// times with twelve busy processes on 2 cores under llvmpipe,
+/// docs/performance.md) and their noise. Ratios within the run still
+/// compare; absolute times do not. Nothing when the share is unknown.
+std::optional<std::string> busy_machine(const RunEnvironment& env);
 /// Throws an Error naming `name` unless `env` is of the same foveate and the
 /// same kRunVariables as `first` (named `first_name`): shards of one run.
 void check_same_build(const RunEnvironment& env, const std::string& name,
