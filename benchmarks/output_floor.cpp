@@ -7,7 +7,9 @@
 //   foveate_output_floor [WIDTH HEIGHT [SCALE [REPEATS]]]   (default 1920 1080 3 15)
 //
 // Prints a Markdown table: median ms of each method over REPEATS runs, each
-// run bracketed by glFinish, after two unmeasured runs.
+// run bracketed by glFinish, after two unmeasured runs, and the share of the
+// CPU that other processes took meanwhile (a table of 2026-11-23 measured
+// under a load of 13-19 on two cores read four to six times too slow).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -16,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "foveate/bench/environment.hpp"
 #include "foveate/core/error.hpp"
 #include "foveate/gpu/context.hpp"
 #include "foveate/gpu/pass.hpp"
@@ -225,14 +228,24 @@ int main(int argc, char** argv) {
   const int repeats = argc > 4 ? positive(argv[4], "REPEATS") : 15;
   try {
     auto context = gpu::create_headless_context({});
+    const bench::CpuSample start = bench::sample_cpu();
     OutputFloor floor(W, H, scale);
     std::vector<Row> rows = floor.passes(repeats);
     for (Row& r : floor.copies(repeats)) rows.push_back(r);
+    const double others = bench::others_cpu_share(start, bench::sample_cpu());
     const auto* renderer = glGetString(GL_RENDERER);
     std::printf(
-        "Output floor at %dx%d from a %dx%d layer on %s (median of %d, glFinish-bracketed)\n\n", W,
-        H, floor.layer_width(), floor.layer_height(),
-        renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats);
+        "Output floor at %dx%d from a %dx%d layer on %s (median of %d, glFinish-bracketed; other "
+        "processes took %s of the CPU meanwhile)\n\n",
+        W, H, floor.layer_width(), floor.layer_height(),
+        renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats,
+        others < 0 ? "an unknown share" : (std::to_string(int(100 * others + 0.5)) + " %").c_str());
+    if (others >= 0.2) {
+      std::fprintf(stderr,
+                   "foveate_output_floor: warning: other processes took %d %% of the CPU: these "
+                   "times are inflated; rerun on a quiet machine\n",
+                   int(100 * others + 0.5));
+    }
     std::printf("| method | ms |\n|---|---:|\n");
     for (const Row& r : rows) std::printf("| %s | %.1f |\n", r.method, r.ms);
   } catch (const Error& e) {
