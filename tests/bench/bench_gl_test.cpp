@@ -508,6 +508,18 @@ TEST(Bench, ShardsMergedEqualOneRun) {
   write_bench_report(merged, out);
   EXPECT_EQ(read_json(out + "/results.json")["shard"]["merged"].get<int>(), 2);
   std::filesystem::remove_all(out);
+  // One shard measured beside other work (its share read back from its
+  // results.json): the merged result carries the largest share, so its
+  // reports warn.
+  std::vector<BenchResult> busy = shards;
+  busy[1].environment.others_cpu_share = 0.5;
+  EXPECT_EQ(merge_shards(busy, names).environment.others_cpu_share, 0.5);
+  const std::string busy_dir = fresh_dir("foveate-bench-shard-busy");
+  write_bench_report(busy[1], busy_dir);
+  EXPECT_EQ(read_bench_results(read_json(busy_dir + "/results.json"), busy_dir)
+                .environment.others_cpu_share,
+            0.5);
+  std::filesystem::remove_all(busy_dir);
   // Refusals.
   EXPECT_NE(error_of([&] {
               (void)merge_shards({shards[0]}, {names[0]});
