@@ -34,8 +34,8 @@ struct RunEnvironment {
   std::string cpu_model;   ///< /proc/cpuinfo's model name (empty when unknown)
   unsigned cores = 0;      ///< hardware threads
   std::array<double, 3> load_start{}, load_end{};  ///< 1, 5 and 15 minute load averages
-  /// Share of the machine's CPU time that other processes used while the
-  /// run measured (others_cpu_share); -1 where unknown.
+  /// Share of the machine's CPU time that other processes used during the
+  /// run (others_cpu_share); -1 where unknown.
   double others_cpu_share = -1;
   CpuSample cpu_start;  ///< what capture_environment sampled, for finish_environment
   /// Those of kRunVariables that were set, by name: the same build on the
