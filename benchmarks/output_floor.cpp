@@ -20,6 +20,7 @@
 
 #include "foveate/bench/environment.hpp"
 #include "foveate/core/error.hpp"
+#include "foveate/core/format.hpp"
 #include "foveate/gpu/context.hpp"
 #include "foveate/gpu/pass.hpp"
 #include "foveate/gpu/shader.hpp"
@@ -233,18 +234,22 @@ int main(int argc, char** argv) {
     std::vector<Row> rows = floor.passes(repeats);
     for (Row& r : floor.copies(repeats)) rows.push_back(r);
     const double others = bench::others_cpu_share(start, bench::sample_cpu());
+    // A run under 2 s is too short for the share (others_cpu_share): the
+    // load average then says what else ran.
+    const std::string share = others < 0 ? "an unknown share" : format_percent(others, 2);
+    double load = -1;
+    if (getloadavg(&load, 1) != 1) load = -1;
     const auto* renderer = glGetString(GL_RENDERER);
     std::printf(
         "Output floor at %dx%d from a %dx%d layer on %s (median of %d, glFinish-bracketed; other "
-        "processes took %s of the CPU meanwhile)\n\n",
+        "processes took %s of the CPU meanwhile; load average %.2f)\n\n",
         W, H, floor.layer_width(), floor.layer_height(),
-        renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats,
-        others < 0 ? "an unknown share" : (std::to_string(int(100 * others + 0.5)) + " %").c_str());
-    if (others >= 0.2) {
+        renderer ? reinterpret_cast<const char*>(renderer) : "?", repeats, share.c_str(), load);
+    if (others >= bench::kBusyCpuShare) {
       std::fprintf(stderr,
-                   "foveate_output_floor: warning: other processes took %d %% of the CPU: these "
+                   "foveate_output_floor: warning: other processes took %s of the CPU: these "
                    "times are inflated; rerun on a quiet machine\n",
-                   int(100 * others + 0.5));
+                   share.c_str());
     }
     std::printf("| method | ms |\n|---|---:|\n");
     for (const Row& r : rows) std::printf("| %s | %.1f |\n", r.method, r.ms);

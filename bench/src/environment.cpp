@@ -108,7 +108,7 @@ void finish_environment(RunEnvironment& env) {
 }
 
 std::optional<std::string> busy_machine(const RunEnvironment& env) {
-  if (env.others_cpu_share < 0.2) return std::nullopt;
+  if (env.others_cpu_share < kBusyCpuShare) return std::nullopt;
   return "other processes used " + format_percent(env.others_cpu_share, 2) +
          " of the CPU during this run (load average " + format_significant(env.load_start[0]) +
          " at its start, " + std::to_string(env.cores) +

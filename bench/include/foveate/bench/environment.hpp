@@ -53,7 +53,10 @@ RunEnvironment capture_environment(const std::string& command);
 /// Records the load average at the end of the run and the share of the CPU
 /// that other processes used since capture_environment.
 void finish_environment(RunEnvironment& env);
-/// Where other work took a fifth or more of the machine's CPU time during
+/// The share of the CPU taken by other work from which a run's times are
+/// called inflated (busy_machine).
+inline constexpr double kBusyCpuShare = 0.2;
+/// Where other work took kBusyCpuShare or more of the machine's CPU time during
 /// the run, what to tell the user: it inflates frame times (four to six
 /// times with twelve busy processes on 2 cores under llvmpipe,
 /// docs/performance.md) and their noise. Ratios within the run still
