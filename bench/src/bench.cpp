@@ -311,7 +311,16 @@ BenchResult BenchRun::run() {
   const int steps = static_cast<int>(runs_.size()) * (options_.frames + out_.warmup) +
                     judged_runs * options_.frames;
   if (callbacks_.start) callbacks_.start(steps, judged_runs * options_.frames);
-  if (options_.passes) profiler_.emplace();
+  // On a renderer without GPU timers (llvmpipe) every measured frame runs
+  // pass by pass, glFinish around each, with or without --passes: pipelined,
+  // a frame's time depended on the technique rendered before it (on guenter
+  // at 1080p native took about 300 ms after a frame of layered and 215 after
+  // its own; docs/performance.md), so the shuffled order decided part of
+  // every speedup. With GPU timers the profiler runs only for --passes.
+  const bool pass_by_pass =
+      gpu::PassProfiler::clock_for_current_renderer() == gpu::PassProfiler::Clock::Finish;
+  if (options_.passes || pass_by_pass) profiler_.emplace();
+  out_.environment.pass_by_pass = pass_by_pass;
   warm_up();
   orders_ = interleaved_orders(runs_.size(), options_.frames);
   for (int k = 0; k < options_.frames; ++k) measure(k);

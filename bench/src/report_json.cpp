@@ -91,6 +91,7 @@ nlohmann::json environment_json(const RunEnvironment& e) {
           {"load_average_end", e.load_end},
           {"others_cpu_share",
            e.others_cpu_share >= 0 ? nlohmann::json(e.others_cpu_share) : nlohmann::json()},
+          {"pass_by_pass", e.pass_by_pass},
           {"variables", e.variables}};
 }
 

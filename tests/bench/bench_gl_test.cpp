@@ -27,6 +27,7 @@
 #include "foveate/bench/tune.hpp"
 #include "foveate/gpu/frame.hpp"
 #include "foveate/gpu/gl.hpp"
+#include "foveate/gpu/profiler.hpp"
 #include "native_copy.hpp"
 
 using namespace foveate;
@@ -321,6 +322,71 @@ TEST(Bench, SettleRunsWarmUpWithoutBeingMeasured) {
   settled.settle_runs = {{"layered", {{"no_such", 1}}, ""}};
   EXPECT_NE(error_of([&] { validate(settled); }).find("settle_runs[0]: layered has no parameter"),
             std::string::npos);
+}
+
+namespace {
+
+// Native, noting for each frame it renders (warm-up and measured) whether
+// the frame runs under a pass profiler that waits for every pass.
+class PassProbe final : public Technique {
+ public:
+  static inline std::vector<bool> pass_by_pass;
+  PassProbe(const TechniqueConfig& c, const ParamValues&) : native_(make_technique("native", c)) {}
+  FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
+                    const gpu::RenderTarget& target) override {
+    const gpu::PassProfiler* p = gpu::PassProfiler::current();
+    pass_by_pass.push_back(p && p->clock() == gpu::PassProfiler::Clock::Finish);
+    return native_->render(scene, frame, gaze, target);
+  }
+  std::vector<OverlayShape> overlay(const GazeState&) const override { return {}; }
+
+ private:
+  std::unique_ptr<Technique> native_;
+};
+
+void register_pass_probe() {
+  for (const TechniqueInfo& t : techniques()) {
+    if (t.name == "test-pass-probe") return;
+  }
+  TechniqueInfo t;
+  t.name = "test-pass-probe";
+  t.summary = "native, noting whether each frame runs pass by pass";
+  t.source = "foveate's tests";
+  t.make = construct<PassProbe>();
+  register_technique(std::move(t));
+}
+
+}  // namespace
+
+// On a renderer without GPU timers (llvmpipe) every frame, warm-up included,
+// runs pass by pass with or without --passes: pipelined, a frame's time
+// depended on the technique rendered before it. With GPU timers nothing
+// waits unless --passes asks for the timestamps (and even then no frame
+// waits for its passes).
+TEST(Bench, SoftwareRenderersRunEveryFramePassByPass) {
+  register_pass_probe();
+  BenchOptions o = tiny();
+  o.techniques = std::vector<std::string>{"native", "test-pass-probe"};
+  o.image_metrics = false;
+  o.frames = 2;
+  o.warmup = 1;
+  for (bool passes : {false, true}) {
+    SCOPED_TRACE(passes ? "--passes" : "no --passes");
+    o.passes = passes;
+    PassProbe::pass_by_pass.clear();
+    const BenchResult r = run(o);
+    const bool software = !gpu::FrameTimer::gpu_timer_meaningful(r.renderer);
+    EXPECT_EQ(r.environment.pass_by_pass, software);
+    EXPECT_EQ(PassProbe::pass_by_pass,
+              std::vector<bool>(static_cast<size_t>(r.warmup + o.frames), software));
+    EXPECT_EQ(r.results[1].passes.empty(), !passes);
+    const std::string out = fresh_dir("foveate-bench-pass-by-pass");
+    write_bench_report(r, out);
+    const nlohmann::json j = read_json(out + "/results.json");
+    EXPECT_EQ(j["environment"]["pass_by_pass"].get<bool>(), software);
+    EXPECT_EQ(read_bench_results(j, out).environment.pass_by_pass, software);
+    std::filesystem::remove_all(out);
+  }
 }
 
 // Every pass a technique runs is timed, the rest of the frame is "other",
