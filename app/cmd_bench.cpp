@@ -137,7 +137,8 @@ void add_common(CLI::App* sub, BenchArgs& a) {
   sub->add_flag("--passes", a.passes,
                 "Time every pass (G-buffer, shading, temporal, composite, ...) and report where "
                 "each technique's frame goes: GPU timestamp queries, or on software renderers "
-                "glFinish around each pass (there every frame runs pass by pass, timed or not)");
+                "glFinish around each pass (there every measured frame runs pass by pass, timed or "
+                "not)");
   CLI::Option* video = sub->add_option(
       "--video", a.video,
       "Also write the measured frames as a video (e.g. bench.mp4): the techniques tiled left to "

@@ -81,10 +81,11 @@ std::string run_intro(const BenchResult& b) {
             ? "; other processes used " + format_percent(env.others_cpu_share, 2) +
                   " of the CPU during it"
             : std::string())
-    << (env.pass_by_pass ? "; every frame ran pass by pass (glFinish around each pass), as a "
-                           "software renderer's pipelined frames depend on the technique before "
-                           "them"
-                         : "")
+    << (env.pass_by_pass
+            ? "; every measured frame ran pass by pass (glFinish around each pass), as a "
+              "software renderer's pipelined frames depend on the technique before "
+              "them"
+            : "")
     << ".</p>\n";
   if (auto busy = busy_machine(env)) {
     busy->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(busy->front())));

@@ -37,7 +37,8 @@ struct RunEnvironment {
   /// Share of the machine's CPU time that other processes used during the
   /// run (others_cpu_share); -1 where unknown.
   double others_cpu_share = -1;
-  /// Whether every frame ran pass by pass, glFinish around each pass: on a
+  /// Whether every measured frame (and the last warm-up frame) ran pass by
+  /// pass, glFinish around each pass: on a
   /// renderer without GPU timers (llvmpipe), where a pipelined frame's time
   /// depends on the technique rendered before it (docs/performance.md).
   bool pass_by_pass = false;
