@@ -360,9 +360,8 @@ void register_pass_probe() {
 
 // On a renderer without GPU timers (llvmpipe) every measured frame and the
 // last warm-up frame run pass by pass with or without --passes: pipelined, a
-// frame's time depended on the technique rendered before it. With GPU timers nothing
-// waits unless --passes asks for the timestamps (and even then no frame
-// waits for its passes).
+// frame's time depended on the technique rendered before it. With GPU timers
+// no frame waits for its passes, --passes or not.
 TEST(Bench, SoftwareRenderersRunEveryFramePassByPass) {
   register_pass_probe();
   BenchOptions o = tiny();

@@ -38,9 +38,9 @@ struct RunEnvironment {
   /// run (others_cpu_share); -1 where unknown.
   double others_cpu_share = -1;
   /// Whether every measured frame (and the last warm-up frame) ran pass by
-  /// pass, glFinish around each pass: on a
-  /// renderer without GPU timers (llvmpipe), where a pipelined frame's time
-  /// depends on the technique rendered before it (docs/performance.md).
+  /// pass, glFinish around each pass: on a renderer without GPU timers
+  /// (llvmpipe), where a pipelined frame's time depends on the technique
+  /// rendered before it (docs/performance.md).
   bool pass_by_pass = false;
   CpuSample cpu_start;  ///< what capture_environment sampled, for finish_environment
   /// Those of kRunVariables that were set, by name: the same build on the
