@@ -362,7 +362,7 @@ void register_pass_probe() {
 // last warm-up frame run pass by pass with or without --passes: pipelined, a
 // frame's time depended on the technique rendered before it. With GPU timers
 // no frame waits for its passes, --passes or not.
-TEST(Bench, SoftwareRenderersRunEveryFramePassByPass) {
+TEST(Bench, SoftwareRenderersRunMeasuredFramesPassByPass) {
   register_pass_probe();
   BenchOptions o = tiny();
   o.techniques = std::vector<std::string>{"native", "test-pass-probe"};
