@@ -39,6 +39,10 @@ def test_a_tiny_bench_returns_native_and_a_technique(fv, tmp_path):
     assert back["results"][1]["median_ms"] == pytest.approx(layered["median_ms"])
     with open(tmp_path / "results.json") as f:
         assert json.load(f)["command"] == "foveate.bench (Python)"
+    # Timed pass by pass where the renderer has no GPU timers (llvmpipe).
+    assert isinstance(r["environment"]["pass_by_pass"], bool)
+    if "llvmpipe" in r["environment"]["renderer"]:
+        assert r["environment"]["pass_by_pass"]
     assert (tmp_path / "report.html").stat().st_size > 0
 
 
