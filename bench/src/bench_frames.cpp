@@ -1,7 +1,8 @@
 // The measured frames of a benchmark: every run renders frame k before any
 // renders k + 1, in an order shuffled anew for every frame
-// (interleaved_orders); images are read back, judged and encoded outside the
-// timed region.
+// (interleaved_orders). Where every frame is judged or encoded, the timed
+// pass reads nothing back and an image pass renders the frames again to read
+// them; otherwise the last frame's images are read between its timed renders.
 #include <cmath>
 
 #include "bench_run.hpp"
@@ -25,31 +26,45 @@ Image mirrored(const Image& in) {
 
 }  // namespace
 
-void BenchRun::measure(int k) {
+GazeState BenchRun::gaze_at(int frame) {
+  const auto f = static_cast<size_t>(frame);
+  if (f < gazes_.size()) return gazes_[f];
+  gazes_.push_back(session_.gaze().at(session_.frame_runner().frame_input(frame).time_s));
+  // A gaze off the image or in the filter's fallback makes every technique
+  // run its fallback: the frame is reported, not silently averaged in.
+  const int k = frame - out_.warmup;
+  if (k >= 0 && (session_.gaze().last().fallback || session_.gaze().last_off_image()))
+    out_.fallback_frames.push_back(k);
+  return gazes_.back();
+}
+
+BenchRun::Reference BenchRun::reference_frame(int frame) {
+  // The image every run is judged against: native (read in the frame's
+  // loop), or the supersampled reference (untimed, rendered from a scene of
+  // its own).
+  Reference reference;
+  if (!reference_) return reference;
+  const int n = options_.reference;
+  ReferenceFrames* cache = options_.reference_frames.get();
+  if (cache && cache->frames.count(frame)) {
+    reference.out = cache->frames.at(frame);
+    return reference;
+  }
+  reference.out = session_.watchdog().run(
+      "frame " + std::to_string(frame) + " of the ssaa:" + std::to_string(n) + " reference",
+      [&] { return reference_->render(session_.frame_runner().frame_input(frame)); },
+      double(n) * n);
+  if (cache) cache->frames[frame] = reference.out;
+  return reference;
+}
+
+void BenchRun::measure(int k, bool judged) {
   const std::vector<size_t>& order = orders_[static_cast<size_t>(k)];
   const int frame = out_.warmup + k;
   const bool last = k + 1 == options_.frames;
-  const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(frame).time_s);
-  // A gaze off the image or in the filter's fallback makes every technique
-  // run its fallback: the frame is reported, not silently averaged in.
-  if (session_.gaze().last().fallback || session_.gaze().last_off_image())
-    out_.fallback_frames.push_back(k);
-  // The image every run is judged against: native, or the supersampled
-  // reference (untimed, rendered from a scene of its own).
+  const GazeState g = gaze_at(frame);
   Reference reference;
-  if (reference_) {
-    const int n = options_.reference;
-    ReferenceFrames* cache = options_.reference_frames.get();
-    if (cache && cache->frames.count(frame)) {
-      reference.out = cache->frames.at(frame);
-    } else {
-      reference.out = session_.watchdog().run(
-          "frame " + std::to_string(frame) + " of the ssaa:" + std::to_string(n) + " reference",
-          [&] { return reference_->render(session_.frame_runner().frame_input(frame)); },
-          double(n) * n);
-      if (cache) cache->frames[frame] = reference.out;
-    }
-  }
+  if (judged) reference = reference_frame(frame);
   std::vector<std::pair<size_t, Images>> images;
   for (size_t i : order) {
     Run& r = runs_[i];
@@ -62,13 +77,38 @@ void BenchRun::measure(int k) {
           return timer_.stop();
         });
     record(r, stats, ms);
-    if (options_.image_metrics || last || video_) {
+    if (judged && (options_.image_metrics || last || video_)) {
       Images img = read_images();
       if (i == 0 && !reference_) reference = {img.out, img.eyes};
       images.emplace_back(i, std::move(img));
     }
     step(r.technique + (options_.sweep.empty() ? "" : " @" + format_fixed(r.sweep_value, 4)));
   }
+  if (judged) finish_frame(k, images, reference, g);
+}
+
+void BenchRun::render_images(int k) {
+  const int frame = out_.warmup + k;
+  const GazeState g = gaze_at(frame);
+  Reference reference = reference_frame(frame);
+  std::vector<std::pair<size_t, Images>> images;
+  // The timed pass's order: no technique reads the shared output before
+  // drawing it, but nothing here need rely on that.
+  for (size_t i : orders_[static_cast<size_t>(k)]) {
+    Run& r = runs_[i];
+    session_.watchdog().run("frame " + std::to_string(frame) + " (" + r.technique + ", images)",
+                            [&] { session_.render(r.impl, frame, g); });
+    Images img = read_images();
+    if (i == 0 && !reference_) reference = {img.out, img.eyes};
+    images.emplace_back(i, std::move(img));
+    step("images " + r.technique);
+  }
+  finish_frame(k, images, reference, g);
+}
+
+void BenchRun::finish_frame(int k, std::vector<std::pair<size_t, Images>>& images,
+                            const Reference& reference, const GazeState& g) {
+  const bool last = k + 1 == options_.frames;
   if (video_) write_video_frame(images, g);
   for (auto& [i, img] : images) judge(i, img, reference, g, last);
   if (last) {

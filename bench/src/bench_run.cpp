@@ -91,6 +91,7 @@ void BenchRun::add_run(const std::string& technique, double value, bool swept, i
     params.per_technique[technique][options_.sweep.param] = value;
   }
   r.impl = session_.make(technique, params, r.acuity);
+  r.params = params;
   if (!measured) {
     // Another shard's run, or one made only to settle (settle_runs): only
     // how long it needs to settle, so that every benchmark of the campaign
@@ -203,25 +204,35 @@ void BenchRun::open_video() {
   });
 }
 
-void BenchRun::warm_up() {
+void BenchRun::warm_up(bool timed) {
   // Compile shaders, allocate targets, start every cadence. No reset after
   // it: the measured frames continue from the techniques' steady state, as
   // they would in an application.
   for (int k = 0; k < out_.warmup; ++k) {
-    const GazeState g = session_.gaze().at(session_.frame_runner().frame_input(k).time_s);
+    const GazeState g = gaze_at(k);
     for (Run& r : runs_) {
       // On llvmpipe the last warm-up frame runs as the measured ones do,
       // pass by pass: after a pipelined frame the first measured one took
       // 90 ms longer. The earlier ones stay pipelined: with every warm-up
       // frame pass by pass, the first three or four measured frames of every
       // technique took 100 ms longer (docs/performance.md).
-      const bool by_pass = profiler_ && k + 1 == out_.warmup;
+      const bool by_pass = timed && profiler_ && k + 1 == out_.warmup;
       if (by_pass) profiler_->begin_frame();
       session_.watchdog().run("warm-up frame " + std::to_string(k) + " (" + r.technique + ")",
                               [&] { session_.render(r.impl, k, g); });
       if (by_pass) profiler_->end_frame();
-      step("warm-up " + r.technique);
+      step((timed ? "warm-up " : "images warm-up ") + r.technique);
     }
+  }
+}
+
+void BenchRun::remake_runs() {
+  // Each technique's history, cadences and adaptive state start again, so
+  // that the image pass renders the frames the timed pass did. The old one
+  // is freed first: two of every technique would double the memory held.
+  for (Run& r : runs_) {
+    r.impl = {};
+    r.impl = session_.make(r.technique, r.params, r.acuity);
   }
 }
 

@@ -28,6 +28,7 @@ class BenchRun {
     std::string technique;
     double sweep_value = 0;
     AcuityModel acuity;
+    ParamOverrides params;  ///< what it was made with, to make it again
     SessionTechnique impl;
     TechniqueResult result;
     /// Against the reference: the one view, or (stereo) both eyes' frames,
@@ -52,8 +53,23 @@ class BenchRun {
                const RunSpec* spec, bool measured);
   void add_runs();
   void open_video();
-  void warm_up();
-  void measure(int k);
+  /// The gaze of frame `frame`, asked of the gaze source once and kept: the
+  /// image pass renders with the gazes the timed pass had.
+  GazeState gaze_at(int frame);
+  /// Renders the warm-up frames; `timed`: the timed pass's (its last frame
+  /// pass by pass where the measured ones are).
+  void warm_up(bool timed);
+  /// The timed render of measured frame `k`; `judged`: its images read back,
+  /// judged and encoded in the same pass (images_apart_ false).
+  void measure(int k, bool judged);
+  /// The image pass's render of measured frame `k`: untimed, read back,
+  /// judged and encoded.
+  void render_images(int k);
+  /// Each run's technique made anew, in the state it started the timed pass in.
+  void remake_runs();
+  [[nodiscard]] Reference reference_frame(int frame);
+  void finish_frame(int k, std::vector<std::pair<size_t, Images>>& images,
+                    const Reference& reference, const GazeState& gaze);
   void record(Run& run, const SessionFrame& frame, double ms);
   [[nodiscard]] Images read_images() const;
   void write_video_frame(const std::vector<std::pair<size_t, Images>>& images,
@@ -79,7 +95,11 @@ class BenchRun {
   /// runs, BenchOptions::settle_runs).
   int unmeasured_settle_ = 0;
   std::vector<std::vector<size_t>> orders_;  ///< each measured frame's order of the runs
-  std::vector<size_t> shown_;                ///< the runs the video shows, in order
+  std::vector<GazeState> gazes_;             ///< each frame's gaze, from frame 0
+  /// Whether the frames are timed in a pass of their own, none of them read
+  /// back, and rendered again to be judged (BenchEnvironment::timed_apart).
+  bool images_apart_ = false;
+  std::vector<size_t> shown_;  ///< the runs the video shows, in order
   std::unique_ptr<VideoWriter> video_;
   std::optional<gpu::PassProfiler> profiler_;
   gpu::FrameTimer timer_;

@@ -130,6 +130,7 @@ BenchResult read_bench_results(const nlohmann::json& j, const std::string& where
   if (const auto o = env.find("others_cpu_share"); o != env.end() && o->is_number())
     b.environment.others_cpu_share = o->get<double>();
   b.environment.pass_by_pass = env.value("pass_by_pass", false);
+  b.environment.timed_apart = env.value("timed_apart", false);
   b.environment.variables = env.value("variables", std::map<std::string, std::string>{});
   b.skipped = j.value("skipped", std::vector<std::string>{});
   b.gaze_fallback = j.value("gaze_fallback", false);

@@ -86,6 +86,10 @@ std::string run_intro(const BenchResult& b) {
               "software renderer's pipelined frames depend on the technique before "
               "them"
             : "")
+    << (env.timed_apart
+            ? "; the frames were timed in a pass that read nothing back, then rendered again "
+              "from the start to be judged"
+            : "")
     << ".</p>\n";
   if (auto busy = busy_machine(env)) {
     busy->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(busy->front())));

@@ -92,6 +92,7 @@ nlohmann::json environment_json(const RunEnvironment& e) {
           {"others_cpu_share",
            e.others_cpu_share >= 0 ? nlohmann::json(e.others_cpu_share) : nlohmann::json()},
           {"pass_by_pass", e.pass_by_pass},
+          {"timed_apart", e.timed_apart},
           {"variables", e.variables}};
 }
 

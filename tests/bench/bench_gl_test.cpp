@@ -326,22 +326,32 @@ TEST(Bench, SettleRunsWarmUpWithoutBeingMeasured) {
 
 namespace {
 
-// Native, noting for each frame it renders (warm-up and measured) whether
-// the frame runs under a pass profiler that waits for every pass.
+// Native, noting for each frame it renders (warm-up and measured) its index,
+// how many frames this instance rendered before it, and whether the frame
+// runs under a pass profiler that waits for every pass.
 class PassProbe final : public Technique {
  public:
   static inline std::vector<bool> pass_by_pass;
+  static inline std::vector<int> frames, ages;
+  static void clear() {
+    pass_by_pass.clear();
+    frames.clear();
+    ages.clear();
+  }
   PassProbe(const TechniqueConfig& c, const ParamValues&) : native_(make_technique("native", c)) {}
   FrameStats render(Scene& scene, const FrameInput& frame, const GazeState& gaze,
                     const gpu::RenderTarget& target) override {
     const gpu::PassProfiler* p = gpu::PassProfiler::current();
     pass_by_pass.push_back(p && p->clock() == gpu::PassProfiler::Clock::Finish);
+    frames.push_back(frame.frame);
+    ages.push_back(age_++);
     return native_->render(scene, frame, gaze, target);
   }
   std::vector<OverlayShape> overlay(const GazeState&) const override { return {}; }
 
  private:
   std::unique_ptr<Technique> native_;
+  int age_ = 0;
 };
 
 void register_pass_probe() {
@@ -372,10 +382,11 @@ TEST(Bench, SoftwareRenderersRunMeasuredFramesPassByPass) {
   for (bool passes : {false, true}) {
     SCOPED_TRACE(passes ? "--passes" : "no --passes");
     o.passes = passes;
-    PassProbe::pass_by_pass.clear();
+    PassProbe::clear();
     const BenchResult r = run(o);
     const bool software = !gpu::FrameTimer::gpu_timer_meaningful(r.renderer);
     EXPECT_EQ(r.environment.pass_by_pass, software);
+    EXPECT_FALSE(r.environment.timed_apart);  // nothing judged: one pass
     // The warm-up's frames before its last are pipelined everywhere.
     std::vector<bool> expected(static_cast<size_t>(r.warmup + o.frames), software);
     std::fill_n(expected.begin(), r.warmup - 1, false);
@@ -387,6 +398,70 @@ TEST(Bench, SoftwareRenderersRunMeasuredFramesPassByPass) {
     EXPECT_EQ(j["environment"]["pass_by_pass"].get<bool>(), software);
     EXPECT_EQ(read_bench_results(j, out).environment.pass_by_pass, software);
     std::filesystem::remove_all(out);
+  }
+}
+
+// Where every frame is judged, the frames are timed in a pass that reads
+// nothing back (on llvmpipe a frame after a read-back and the judging ran up
+// to 12 % slower, the cheaper techniques' the most), then rendered again from
+// the start, untimed, to be judged: the images, JOD and pixel counts are
+// those of a run that judged as it timed, since every technique starts again
+// (layered's jittered history and vrs's rates refined from the last frame
+// would otherwise go on from where the timed pass left them).
+TEST(Bench, JudgedRunsTimeTheFramesInAPassOfTheirOwn) {
+  register_pass_probe();
+  BenchOptions o = tiny();
+  o.techniques = std::vector<std::string>{"native", "test-pass-probe"};
+  o.frames = 3;
+  o.warmup = 2;
+  PassProbe::clear();
+  const BenchResult r = run(o);
+  EXPECT_TRUE(r.environment.timed_apart);
+  const bool software = !gpu::FrameTimer::gpu_timer_meaningful(r.renderer);
+  const int n = r.warmup + o.frames;
+  std::vector<int> frames;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int f = 0; f < n; ++f) frames.push_back(f);
+  }
+  EXPECT_EQ(PassProbe::frames, frames);
+  // Made anew for the image pass: its second instance has rendered nothing
+  // before frame 0, as the first had.
+  EXPECT_EQ(PassProbe::ages, frames);
+  // The image pass is not timed: none of its frames waits for its passes.
+  std::vector<bool> by_pass(static_cast<size_t>(2 * n), false);
+  std::fill(by_pass.begin() + r.warmup - 1, by_pass.begin() + n, software);
+  EXPECT_EQ(PassProbe::pass_by_pass, by_pass);
+  const std::string out = fresh_dir("foveate-bench-timed-apart");
+  write_bench_report(r, out);
+  const nlohmann::json j = read_json(out + "/results.json");
+  EXPECT_TRUE(j["environment"]["timed_apart"].get<bool>());
+  EXPECT_TRUE(read_bench_results(j, out).environment.timed_apart);
+  std::filesystem::remove_all(out);
+
+  // Judged apart, each technique's last frame is the one a run that read it
+  // between its timed renders shows.
+  BenchOptions judged = tiny();
+  judged.session.scene = "guenter";
+  judged.session.size = {160, 90};
+  judged.techniques = std::vector<std::string>{"native", "layered", "vrs"};
+  judged.params.per_technique["vrs"]["adapt"] = 0.05;
+  judged.frames = 4;
+  BenchOptions timed_only = judged;
+  timed_only.image_metrics = false;
+  const BenchResult a = run(judged);
+  const BenchResult b = run(timed_only);
+  EXPECT_TRUE(a.environment.timed_apart);
+  EXPECT_FALSE(b.environment.timed_apart);
+  ASSERT_EQ(a.results.size(), 3u);
+  ASSERT_EQ(b.results.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    SCOPED_TRACE(a.results[i].technique);
+    const Image& x = a.results[i].sample;
+    const Image& y = b.results[i].sample;
+    ASSERT_EQ(x.width, y.width);
+    ASSERT_EQ(x.height, y.height);
+    EXPECT_EQ(x.rgba, y.rgba);
+    EXPECT_EQ(a.results[i].shaded_pixels, b.results[i].shaded_pixels);
   }
 }
 

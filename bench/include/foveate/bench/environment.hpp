@@ -42,6 +42,11 @@ struct RunEnvironment {
   /// (llvmpipe), where a pipelined frame's time depends on the technique
   /// rendered before it (docs/performance.md).
   bool pass_by_pass = false;
+  /// Whether the measured frames were timed in a pass that read nothing back,
+  /// and rendered again from the start to be judged or encoded: so wherever
+  /// every frame is read back (image metrics, video). Otherwise the last
+  /// frame's images are read back between its timed renders.
+  bool timed_apart = false;
   CpuSample cpu_start;  ///< what capture_environment sampled, for finish_environment
   /// Those of kRunVariables that were set, by name: the same build on the
   /// same renderer runs other passes under them.
