@@ -97,7 +97,7 @@ class BenchRun {
   std::vector<std::vector<size_t>> orders_;  ///< each measured frame's order of the runs
   std::vector<GazeState> gazes_;             ///< each frame's gaze, from frame 0
   /// Whether the frames are timed in a pass of their own, none of them read
-  /// back, and rendered again to be judged (BenchEnvironment::timed_apart).
+  /// back, and rendered again to be judged (RunEnvironment::timed_apart).
   bool images_apart_ = false;
   std::vector<size_t> shown_;  ///< the runs the video shows, in order
   std::unique_ptr<VideoWriter> video_;
