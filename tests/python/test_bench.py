@@ -43,11 +43,14 @@ def test_a_tiny_bench_returns_native_and_a_technique(fv, tmp_path):
     assert isinstance(r["environment"]["pass_by_pass"], bool)
     if "llvmpipe" in r["environment"]["renderer"]:
         assert r["environment"]["pass_by_pass"]
+    # Judged: timed in a pass that read nothing back, then rendered again.
+    assert r["environment"]["timed_apart"] is True
     assert (tmp_path / "report.html").stat().st_size > 0
 
 
 def test_parameters_sweeps_and_video(fv, tmp_path):
     r = tiny(fv, techniques=["layered"], params={"layered.layers": 3}, metrics=False)
+    assert r["environment"]["timed_apart"] is False  # nothing judged: one pass
     # native first, listed or not: the reference of every speedup and JOD below native
     assert [x["technique"] for x in r["results"]] == ["native", "layered"]
     assert r["results"][1]["parameters"]["layers"] == 3
