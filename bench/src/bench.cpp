@@ -309,7 +309,7 @@ BenchResult BenchRun::run() {
   // from the start to be read: on llvmpipe a frame rendered after a read-back
   // and the judging took up to 12 % longer, the cheaper techniques' the most
   // (docs/performance.md), so judged runs understated their speedups.
-  images_apart_ = options_.image_metrics || video_;
+  images_apart_ = options_.time_apart && (options_.image_metrics || video_);
   out_.environment.timed_apart = images_apart_;
   // Steps: every frame rendered (twice where apart), and every frame judged
   // (the metrics take as long as the rendering on a CPU), so that the time

@@ -437,6 +437,15 @@ TEST(Bench, JudgedRunsTimeTheFramesInAPassOfTheirOwn) {
   EXPECT_TRUE(j["environment"]["timed_apart"].get<bool>());
   EXPECT_TRUE(read_bench_results(j, out).environment.timed_apart);
   std::filesystem::remove_all(out);
+  // Asked not to (tune's search): judged between the timed renders, one pass.
+  o.time_apart = false;
+  PassProbe::clear();
+  const BenchResult one = run(o);
+  EXPECT_FALSE(one.environment.timed_apart);
+  EXPECT_EQ(PassProbe::frames, std::vector<int>(frames.begin(), frames.begin() + n));
+  ASSERT_TRUE(one.results[1].metrics && one.results[1].metrics->fvvdp);
+  ASSERT_TRUE(r.results[1].metrics && r.results[1].metrics->fvvdp);
+  EXPECT_EQ(one.results[1].metrics->fvvdp->jod, r.results[1].metrics->fvvdp->jod);
 
   // Judged apart, each technique's last frame is the one a run that read it
   // between its timed renders shows.

@@ -77,6 +77,13 @@ struct BenchOptions {
   /// judged against too.
   int reference = 1;
   bool image_metrics = true;  ///< compare every frame with the reference (PSNR, SSIM, ...)
+  /// Where every frame is read back (image metrics, video): time the frames
+  /// in a pass that reads nothing back, then render them again to read them
+  /// (RunEnvironment::timed_apart). Off, they are read back and judged
+  /// between the timed renders, in one pass: cheaper, and on llvmpipe 5-12 %
+  /// slower frames for the foveated techniques (tune's search, whose
+  /// contenders stage 5 times again apart).
+  bool time_apart = true;
   /// With image metrics: the diagnostics (PSNR, SSIM, acuity error, JND,
   /// FLIP, flicker) besides FovVideoVDP; off, FovVideoVDP alone (tune).
   bool diagnostics = true;
