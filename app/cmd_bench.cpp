@@ -122,7 +122,10 @@ void add_common(CLI::App* sub, BenchArgs& a) {
                   "supersampling (default N = 4), against which native is judged too")
       ->capture_default_str();
   sub->add_flag("--no-metrics", a.no_metrics,
-                "Skip the image metrics against native (PSNR, SSIM, acuity error, FLIP; faster)");
+                "Skip the image metrics against the reference (FovVideoVDP, PSNR, SSIM, acuity "
+                "error, FLIP): faster, and each frame is rendered once (a judged run times its "
+                "frames in a pass that reads nothing back, then renders them again to judge "
+                "them)");
   // The flag's old name, kept working.
   sub->add_flag("--no-quality", a.no_metrics)->group("");
   sub->add_flag("--no-diagnostics", a.no_diagnostics,
