@@ -58,13 +58,13 @@ BenchRun::Reference BenchRun::reference_frame(int frame) {
   return reference;
 }
 
-void BenchRun::measure(int k, bool judged) {
+void BenchRun::measure(int k, bool read) {
   const std::vector<size_t>& order = orders_[static_cast<size_t>(k)];
   const int frame = out_.warmup + k;
   const bool last = k + 1 == options_.frames;
   const GazeState g = gaze_at(frame);
   Reference reference;
-  if (judged) reference = reference_frame(frame);
+  if (read) reference = reference_frame(frame);
   std::vector<std::pair<size_t, Images>> images;
   for (size_t i : order) {
     Run& r = runs_[i];
@@ -77,14 +77,17 @@ void BenchRun::measure(int k, bool judged) {
           return timer_.stop();
         });
     record(r, stats, ms);
-    if (judged && (options_.image_metrics || last || video_)) {
-      Images img = read_images();
-      if (i == 0 && !reference_) reference = {img.out, img.eyes};
-      images.emplace_back(i, std::move(img));
-    }
+    if (read && (options_.image_metrics || last || video_)) keep_images(i, images, reference);
     step(r.technique + (options_.sweep.empty() ? "" : " @" + format_fixed(r.sweep_value, 4)));
   }
-  if (judged) finish_frame(k, images, reference, g);
+  if (read) finish_frame(k, images, reference, g);
+}
+
+void BenchRun::keep_images(size_t i, std::vector<std::pair<size_t, Images>>& images,
+                           Reference& reference) const {
+  Images img = read_images();
+  if (i == 0 && !reference_) reference = {img.out, img.eyes};
+  images.emplace_back(i, std::move(img));
 }
 
 void BenchRun::render_images(int k) {
@@ -98,9 +101,7 @@ void BenchRun::render_images(int k) {
     Run& r = runs_[i];
     session_.watchdog().run("frame " + std::to_string(frame) + " (" + r.technique + ", images)",
                             [&] { session_.render(r.impl, frame, g); });
-    Images img = read_images();
-    if (i == 0 && !reference_) reference = {img.out, img.eyes};
-    images.emplace_back(i, std::move(img));
+    keep_images(i, images, reference);
     step("images " + r.technique);
   }
   finish_frame(k, images, reference, g);

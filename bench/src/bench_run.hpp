@@ -59,9 +59,14 @@ class BenchRun {
   /// Renders the warm-up frames; `timed`: the timed pass's (its last frame
   /// pass by pass where the measured ones are).
   void warm_up(bool timed);
-  /// The timed render of measured frame `k`; `judged`: its images read back,
-  /// judged and encoded in the same pass (images_apart_ false).
-  void measure(int k, bool judged);
+  /// The timed render of measured frame `k`; `read`: its images read back
+  /// (every frame's where judged or encoded, else the last's), judged and
+  /// encoded in the same pass (images_apart_ false).
+  void measure(int k, bool read);
+  /// Reads run `i`'s images of the frame into `images` (and native's, when
+  /// it is the reference, into `reference`).
+  void keep_images(size_t i, std::vector<std::pair<size_t, Images>>& images,
+                   Reference& reference) const;
   /// The image pass's render of measured frame `k`: untimed, read back,
   /// judged and encoded.
   void render_images(int k);

@@ -79,7 +79,7 @@ class Search {
   void scene(const std::string& name) {
     scene_ = name;
     techniques_ = tuned_techniques(options_);
-    if (options_.grid || options_.shard.count > 1) {
+    if (!options_.staged()) {
       evaluate(grid(), 1, false);
       return;
     }
@@ -269,7 +269,7 @@ class Search {
     // frames twice took the default search from 18 to 33 minutes here);
     // stage 5 times the settings the choice falls between apart. A grid or
     // a shard has no stage 5: its candidates are timed apart.
-    b.time_apart = stage == 5 || options_.grid || options_.shard.count > 1;
+    b.time_apart = stage == 5 || !options_.staged();
     auto& cache = caches_[scene_];
     if (!cache) cache = std::make_shared<ReferenceFrames>();
     b.reference_frames = cache;
@@ -424,7 +424,7 @@ TuneResult run_tune(const TuneOptions& asked, const TuneCallbacks& callbacks) {
                       (why.empty() ? std::string() : ": " + why),
                   {"techniques", "scenes"}});
   }
-  if (!options.grid && options.shard.count == 1) {
+  if (options.staged()) {
     if (options.scenes.size() > 1) search.cross_check(options.scenes);
     search.retime(options.scenes);
   }

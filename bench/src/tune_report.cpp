@@ -214,7 +214,7 @@ std::string tune_markdown(const TuneResult& r) {
   if (r.warmup > 0) {
     s << " (every candidate judged on frames " << r.warmup << "-"
       << r.warmup + r.options.bench.frames - 1 << ", after " << r.warmup << " of warm-up";
-    if (!r.options.grid && r.options.shard.count == 1 && r.merged_shards == 0) {
+    if (r.options.staged() && r.merged_shards == 0) {
       s << "; the search times its candidates while judging them, which slows the foveated "
            "ones on a software renderer, and the settings the choice falls between are timed "
            "again, in a pass of their own";

@@ -57,6 +57,9 @@ struct TuneOptions {
   /// sweep's; a parameter declared but not tuned becomes tuned. TECHNIQUE.KEY
   /// wins over KEY.
   std::map<std::string, std::vector<double>> values;
+  /// The staged search (stages 1-5), not the fixed grid that `grid` and
+  /// shards evaluate: only it times the contenders again in stage 5.
+  [[nodiscard]] bool staged() const { return !grid && shard.count == 1; }
 
   static BenchOptions default_bench();
 };
